@@ -1,0 +1,1 @@
+"""Extractors: workspace, launch files, C++ and Python sources, message files, node models."""

@@ -1,0 +1,160 @@
+"""Index a workspace: packages (package.xml), their node executables, and installed packages."""
+
+from __future__ import annotations
+
+import glob
+import os
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from catkin_pkg.package import InvalidPackage, parse_package
+
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.cmake import commands
+
+SKIP_DIRS = {"build", "devel", "install", "log", "node_modules", "__pycache__"}
+SOURCE_SUFFIXES = {".cpp", ".cc", ".cxx", ".c++", ".C"}
+_SHEBANG = re.compile(rb"^#!.*python")
+
+
+@dataclass
+class Executable:
+    package: str
+    name: str
+    lang: str
+    sources: list[Path]
+    line: int = 0
+
+
+@dataclass
+class Package:
+    name: str
+    path: Path
+    executables: dict[str, Executable] = field(default_factory=dict)
+    plugin_xml: list[str] = field(default_factory=list)
+
+
+def share_dirs() -> list[Path]:
+    """Installed package locations, in ROS's search order after the indexed paths."""
+    dirs = [Path(p) for p in os.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
+    dirs += sorted(Path(p) for p in glob.glob("/opt/ros/*/share"))
+    dirs.append(Path("/usr/share"))
+    return dirs
+
+
+class Workspace:
+    """The packages under the indexed paths, plus lookup of installed packages for `$(find)`."""
+
+    def __init__(self, roots: list[Path], diagnostics: DiagnosticSink) -> None:
+        self.roots = [r.resolve() for r in roots]
+        self.diagnostics = diagnostics
+        self.packages: dict[str, Package] = {}
+        for root in self.roots:
+            for manifest in _manifests(root):
+                self._index(manifest)
+
+    def display(self, path: Path | str) -> str:
+        """A path as shown in reports: relative to the first indexed root that contains it."""
+        path = Path(path)
+        for root in self.roots:
+            base = root if root.is_dir() else root.parent
+            try:
+                return path.resolve().relative_to(base).as_posix()
+            except ValueError:
+                continue
+        return str(path)
+
+    def find(self, pkg: str) -> Path | None:
+        """Where `$(find pkg)` points: the indexed paths first, then installed share dirs."""
+        if pkg in self.packages:
+            return self.packages[pkg].path
+        for share in share_dirs():
+            candidate = share / pkg
+            if (candidate / "package.xml").is_file():
+                return candidate
+        return None
+
+    def executable(self, pkg: str, exe: str) -> Executable | None:
+        package = self.packages.get(pkg)
+        return package.executables.get(exe) if package else None
+
+    # -- indexing -----------------------------------------------------------------------
+    def _index(self, manifest: Path) -> None:
+        folder = manifest.parent
+        try:
+            parsed = parse_package(str(manifest))
+            name = parsed.name
+            plugin_xml = [
+                e.attributes[a] for e in parsed.exports for a in ("plugin",) if a in e.attributes
+            ]
+        except (InvalidPackage, Exception) as exc:  # catkin_pkg raises several error types
+            match = re.search(r"<name>\s*([^<\s]+)\s*</name>", manifest.read_text(errors="replace"))
+            self.diagnostics.add(self.display(manifest), 1, "package-xml", f"invalid package.xml: {_first_line(exc)}")
+            if not match:
+                return
+            name, plugin_xml = match.group(1), []
+        if name in self.packages:
+            self.diagnostics.add(self.display(manifest), 1, "duplicate-package",
+                                 f"package {name} also found at {self.display(self.packages[name].path)}; using the first")
+            return
+        package = Package(name, folder, plugin_xml=plugin_xml)
+        self.packages[name] = package
+        self._cmake_executables(package)
+        self._script_executables(package)
+
+    def _cmake_executables(self, package: Package) -> None:
+        cmake = package.path / "CMakeLists.txt"
+        if not cmake.is_file():
+            return
+        cmds = commands(cmake.read_text(errors="replace"))
+        output_names = {
+            c.args[0]: c.args[c.args.index("OUTPUT_NAME") + 1]
+            for c in cmds
+            if c.name == "set_target_properties" and "OUTPUT_NAME" in c.args[:-1]
+        }
+        for c in cmds:
+            if c.name == "add_executable" and c.args and "IMPORTED" not in c.args and "ALIAS" not in c.args:
+                target = c.args[0]
+                sources = [package.path / s for s in c.args[1:] if Path(s).suffix in SOURCE_SUFFIXES]
+                name = output_names.get(target, target)
+                package.executables[name] = Executable(package.name, name, "cpp", sources, c.line)
+            elif c.name in ("catkin_install_python", "install") and "PROGRAMS" in c.args:
+                for arg in c.args[c.args.index("PROGRAMS") + 1:]:
+                    if arg == "DESTINATION":
+                        break
+                    path = package.path / arg
+                    if path.is_file():
+                        package.executables[path.name] = Executable(package.name, path.name, "python", [path], c.line)
+
+    def _script_executables(self, package: Package) -> None:
+        for folder in ("scripts", "nodes", "bin", "src"):
+            for path in sorted((package.path / folder).glob("**/*")):
+                if path.name in package.executables or not path.is_file() or path.suffix in SOURCE_SUFFIXES:
+                    continue
+                if os.access(path, os.X_OK) and _is_python_script(path):
+                    package.executables[path.name] = Executable(package.name, path.name, "python", [path])
+
+
+def _manifests(root: Path) -> list[Path]:
+    if (root / "package.xml").is_file():
+        return [root / "package.xml"]
+    found: list[Path] = []
+    for dirpath, dirnames, filenames in os.walk(root):
+        dirnames[:] = sorted(d for d in dirnames if not d.startswith(".") and d not in SKIP_DIRS)
+        if "CATKIN_IGNORE" in filenames or "COLCON_IGNORE" in filenames:
+            dirnames[:] = []
+            continue
+        if "package.xml" in filenames:
+            found.append(Path(dirpath) / "package.xml")
+            dirnames[:] = []
+    return found
+
+
+def _is_python_script(path: Path) -> bool:
+    with path.open("rb") as fh:
+        return bool(_SHEBANG.match(fh.readline(200)))
+
+
+def _first_line(exc: BaseException) -> str:
+    return (str(exc).strip().splitlines() or [type(exc).__name__])[0]

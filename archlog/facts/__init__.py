@@ -1,0 +1,1 @@
+"""The recovered architecture as typed relations."""

@@ -1,0 +1,86 @@
+"""Every relation archlog produces: name, typed columns, meaning. docs/facts.md is generated from here.
+
+Column types: `id` (a port or element id such as "p3" or "e7"), `name` (a resolved ROS graph
+name), `type` (a message type "pkg/Name"), `str`, `int`. Any `name`, `type` or `str` column may
+hold an unknown value instead: a term `unknown(N)` described by the `unknown_value` relation.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Column:
+    name: str
+    type: str
+    doc: str
+
+
+@dataclass(frozen=True)
+class Relation:
+    name: str
+    columns: tuple[Column, ...]
+    doc: str
+    group: str
+
+    @property
+    def arity(self) -> int:
+        return len(self.columns)
+
+
+def _rel(group: str, name: str, doc: str, *cols: tuple[str, str, str]) -> Relation:
+    return Relation(name, tuple(Column(*c) for c in cols), doc, group)
+
+
+_PORT = ("port", "id", "the port's id; `location` gives its file and line")
+_NODE = ("node", "name", "the node instance's resolved name")
+
+RELATIONS: tuple[Relation, ...] = (
+    _rel("workspace", "package", "A ROS package found in the indexed paths or installed share dirs.",
+         ("pkg", "str", "package name"), ("path", "str", "its folder")),
+    _rel("workspace", "executable", "A node executable a package builds or installs.",
+         ("pkg", "str", "package name"), ("exe", "str", "executable name (the launch `type`)"),
+         ("lang", "str", "cpp or python"), ("file", "str", "main source file")),
+    _rel("workspace", "message_type", "A message, service or action definition that was found.",
+         ("type", "type", "full type name pkg/Name"), ("kind", "str", "msg, srv or action"),
+         ("file", "str", "the definition file")),
+    _rel("configuration", "node", "A node instance of the system configuration.",
+         _NODE, ("pkg", "str", "package"), ("exe", "str", "executable"),
+         ("elem", "id", "the launch element (or executable, for a rosrun configuration) that creates it")),
+    _rel("configuration", "node_source", "Where a node instance's ports were recovered from.",
+         _NODE, ("origin", "str", "cpp, python or model")),
+    _rel("configuration", "remap", "A remapping applied to a node instance, both sides resolved in its namespace.",
+         ("elem", "id", "the `<remap>` element (or node args) that declares it"), _NODE,
+         ("from", "name", "resolved source name"), ("to", "name", "resolved target name")),
+    _rel("configuration", "param", "A parameter value set by the configuration.",
+         ("param", "name", "resolved parameter name"), ("value", "str", "value as text"),
+         ("elem", "id", "the element that sets it")),
+    _rel("ports", "publisher", "A node instance publishes a topic.",
+         _PORT, _NODE, ("topic", "name", "resolved, remapped topic"), ("type", "type", "message type")),
+    _rel("ports", "subscriber", "A node instance subscribes to a topic.",
+         _PORT, _NODE, ("topic", "name", "resolved, remapped topic"), ("type", "type", "message type")),
+    _rel("ports", "service_server", "A node instance provides a service.",
+         _PORT, _NODE, ("service", "name", "resolved, remapped service"), ("type", "type", "service type")),
+    _rel("ports", "service_client", "A node instance calls a service.",
+         _PORT, _NODE, ("service", "name", "resolved, remapped service"), ("type", "type", "service type")),
+    _rel("ports", "action_server", "A node instance serves an action.",
+         _PORT, _NODE, ("action", "name", "resolved, remapped action namespace"), ("type", "type", "action type")),
+    _rel("ports", "action_client", "A node instance is a client of an action.",
+         _PORT, _NODE, ("action", "name", "resolved, remapped action namespace"), ("type", "type", "action type")),
+    _rel("ports", "param_read", "A node instance reads a parameter.",
+         _PORT, _NODE, ("param", "name", "resolved parameter name"), ("default", "str", "default value, or unknown")),
+    _rel("ports", "port_source_name", "A port's name resolved in the node's namespace, before remapping.",
+         _PORT, ("name", "name", "resolved name before remaps")),
+    _rel("provenance", "location", "Where a port, launch element or node comes from.",
+         ("id", "id", "port or element id"), ("file", "str", "file, relative to the first indexed path when inside it"),
+         ("line", "int", "1-based line"), ("column", "int", "1-based column, 0 when unknown")),
+    _rel("provenance", "unknown_value", "A value static analysis could not know, and where it was met.",
+         ("value", "id", "the unknown term unknown(N) used in other relations"), ("expr", "str", "the expression"),
+         ("file", "str", "file"), ("line", "int", "line")),
+    _rel("derived", "near_name", "Two names used in the system whose segment distance is below the near-miss threshold.",
+         ("a", "name", "a name"), ("b", "name", "another name"),
+         ("distance", "int", "segment-aware Damerau-Levenshtein distance, in thousandths")),
+)
+
+BY_NAME: dict[str, Relation] = {r.name: r for r in RELATIONS}
