@@ -75,7 +75,7 @@ class LaunchInterpreter:
     # -- helpers --------------------------------------------------------------------------
     def _element(self, file: Path, el: etree._Element) -> Element:
         self._count += 1
-        return Element(f"e{self._count}", self.workspace.display(file), el.sourceline or 1)
+        return Element(f"e{self._count:05d}", self.workspace.display(file), el.sourceline or 1)
 
     def _diag(self, file: Path, el: etree._Element | None, code: str, message: str, severity: str = "error") -> None:
         line = el.sourceline if el is not None and el.sourceline else 1

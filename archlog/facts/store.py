@@ -22,12 +22,14 @@ class FactStore:
         self._rows: dict[str, list[tuple[Cell, ...]]] = defaultdict(list)
         self._seen: set[tuple[str, tuple[Cell, ...]]] = set()
         self._unknowns: dict[Unknown, int] = {}
+        self._by_number: dict[int, Unknown] = {}
+        self._locations: dict[str, tuple[str, int, int]] = {}
         self._counters: dict[str, int] = defaultdict(int)
 
     def new_id(self, prefix: str) -> str:
         """A fresh id such as 'p1' (ports) or 'e1' (elements)."""
         self._counters[prefix] += 1
-        return f"{prefix}{self._counters[prefix]}"
+        return f"{prefix}{self._counters[prefix]:05d}"
 
     def add(self, relation: str, *row: Cell) -> None:
         rel = BY_NAME[relation]
@@ -41,22 +43,29 @@ class FactStore:
         for cell in row:
             if isinstance(cell, Unknown) and cell not in self._unknowns:
                 self._unknowns[cell] = len(self._unknowns) + 1
+                self._by_number[self._unknowns[cell]] = cell
                 self.add("unknown_value", cell, cell.expr, cell.file, cell.line)
 
     def rows(self, relation: str) -> list[tuple[Cell, ...]]:
         return list(self._rows.get(relation, ()))
 
     def locate(self, ident: str, file: str, line: int, column: int = 0) -> None:
-        self.add("location", ident, file, line, column)
+        if ident not in self._locations:
+            self._locations[ident] = (file, line, column)
+            self.add("location", ident, file, line, column)
 
     def location(self, ident: str) -> tuple[str, int, int] | None:
-        for row in self._rows.get("location", ()):
-            if row[0] == ident:
-                return str(row[1]), int(row[2]), int(row[3])
-        return None
+        return self._locations.get(ident)
 
-    def unknown_id(self, value: Unknown) -> int:
-        return self._unknowns[value]
+    def from_term(self, symbol: clingo.Symbol) -> Cell:
+        """The Python value of a clingo term produced from this store."""
+        if symbol.type == clingo.SymbolType.String:
+            return symbol.string
+        if symbol.type == clingo.SymbolType.Number:
+            return symbol.number
+        if symbol.name == "unknown" and len(symbol.arguments) == 1:
+            return self._by_number.get(symbol.arguments[0].number, Unknown(str(symbol), "", 0))
+        return str(symbol)
 
     # -- conversion ---------------------------------------------------------------------
     def term(self, cell: Cell) -> clingo.Symbol:

@@ -1,0 +1,125 @@
+"""The pipeline: index the workspace, interpret the configuration, extract nodes, build facts."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.cpp import extract_cpp
+from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode
+from archlog.extract.messages import message_files
+from archlog.extract.models import BUILTIN_DIR, load_models
+from archlog.extract.python import extract_python
+from archlog.extract.summary import NodeSummary
+from archlog.extract.workspace import Workspace
+from archlog.facts.compose import compose, rosrun_config
+from archlog.facts.store import FactStore
+from archlog import names
+
+
+class ConfigError(Exception):
+    """A usage or configuration error (exit status 2)."""
+
+
+@dataclass
+class Analysis:
+    workspace: Workspace
+    config: LaunchConfig
+    store: FactStore
+    diagnostics: DiagnosticSink
+    timings: dict[str, float] = field(default_factory=dict)
+
+
+def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models: list[Path],
+            near_threshold: float = 0.5) -> Analysis:
+    """Recover the architecture of one system configuration into facts."""
+    timings: dict[str, float] = {}
+    clock = time.perf_counter()
+    for path in paths:
+        if not path.exists():
+            raise ConfigError(f"path does not exist: {path}")
+    diagnostics = DiagnosticSink()
+    workspace = Workspace(paths, diagnostics)
+    timings["workspace"] = _lap(clock)
+
+    clock = time.perf_counter()
+    launch_files = [resolve_launch(spec, workspace) for spec in launches]
+    config = LaunchInterpreter(workspace, diagnostics).load(launch_files, args) if launch_files else None
+    timings["launch"] = _lap(clock)
+
+    clock = time.perf_counter()
+    builtin, user, externals = _models(models, workspace, diagnostics)
+    wanted = {(n.pkg, n.type) for n in config.nodes} if config else None
+    summaries = dict(builtin)
+    summaries.update(_extract(workspace, wanted, diagnostics))
+    summaries.update(user)
+    if config is None:
+        config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
+                               workspace, diagnostics)
+    for summary, instance, elem in externals:
+        summaries[(summary.package, summary.executable)] = summary
+        config.nodes.append(LaunchNode(elem, summary.package, summary.executable, names.join("/", instance),
+                                       names.namespace_of(names.join("/", instance))))
+    timings["extract"] = _lap(clock)
+
+    clock = time.perf_counter()
+    store = compose(workspace, config, summaries, message_files(workspace), diagnostics, near_threshold)
+    timings["facts"] = _lap(clock)
+    return Analysis(workspace, config, store, diagnostics, timings)
+
+
+def resolve_launch(spec: str, workspace: Workspace) -> Path:
+    """A launch file given as a path, or as PKG/relative/path (or PKG/file name) like roslaunch."""
+    path = Path(spec)
+    if path.is_file():
+        return path.resolve()
+    pkg, _, rest = spec.partition("/")
+    base = workspace.find(pkg)
+    if base is not None and rest:
+        if (base / rest).is_file():
+            return base / rest
+        matches = sorted(base.rglob(Path(rest).name))
+        if matches:
+            return matches[0]
+    raise ConfigError(f"launch file not found: {spec} (give a path, or PKG/path inside the package)")
+
+
+def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
+             diagnostics: DiagnosticSink) -> dict[tuple[str, str], NodeSummary]:
+    summaries = {}
+    includes = [p.path / "include" for p in workspace.packages.values()]
+    for package in workspace.packages.values():
+        for exe in package.executables.values():
+            if wanted is not None and (package.name, exe.name) not in wanted:
+                continue
+            if exe.lang == "python":
+                summary = extract_python(exe.sources[0], package.name, exe.name,
+                                         workspace.display(exe.sources[0]), diagnostics)
+            else:
+                summary = extract_cpp(exe.sources, package.name, exe.name, includes, workspace.display, diagnostics)
+            summaries[(package.name, exe.name)] = summary
+    return summaries
+
+
+def _models(paths: list[Path], workspace: Workspace, diagnostics: DiagnosticSink):
+    builtin: dict[tuple[str, str], NodeSummary] = {}
+    user: dict[tuple[str, str], NodeSummary] = {}
+    externals: list[tuple[NodeSummary, str, Element]] = []
+    files = [(p, builtin) for p in sorted(BUILTIN_DIR.glob("*.yaml"))] + [(p, user) for p in paths]
+    for index, (path, target) in enumerate(files, 1):
+        if not path.is_file():
+            raise ConfigError(f"model file not found: {path}")
+        shown = workspace.display(path)
+        for summary, instance in load_models(path, shown, diagnostics):
+            if instance:
+                line = summary.ports[0].line - 1 if summary.ports else 1
+                externals.append((summary, instance, Element(f"m{index:03d}{len(externals):03d}", shown, max(line, 1))))
+            else:
+                target[(summary.package, summary.executable)] = summary
+    return builtin, user, externals
+
+
+def _lap(start: float) -> float:
+    return round(time.perf_counter() - start, 4)

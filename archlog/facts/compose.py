@@ -1,0 +1,132 @@
+"""Place node summaries in a configuration: resolve every port's name and emit the facts."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from archlog import names
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.launch import Element, LaunchConfig, LaunchNode
+from archlog.extract.summary import NodeSummary, Port
+from archlog.extract.workspace import Workspace
+from archlog.facts.similarity import near_pairs
+from archlog.facts.store import FactStore
+from archlog.values import Concat, ParamRef, Unknown, Value
+
+NAMED_PORTS = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
+
+
+@dataclass
+class Instance:
+    """A node instance with its summary (None when neither source nor model was found)."""
+
+    launch: LaunchNode
+    summary: NodeSummary | None
+
+
+def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[str, str], NodeSummary],
+            messages: dict[str, tuple[str, object]], diagnostics: DiagnosticSink,
+            near_threshold: float = 0.5) -> FactStore:
+    """Build the fact store of one system configuration."""
+    store = FactStore()
+    for package in workspace.packages.values():
+        store.add("package", package.name, workspace.display(package.path))
+        for exe in package.executables.values():
+            store.add("executable", package.name, exe.name, exe.lang,
+                      workspace.display(exe.sources[0]) if exe.sources else "")
+    for type_name, (kind, path) in sorted(messages.items()):
+        store.add("message_type", type_name, kind, workspace.display(str(path)))
+    for name, (value, elem) in config.params.items():
+        store.add("param", name, value if isinstance(value, Unknown) else _text(value), elem.id)
+        store.locate(elem.id, elem.file, elem.line)
+    missing: set[tuple[str, str]] = set()
+    for node in config.nodes:
+        summary = summaries.get((node.pkg, node.type))
+        store.add("node", node.name, node.pkg, node.type, node.elem.id)
+        store.locate(node.elem.id, node.elem.file, node.elem.line)
+        if summary is None:
+            if (node.pkg, node.type) not in missing:
+                missing.add((node.pkg, node.type))
+                diagnostics.add(node.elem.file, node.elem.line, "no-model",
+                                f"no source or model for {node.pkg}/{node.type}: the ports of {node.name} are unknown "
+                                "(write a model with --model)", "warning")
+            continue
+        store.add("node_source", node.name, summary.origin)
+        _instance(store, node, summary, config)
+    used = {row[2] for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)}
+    for a, b, score in near_pairs(used, near_threshold):
+        store.add("near_name", a, b, round(score * 1000))
+        store.add("near_name", b, a, round(score * 1000))
+    return store
+
+
+def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig) -> None:
+    remaps = names.resolve_remaps([(src, dst) for src, dst, _ in node.remaps], node.namespace, node.name)
+    for src, dst, elem in node.remaps:
+        store.add("remap", elem.id, node.name, names.resolve(src, node.namespace, node.name),
+                  names.resolve(dst, node.namespace, node.name))
+        store.locate(elem.id, elem.file, elem.line)
+    for port in summary.ports:
+        pid = store.new_id("p")
+        store.locate(pid, port.file, port.line, port.column)
+        before = _resolve(port.name, port.handle_ns, node, config, {})
+        after = _resolve(port.name, port.handle_ns, node, config, remaps)
+        if port.kind == "param_read":
+            default = _bind(port.default, node, config) if port.default is not None else \
+                Unknown("no default", port.file, port.line)
+            store.add("param_read", pid, node.name, after, default)
+        else:
+            store.add(port.kind, pid, node.name, after, _bind(port.type, node, config))
+        store.add("port_source_name", pid, before)
+
+
+def _resolve(name: Value, handle_ns: Value, node: LaunchNode, config: LaunchConfig,
+             remaps: dict[str, str]) -> str | Unknown:
+    """Resolve a port name in the instance's context: handle namespace, `~`, then remaps."""
+    raw, handle = _bind(name, node, config), _bind(handle_ns, node, config)
+    if isinstance(raw, Unknown):
+        return raw
+    if not raw.startswith(("/", "~")) and isinstance(handle, Unknown):
+        return Unknown(f"{handle.expr}/{raw}", handle.file, handle.line)
+    base = names.resolve(handle, node.namespace, node.name) if handle else node.namespace
+    resolved = names.join(node.name, raw[1:]) if raw.startswith("~") else names.join(base, raw)
+    return names.remap(resolved, remaps)
+
+
+def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
+    """Evaluate a recovered value for one instance: parameters come from the configuration."""
+    if isinstance(value, (str, Unknown)):
+        return value
+    if isinstance(value, ParamRef):
+        key = _resolve(value.name, value.handle_ns, node, config, {})
+        if isinstance(key, str) and key in config.params:
+            found = config.params[key][0]
+            return found if isinstance(found, Unknown) else _text(found)
+        return _bind(value.default, node, config)
+    parts = [_bind(p, node, config) for p in value.parts]
+    unknown = next((p for p in parts if isinstance(p, Unknown)), None)
+    if unknown is None:
+        return "".join(parts)  # type: ignore[arg-type]
+    return Unknown("".join(p.expr if isinstance(p, Unknown) else repr(p) for p in parts), unknown.file, unknown.line)
+
+
+def _text(value: object) -> str:
+    if isinstance(value, bool):
+        return str(value).lower()
+    return str(value)
+
+
+def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Workspace,
+                  diagnostics: DiagnosticSink) -> LaunchConfig:
+    """With no launch file: every executable is one instance under its default name."""
+    config = LaunchConfig()
+    for index, ((pkg, exe), summary) in enumerate(sorted(summaries.items()), 1):
+        executable = workspace.executable(pkg, exe)
+        source = executable.sources[0] if executable and executable.sources else None
+        elem = Element(f"x{index:05d}", workspace.display(source) if source else pkg, 1)
+        name = summary.default_name if isinstance(summary.default_name, str) else exe
+        if summary.default_name is not None and not isinstance(summary.default_name, str):
+            diagnostics.add(elem.file, elem.line, "node-name", f"node name of {pkg}/{exe} is not known statically; "
+                            f"using the executable name {exe}", "note")
+        config.nodes.append(LaunchNode(elem, pkg, exe, names.join("/", name), "/"))
+    return config

@@ -1,0 +1,1 @@
+"""Reports: terminal text, JSON and SARIF 2.1.0."""

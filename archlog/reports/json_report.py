@@ -1,0 +1,43 @@
+"""The JSON report; its schema is findings.schema.json next to this file (docs/output-json.md)."""
+
+from __future__ import annotations
+
+import json
+
+from archlog import __version__
+from archlog.reports.model import Report
+from archlog.rules.engine import Location
+
+FORMAT_VERSION = 1
+
+
+def _location(loc: Location, role: str) -> dict:
+    return {"file": loc.file, "line": loc.line, "column": loc.column, "role": role}
+
+
+def to_json(report: Report) -> str:
+    findings = [
+        {
+            "rule": f.rule.id,
+            "name": f.rule.name,
+            "severity": f.severity,
+            "message": f.message,
+            "locations": [_location(f.location, "primary")] + [_location(r, "related") for r in f.related],
+            "subjects": f.subjects,
+            "fingerprint": f.fingerprint,
+        }
+        for f in report.findings
+    ]
+    diagnostics = [
+        {"code": d.code, "severity": d.severity, "message": d.message, "file": d.file, "line": d.line,
+         "column": d.column}
+        for d in report.diagnostics
+    ]
+    document = {
+        "format": FORMAT_VERSION,
+        "tool": {"name": "archlog", "version": __version__},
+        "findings": findings,
+        "diagnostics": diagnostics,
+        "summary": report.counts(),
+    }
+    return json.dumps(document, indent=2) + "\n"

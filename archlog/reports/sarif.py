@@ -1,0 +1,83 @@
+"""SARIF 2.1.0: rules with full metadata, results with related locations, diagnostics as notifications."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from archlog import __version__
+from archlog.reports.model import Report
+from archlog.rules.engine import Location
+
+LEVELS = {"error": "error", "warning": "warning", "note": "note"}
+SECURITY = {"error": "error", "warning": "warning", "note": "recommendation"}
+INFO_URI = "https://github.com/archlog/archlog"
+
+
+def _physical(loc: Location, root: Path) -> dict:
+    path = Path(loc.file)
+    artifact = {"uri": path.as_uri()} if path.is_absolute() else {"uri": path.as_posix(), "uriBaseId": "SRCROOT"}
+    physical: dict = {"artifactLocation": artifact}
+    if loc.line > 0:
+        region = {"startLine": loc.line}
+        if loc.column > 0:
+            region["startColumn"] = loc.column
+        physical["region"] = region
+    return physical
+
+
+def to_sarif(report: Report) -> str:
+    rules = report.rules
+    index = {r.id: i for i, r in enumerate(rules)}
+    driver_rules = [
+        {
+            "id": r.id,
+            "name": r.name,
+            "shortDescription": {"text": r.summary},
+            "fullDescription": {"text": r.description or r.summary},
+            "help": {"text": r.help or r.summary, "markdown": r.help or r.summary},
+            "helpUri": f"{INFO_URI}/blob/main/docs/rules.md#{r.id.lower()}",
+            "defaultConfiguration": {"level": LEVELS[r.severity]},
+            "properties": {"tags": r.tags, "precision": r.precision, "problem.severity": SECURITY[r.severity]},
+        }
+        for r in rules
+    ]
+    results = []
+    for f in report.findings:
+        result = {
+            "ruleId": f.rule.id,
+            "ruleIndex": index[f.rule.id],
+            "level": LEVELS[f.severity],
+            "message": {"text": f.message},
+            "locations": [{"physicalLocation": _physical(f.location, report.root)}],
+            "partialFingerprints": {"archlogFingerprint/v1": f.fingerprint},
+        }
+        if f.related:
+            result["relatedLocations"] = [
+                {"id": i, "physicalLocation": _physical(r, report.root), "message": {"text": "counterpart"}}
+                for i, r in enumerate(f.related, 1)
+            ]
+        results.append(result)
+    notifications = [
+        {
+            "level": LEVELS[d.severity],
+            "message": {"text": d.message},
+            "descriptor": {"id": d.code},
+            "locations": [{"physicalLocation": _physical(Location(d.file, d.line, d.column), report.root)}],
+        }
+        for d in report.diagnostics
+    ]
+    run = {
+        "tool": {"driver": {"name": "archlog", "version": __version__, "semanticVersion": __version__,
+                            "informationUri": INFO_URI, "rules": driver_rules}},
+        "originalUriBaseIds": {"SRCROOT": {"uri": report.root.resolve().as_uri() + "/"}},
+        "invocations": [{"executionSuccessful": True, "toolExecutionNotifications": notifications}],
+        "results": results,
+        "columnKind": "unicodeCodePoints",
+    }
+    document = {
+        "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
+        "version": "2.1.0",
+        "runs": [run],
+    }
+    return json.dumps(document, indent=2) + "\n"

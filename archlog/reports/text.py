@@ -1,0 +1,46 @@
+"""Terminal output: findings grouped by file, the source line with a marker, both sides named."""
+
+from __future__ import annotations
+
+from itertools import groupby
+
+from rich.console import Console
+from rich.markup import escape
+
+from archlog.reports.model import Report
+
+STYLE = {"error": "bold red", "warning": "yellow", "note": "cyan"}
+
+
+def print_text(report: Report, console: Console) -> None:
+    for file, findings in groupby(report.findings, key=lambda f: f.location.file):
+        console.print(f"[bold underline]{escape(file)}[/]")
+        for f in findings:
+            loc = f.location
+            console.print(f"  {loc.line}:{loc.column} [{STYLE[f.severity]}]{f.severity}[/] "
+                          f"{escape(f.message)} [dim]{f.rule.id} {f.rule.name}[/]")
+            _source(report, console, loc.file, loc.line, loc.column)
+            for rel in f.related:
+                console.print(f"    [dim]other side:[/] {escape(rel.file)}:{rel.line}")
+                _source(report, console, rel.file, rel.line, rel.column)
+        console.print()
+    if report.diagnostics:
+        console.print("[bold]diagnostics[/] (problems reading the input)")
+        for d in report.diagnostics:
+            console.print(f"  {escape(d.file)}:{d.line}: [{STYLE[d.severity]}]{d.severity}[/] "
+                          f"{escape(d.message)} [dim]{d.code}[/]")
+        console.print()
+    counts = report.counts()
+    summary = ", ".join(f"{n} {s}{'s' if n != 1 else ''}" for s, n in counts.items())
+    total = sum(counts.values())
+    console.print(f"[bold]{total} finding{'s' if total != 1 else ''}[/] ({summary}); "
+                  f"{len(report.diagnostics)} diagnostic{'s' if len(report.diagnostics) != 1 else ''}")
+
+
+def _source(report: Report, console: Console, file: str, line: int, column: int) -> None:
+    text = report.source_line(file, line)
+    if text is None:
+        return
+    console.print(f"    [dim]{line:>4} |[/] {escape(text)}", highlight=False)
+    if column > 0:
+        console.print(f"    [dim]     |[/] {' ' * (column - 1)}[bold]^[/]", highlight=False)

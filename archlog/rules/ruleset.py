@@ -1,0 +1,143 @@
+"""Rule files: Datalog (clingo syntax) with a metadata header per rule in `%!` comment lines.
+
+    %! id: AL101
+    %! name: topic-type-mismatch
+    %! severity: error
+    %! finding: type_mismatch(topic, sub, sub_node, sub_type, pub, pub_node, pub_type)
+    %! location: sub
+    %! related: [pub]
+    %! message: "{sub_node} subscribes to {topic} as {sub_type} ..."
+    type_mismatch(T, S, SN, ST, P, PN, PT) :- ...
+
+A file without a header holds shared derived relations (a library, like prelude.lp).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import yaml
+
+from archlog.diagnostics import SEVERITIES
+
+BUILTIN = Path(__file__).resolve().parent / "builtin"
+REQUIRED = ("id", "name", "severity", "finding", "location", "message", "summary")
+_HEAD = re.compile(r"^\s*(\w+)\s*\(([^()]*)\)\s*$")
+
+
+class RuleError(Exception):
+    """A rule file that cannot be used, with file:line."""
+
+    def __init__(self, file: str, line: int, message: str, column: int = 1) -> None:
+        super().__init__(f"{file}:{line}:{column}: {message}")
+        self.file, self.line, self.column, self.message = file, line, column, message
+
+
+@dataclass
+class Rule:
+    id: str
+    name: str
+    severity: str
+    summary: str
+    message: str
+    predicate: str
+    columns: list[str]
+    location: str
+    related: list[str]
+    description: str = ""
+    help: str = ""
+    tags: list[str] = field(default_factory=list)
+    precision: str = "high"
+    file: str = ""
+    line: int = 0
+
+
+@dataclass
+class Program:
+    """A piece of rule text with where it came from (for mapping engine errors back)."""
+
+    text: str
+    file: str
+    first_line: int
+
+
+@dataclass
+class RuleSet:
+    rules: list[Rule] = field(default_factory=list)
+    programs: list[Program] = field(default_factory=list)
+
+    def add_file(self, path: Path) -> None:
+        rules, programs = parse_rule_file(path.read_text(encoding="utf-8"), str(path))
+        known = {r.id for r in self.rules}
+        for rule in rules:
+            if rule.id in known:
+                raise RuleError(rule.file, rule.line, f"rule id {rule.id} is defined twice")
+        self.rules += rules
+        self.programs += programs
+
+
+def load_rules(paths: list[Path], builtin: bool = True) -> RuleSet:
+    """The shipped rules (prelude first) followed by the user's files or folders."""
+    ruleset = RuleSet()
+    files = sorted(BUILTIN.glob("*.lp"), key=lambda p: (p.name != "prelude.lp", p.name)) if builtin else []
+    for path in paths:
+        files += sorted(path.glob("*.lp")) if path.is_dir() else [path]
+    for path in files:
+        ruleset.add_file(path)
+    return ruleset
+
+
+def parse_rule_file(text: str, file: str) -> tuple[list[Rule], list[Program]]:
+    lines = text.splitlines()
+    rules: list[Rule] = []
+    programs: list[Program] = []
+    i = 0
+    while i < len(lines):
+        start = i
+        header: list[str] = []
+        while i < len(lines) and lines[i].startswith("%!"):
+            header.append(lines[i][2:].removeprefix(" "))
+            i += 1
+        body_start = i
+        while i < len(lines) and not lines[i].startswith("%!"):
+            i += 1
+        programs.append(Program("\n".join(lines[body_start:i]), file, body_start + 1))
+        if header:
+            rules.append(_rule(header, file, start + 1))
+    return rules, programs
+
+
+def _rule(header: list[str], file: str, line: int) -> Rule:
+    try:
+        meta = yaml.safe_load("\n".join(header)) or {}
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        raise RuleError(file, line + (mark.line if mark else 0), f"metadata is not valid YAML: {exc}") from None
+    if not isinstance(meta, dict):
+        raise RuleError(file, line, "metadata must be `key: value` lines")
+    missing = [k for k in REQUIRED if k not in meta]
+    if missing:
+        raise RuleError(file, line, f"metadata lacks {', '.join(missing)}")
+    head = _HEAD.match(str(meta["finding"]))
+    if not head:
+        raise RuleError(file, line, "`finding` must look like predicate(col1, col2, ...)")
+    columns = [c.strip() for c in head.group(2).split(",") if c.strip()]
+    related = meta.get("related") or []
+    for col in [meta["location"], *related]:
+        if col not in columns:
+            raise RuleError(file, line, f"location column '{col}' is not a column of {head.group(1)}")
+    if meta["severity"] not in SEVERITIES:
+        raise RuleError(file, line, f"severity must be one of {', '.join(SEVERITIES)}")
+    try:
+        str(meta["message"]).format(**{c: "" for c in columns})
+    except (KeyError, IndexError, ValueError) as exc:
+        raise RuleError(file, line, f"message template uses an unknown column: {exc}") from None
+    return Rule(
+        id=str(meta["id"]), name=str(meta["name"]), severity=meta["severity"], summary=str(meta["summary"]),
+        message=str(meta["message"]), predicate=head.group(1), columns=columns, location=meta["location"],
+        related=list(related), description=str(meta.get("description", "")).strip(),
+        help=str(meta.get("help", "")).strip(), tags=list(meta.get("tags", [])),
+        precision=str(meta.get("precision", "high")), file=file, line=line,
+    )
