@@ -80,6 +80,7 @@ class _Walker:
         self.summary, self.source, self.file = summary, str(source), shown
         self.handles: dict[tuple, Value] = {}
         self.param_vars: dict[tuple, Value] = {}
+        self.call_sites: dict[tuple, list[ci.Cursor]] = {}
 
     @staticmethod
     def key(decl: ci.Cursor | None) -> tuple | None:
@@ -97,15 +98,16 @@ class _Walker:
 
     # -- traversal ------------------------------------------------------------------------
     def walk(self, root: ci.Cursor) -> None:
-        for cursor in root.walk_preorder():
-            if not self.in_main(cursor):
-                continue
-            kind = cursor.kind
-            if kind in (K.VAR_DECL, K.FIELD_DECL) and "NodeHandle" in cursor.type.spelling:
+        cursors = [c for c in root.walk_preorder() if self.in_main(c)]
+        for cursor in cursors:
+            if cursor.kind == K.CALL_EXPR and cursor.referenced is not None:
+                self.call_sites.setdefault(self.key(cursor.referenced), []).append(cursor)
+            elif cursor.kind in (K.VAR_DECL, K.FIELD_DECL) and "NodeHandle" in cursor.type.spelling:
                 self.handles.setdefault(self.key(cursor), self.handle_ns(cursor))
-            elif kind == K.CONSTRUCTOR:
+            elif cursor.kind == K.CONSTRUCTOR:
                 self.member_inits(cursor)
-            elif kind == K.CALL_EXPR:
+        for cursor in cursors:
+            if cursor.kind == K.CALL_EXPR:
                 self.call(cursor)
 
     def handle_ns(self, decl: ci.Cursor) -> Value:
@@ -136,16 +138,32 @@ class _Walker:
             if member.kind == K.MEMBER_REF and "NodeHandle" in member.type.spelling:
                 self.handles[self.key(member.referenced)] = self.ctor_ns(init)
 
-    def handle_of(self, expr: ci.Cursor) -> Value:
+    def handle_of(self, expr: ci.Cursor, depth: int = 0) -> Value:
+        """The namespace of the NodeHandle an expression refers to."""
         for cursor in expr.walk_preorder():
             if cursor.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) and "NodeHandle" in cursor.type.spelling:
-                key = self.key(cursor.referenced)
+                decl = cursor.referenced
+                key = self.key(decl)
                 if key in self.handles:
                     return self.handles[key]
-                if cursor.referenced is not None and cursor.referenced.kind == K.FIELD_DECL:
+                if decl is not None and decl.kind == K.FIELD_DECL:
                     return ""
-                return self.unknown(expr, "NodeHandle of unknown origin")
+                if decl is not None and decl.kind == K.PARM_DECL and depth < 4:
+                    return self.parameter_handle(decl, expr, depth)
+                break
         return self.unknown(expr, "NodeHandle of unknown origin")
+
+    def parameter_handle(self, param: ci.Cursor, expr: ci.Cursor, depth: int) -> Value:
+        """A handle parameter takes the namespace every call site in this file passes for it."""
+        function = param.semantic_parent
+        params = [p.spelling for p in function.get_arguments()] if function is not None else []
+        sites = self.call_sites.get(self.key(function), []) if param.spelling in params else []
+        found = {self.handle_of(args[params.index(param.spelling)], depth + 1)
+                 for site in sites if len(args := _written_args(site)) > params.index(param.spelling)}
+        if len(found) == 1 and isinstance(value := next(iter(found)), str):
+            return value
+        why = "no call site passes this NodeHandle" if not found else "call sites pass different NodeHandles"
+        return self.unknown(expr, why)
 
     # -- values ---------------------------------------------------------------------------
     def value(self, expr: ci.Cursor, depth: int = 0) -> Value:
@@ -154,6 +172,8 @@ class _Walker:
             return self.unknown(expr)
         if kind == K.STRING_LITERAL:
             return _unquote(expr.spelling)
+        if kind in (K.INTEGER_LITERAL, K.FLOATING_LITERAL, K.CXX_BOOL_LITERAL_EXPR):
+            return "".join(t.spelling for t in expr.get_tokens())
         if kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR):
             decl = expr.referenced
             key = self.key(decl)
@@ -196,9 +216,10 @@ class _Walker:
 
     def param(self, call: ci.Cursor, args: list[ci.Cursor], handle: Value) -> None:
         pname = self.value(args[0])
-        default = self.value(args[2]) if len(args) > 2 else None
+        has_default = len(args) > 2 or (call.spelling == "param" and len(args) == 2 and _is_rvalue(args[1]))
+        default = self.value(args[-1]) if has_default else None
         self.add("param_read", call, pname, "", handle, default)
-        if len(args) > 1 and isinstance(pname, str):
+        if len(args) > 1 and isinstance(pname, str) and not (has_default and len(args) == 2):
             target = next((c for c in args[1].walk_preorder() if c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)), None)
             key = self.key(target.referenced) if target is not None else None
             if key is not None:
@@ -224,6 +245,11 @@ class _Walker:
             default: Value | None = None) -> None:
         loc = call.location
         self.summary.ports.append(Port(kind, name, type_, self.file, loc.line, loc.column, handle, default))
+
+
+def _is_rvalue(expr: ci.Cursor) -> bool:
+    """A literal or temporary, not a variable the parameter could be stored into."""
+    return not any(c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) for c in expr.walk_preorder())
 
 
 def _written_args(call: ci.Cursor) -> list[ci.Cursor]:

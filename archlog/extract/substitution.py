@@ -106,6 +106,7 @@ def _eval(expr: str, ctx: SubstContext) -> str:
         "arg": ctx.arg, "find": ctx.find_pkg, "env": ctx.getenv,
         "optenv": lambda n, d="": ctx.getenv(n, d), "anon": ctx.anonymous,
         "dirname": lambda: str(ctx.file.parent),
+        **{f.__name__: f for f in (int, float, str, bool, len, abs, min, max, round)},
     }
     return str(_Evaluator(ctx, functions).visit(tree.body))
 

@@ -1,0 +1,5 @@
+"""`python -m archlog` is the `archlog` command."""
+
+from archlog.cli import run
+
+run()

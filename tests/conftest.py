@@ -1,0 +1,54 @@
+"""Shared helpers for the test suite."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from archlog.analysis import analyse
+from archlog.rules.engine import Engine, Finding, render
+from archlog.rules.ruleset import load_rules
+
+ROOT = Path(__file__).resolve().parent.parent
+CORPUS = ROOT / "corpus" / "ros1"
+SHARED = ROOT.parent / "shared"
+
+
+def corpus_cases() -> list[Path]:
+    return sorted(p.parent for p in CORPUS.glob("*/*/case.json"))
+
+
+def load_case(variant: Path) -> dict:
+    return json.loads((variant / "case.json").read_text())
+
+
+def run_case(variant: Path) -> tuple[object, list[Finding]]:
+    case = load_case(variant)
+    analysis = analyse([variant], case["launch"], case.get("args", {}), [variant / m for m in case.get("models", [])])
+    _ctl, findings = Engine(load_rules([])).run(analysis.store)
+    return analysis, findings
+
+
+def finding_keys(findings: list[Finding]) -> list[tuple[str, str, int, str]]:
+    """(rule, file, line, subject): the subject is a finding's first column by convention."""
+    return sorted((f.rule.id, f.location.file, f.location.line, render(next(iter(f.values.values()))))
+                  for f in findings)
+
+
+@pytest.fixture(scope="session")
+def sarif_schema() -> dict:
+    path = SHARED / "schemas" / "sarif-schema-2.1.0.json"
+    assert path.is_file(), f"the official SARIF schema is expected at {path}"
+    return json.loads(path.read_text())
+
+
+def requires_ros() -> list:
+    """Marks for tests that run Debian's ROS 1; in CI (CI set) a missing ROS is a failure, not a skip."""
+    import os
+
+    from support.rosgraph import ros_available
+
+    return [pytest.mark.ros,
+            pytest.mark.skipif(not ros_available() and not os.environ.get("CI"), reason="Debian ROS 1 not installed")]

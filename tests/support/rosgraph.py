@@ -1,0 +1,271 @@
+"""Run ROS 1 launch files against a private master and read back the live graph.
+
+Debian's ROS 1 packages only import under /usr/bin/python3, so everything ROS
+is run as a subprocess; the master is read over XML-RPC with the stdlib.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import signal
+import socket
+import subprocess
+import tempfile
+import time
+import xmlrpc.client
+from dataclasses import dataclass
+from pathlib import Path
+
+ROSCORE = Path("/usr/bin/roscore")
+ROSLAUNCH = Path("/usr/bin/roslaunch")
+
+_CALLER_ID = "/archlog_test_probe"
+_POLL = 0.2  # seconds between master polls
+_LAUNCH_GRACE = 3.0  # SIGINT -> SIGKILL grace for roslaunch (and its nodes)
+_CORE_GRACE = 2.0  # same for roscore
+_INFRA_NODES = frozenset({"/rosout"})
+_INFRA_TOPICS = frozenset({"/rosout", "/rosout_agg", "/clock"})
+_LOGGER_SERVICES = ("get_loggers", "set_logger_level")
+_ANSI = re.compile(r"\x1b(\[[0-9;]*[A-Za-z]|\][^\x07]*\x07)")  # colours, terminal titles
+
+
+@dataclass(frozen=True)
+class LiveGraph:
+    """The computation graph as registered on the master, minus infrastructure."""
+
+    nodes: frozenset[str]
+    publishers: frozenset[tuple[str, str, str]]  # (node, topic, type)
+    subscribers: frozenset[tuple[str, str, str]]  # (node, topic, type)
+    services: frozenset[tuple[str, str]]  # (node, service)
+
+
+def ros_available() -> bool:
+    """True if Debian's roslaunch and roscore are installed."""
+    return ROSLAUNCH.is_file() and ROSCORE.is_file()
+
+
+def launch_graph(
+    workspace_src: Path,
+    launch_files: list[Path],
+    args: dict[str, str] | None = None,
+    expect_nodes: int | None = None,
+    settle: float = 3.0,
+    timeout: float = 30.0,
+) -> LiveGraph:
+    """Start a private master on 127.0.0.1, roslaunch the files, read the graph, stop everything.
+
+    Returns once the graph has been unchanged for ``settle`` seconds (counted
+    from when roslaunch registered with the master) and holds at least
+    ``expect_nodes`` non-infrastructure nodes. Raises RuntimeError if roscore or
+    roslaunch fails, or if ``timeout`` expires first.
+    """
+    deadline = time.monotonic() + timeout
+    tmp = Path(tempfile.mkdtemp(prefix="archlog-rosgraph-"))
+    port = _free_port()
+    uri = f"http://127.0.0.1:{port}"
+    env = _ros_env(tmp, uri, Path(workspace_src))
+    core_log, launch_log = tmp / "roscore.log", tmp / "roslaunch.log"
+    core = launch = None
+    try:
+        core = _spawn([str(ROSCORE), "-p", str(port)], env, core_log)
+        master = _wait_for_master(uri, core, core_log, deadline)
+        known_launchers = _roslaunch_uris(master)
+
+        cmd = [str(ROSLAUNCH), "--screen", "--sigint-timeout", "2", "--sigterm-timeout", "1"]
+        cmd += [str(f) for f in launch_files]
+        cmd += [f"{k}:={v}" for k, v in (args or {}).items()]
+        launch = _spawn(cmd, env, launch_log)
+        return _wait_for_graph(master, launch, launch_log, known_launchers,
+                               expect_nodes, settle, deadline)
+    finally:
+        _stop(launch, _LAUNCH_GRACE)
+        _stop(core, _CORE_GRACE)
+        _kill_leftovers(tmp)
+        shutil.rmtree(tmp, ignore_errors=True)  # errors already carry the log tail
+
+
+# -- processes ---------------------------------------------------------------
+
+
+def _free_port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def _ros_env(tmp: Path, master_uri: str, workspace_src: Path) -> dict[str, str]:
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("ROS_IP", "ROS_NAMESPACE", "PYTHONPATH", "PYTHONHOME")}
+    env.update(
+        ROS_MASTER_URI=master_uri,
+        ROS_HOSTNAME="127.0.0.1",
+        ROS_HOME=str(tmp),  # also the marker _kill_leftovers looks for
+        ROS_LOG_DIR=str(tmp / "log"),
+        ROS_PACKAGE_PATH=str(workspace_src),
+        PATH="/usr/bin:" + env.get("PATH", ""),  # `#!/usr/bin/env python3` must find Debian's
+        PYTHONUNBUFFERED="1",
+    )
+    return env
+
+
+def _spawn(cmd: list[str], env: dict[str, str], log: Path) -> subprocess.Popen:
+    with open(log, "wb") as out:
+        return subprocess.Popen(cmd, env=env, stdin=subprocess.DEVNULL, stdout=out,
+                                stderr=subprocess.STDOUT, start_new_session=True)
+
+
+def _stop(proc: subprocess.Popen | None, grace: float) -> None:
+    """SIGINT the process group, SIGKILL it after ``grace`` seconds, reap."""
+    if proc is None:
+        return
+    for sig, wait in ((signal.SIGINT, grace), (signal.SIGKILL, 1.0)):
+        if proc.poll() is not None:
+            break
+        try:
+            os.killpg(proc.pid, sig)
+        except ProcessLookupError:
+            break
+        try:
+            proc.wait(wait)
+        except subprocess.TimeoutExpired:
+            pass
+    try:  # the leader may be gone while group members linger
+        os.killpg(proc.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+
+
+def _kill_leftovers(tmp: Path) -> None:
+    """SIGKILL any process still carrying our ROS_HOME.
+
+    roslaunch starts every node (and roscore its master and rosout) in a
+    session of its own, so killpg on the launcher does not reach them.
+    """
+    marker = f"ROS_HOME={tmp}".encode()
+    pids = [pid for pid in _pids_with_env(marker) if pid != os.getpid()]
+    for pid in pids:
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+    end = time.monotonic() + 2.0
+    while pids and time.monotonic() < end:
+        pids = [p for p in pids if _alive(p)]
+        time.sleep(0.05)
+
+
+def _pids_with_env(entry: bytes) -> list[int]:
+    """Pids of live processes whose environment contains ``entry`` (KEY=value)."""
+    found = []
+    for d in Path("/proc").iterdir():
+        if not d.name.isdigit():
+            continue
+        try:
+            if entry in (d / "environ").read_bytes().split(b"\0"):
+                found.append(int(d.name))
+        except OSError:
+            continue
+    return found
+
+
+def _alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            return f.read().rsplit(b")", 1)[1].split()[0] != b"Z"
+    except (OSError, IndexError):
+        return False
+
+
+def _tail(log: Path, lines: int = 40) -> str:
+    try:
+        text = log.read_text(errors="replace")
+    except OSError:
+        return "(no log)"
+    return "\n".join(_ANSI.sub("", text).splitlines()[-lines:])
+
+
+# -- master ------------------------------------------------------------------
+
+
+class _Transport(xmlrpc.client.Transport):
+    def make_connection(self, host):
+        conn = super().make_connection(host)
+        conn.timeout = 2.0
+        return conn
+
+
+def _master(uri: str) -> xmlrpc.client.ServerProxy:
+    return xmlrpc.client.ServerProxy(uri, transport=_Transport())
+
+
+def _call(method, *args):
+    code, msg, value = method(_CALLER_ID, *args)
+    if code != 1:
+        raise RuntimeError(f"master call failed: {msg}")
+    return value
+
+
+def _wait_for_master(uri: str, core: subprocess.Popen, log: Path,
+                     deadline: float) -> xmlrpc.client.ServerProxy:
+    master = _master(uri)
+    while True:
+        try:
+            _call(master.getSystemState)
+            return master
+        except (OSError, xmlrpc.client.Error):
+            pass
+        if core.poll() is not None:
+            raise RuntimeError(f"roscore exited with code {core.returncode}:\n{_tail(log)}")
+        if time.monotonic() > deadline:
+            raise RuntimeError(f"master at {uri} did not come up in time:\n{_tail(log)}")
+        time.sleep(_POLL)
+
+
+def _roslaunch_uris(master: xmlrpc.client.ServerProxy) -> set[str]:
+    """Names of /roslaunch/uris/* params: each roslaunch (roscore too) adds one."""
+    return {p for p in _call(master.getParamNames) if p.startswith("/roslaunch/uris/")}
+
+
+def _read_graph(master: xmlrpc.client.ServerProxy) -> LiveGraph:
+    pubs, subs, srvs = _call(master.getSystemState)
+    types = dict(_call(master.getTopicTypes))
+    nodes = {n for _, ns in pubs + subs + srvs for n in ns} - _INFRA_NODES
+
+    def topic_edges(entries):
+        return frozenset((n, t, types.get(t, "")) for t, ns in entries
+                         if t not in _INFRA_TOPICS for n in ns if n in nodes)
+
+    services = frozenset(
+        (n, s) for s, ns in srvs for n in ns
+        if n in nodes and s not in {f"{n}/{x}" for x in _LOGGER_SERVICES})
+    return LiveGraph(frozenset(nodes), topic_edges(pubs), topic_edges(subs), services)
+
+
+def _wait_for_graph(master: xmlrpc.client.ServerProxy, launch: subprocess.Popen, log: Path,
+                    known_launchers: set[str], expect_nodes: int | None, settle: float,
+                    deadline: float) -> LiveGraph:
+    graph: LiveGraph | None = None
+    changed_at: float | None = None  # None until our roslaunch shows up on the master
+    while True:
+        if launch.poll() is not None:
+            raise RuntimeError(
+                f"roslaunch exited early with code {launch.returncode}:\n{_tail(log)}")
+        now = time.monotonic()
+        if changed_at is None and _roslaunch_uris(master) - known_launchers:
+            changed_at = now
+        current = _read_graph(master)
+        if current != graph:
+            graph = current
+            if changed_at is not None:
+                changed_at = now
+        enough = expect_nodes is None or len(graph.nodes) >= expect_nodes
+        if changed_at is not None and enough and now - changed_at >= settle:
+            return graph
+        if now > deadline:
+            want = f"{expect_nodes} nodes" if expect_nodes is not None else "a stable graph"
+            raise RuntimeError(
+                f"timed out waiting for {want}; last graph has nodes "
+                f"{sorted(graph.nodes)}\nroslaunch log tail:\n{_tail(log)}")
+        time.sleep(_POLL)

@@ -1,0 +1,113 @@
+"""rospy (ast) and roscpp (libclang) extraction on small sources written here."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.cpp import extract_cpp
+from archlog.extract.python import extract_python
+from archlog.values import ParamRef, Unknown
+
+PY = '''#!/usr/bin/env python3
+import rospy
+from std_msgs.msg import String as S
+import geometry_msgs.msg
+from nav_msgs import msg as nm
+from nav_msgs.srv import GetMap
+TOPIC = "chatter"
+
+def main():
+    rospy.init_node("talker")
+    rospy.Publisher(TOPIC, S, queue_size=10)
+    rospy.Subscriber(rospy.get_param("~input", "cmd"), geometry_msgs.msg.Twist, print)
+    rospy.Subscriber(f"/{TOPIC}_echo", nm.Odometry, print)
+    rospy.ServiceProxy(name="static_map", service_class=GetMap)
+    rospy.Service("~reset", GetMap, print)
+    rospy.Publisher(make_topic(), S)
+'''
+
+CPP = r'''#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <sensor_msgs/LaserScan.h>
+#include <nav_msgs/GetMap.h>
+static const std::string PREFIX = "out";
+class Relay {
+ public:
+  Relay() : pnh_("~") {
+    pub_ = nh_.advertise<std_msgs::String>(PREFIX + "/text", 10);
+    sub_ = pnh_.subscribe("scan", 10, &Relay::onScan, this);
+    srv_ = nh_.advertiseService("get_map", &Relay::onMap, this);
+  }
+  void onScan(const sensor_msgs::LaserScan::ConstPtr& m) {}
+  bool onMap(nav_msgs::GetMap::Request& req, nav_msgs::GetMap::Response& res) { return true; }
+ private:
+  ros::NodeHandle nh_, pnh_;
+  ros::Publisher pub_; ros::Subscriber sub_; ros::ServiceServer srv_;
+};
+void onImage(const sensor_msgs::LaserScanConstPtr& msg) {}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "relay");
+  ros::NodeHandle nh;
+  ros::NodeHandle cam(nh, "camera");
+  std::string topic;
+  nh.param<std::string>("input_topic", topic, "image");
+  ros::Subscriber s = cam.subscribe(topic, 1, onImage);
+  ros::ServiceClient c = nh.serviceClient<nav_msgs::GetMap>("static_map");
+  Relay r;
+  ros::spin();
+}
+'''
+
+
+def ports(summary):
+    return [(p.kind, p.name, p.type, p.handle_ns, p.line) for p in summary.ports]
+
+
+def test_rospy_calls_types_and_values(tmp_path: Path) -> None:
+    (tmp_path / "talker.py").write_text(PY)
+    sink = DiagnosticSink()
+    s = extract_python(tmp_path / "talker.py", "demo", "talker.py", "talker.py", sink)
+    assert s.default_name == "talker" and sink.items == []
+    got = ports(s)
+    assert got[0] == ("publisher", "chatter", "std_msgs/String", "", 11)
+    assert got[1][0:3] == ("subscriber", ParamRef("~input", "cmd", "", "talker.py", 12), "geometry_msgs/Twist")
+    assert got[2][0:3] == ("param_read", "~input", "")
+    assert got[3][0:3] == ("subscriber", "/chatter_echo", "nav_msgs/Odometry")
+    assert got[4][0:3] == ("service_client", "static_map", "nav_msgs/GetMap")
+    assert got[5][0:3] == ("service_server", "~reset", "nav_msgs/GetMap")
+    assert got[6][0] == "publisher" and got[6][1] == Unknown("make_topic()", "talker.py", 16)
+
+
+def test_python2_source_is_a_diagnostic(tmp_path: Path) -> None:
+    (tmp_path / "old.py").write_text("import rospy\nprint 'hello'\n")
+    sink = DiagnosticSink()
+    s = extract_python(tmp_path / "old.py", "demo", "old.py", "old.py", sink)
+    assert s.ports == [] and [(d.line, d.code) for d in sink.items] == [(2, "python-syntax")]
+
+
+def test_roscpp_handles_templates_callbacks_and_params(tmp_path: Path) -> None:
+    (tmp_path / "relay.cpp").write_text(CPP)
+    sink = DiagnosticSink()
+    s = extract_cpp([tmp_path / "relay.cpp"], "demo", "relay", [], lambda p: Path(p).name, sink)
+    assert s.default_name == "relay" and sink.items == []
+    got = {(k, n if isinstance(n, str) else type(n).__name__, t, h, line) for k, n, t, h, line in ports(s)}
+    assert ("publisher", "out/text", "std_msgs/String", "", 9) in got
+    assert ("subscriber", "scan", "sensor_msgs/LaserScan", "~", 10) in got
+    assert ("service_server", "get_map", "nav_msgs/GetMap", "", 11) in got
+    assert ("service_client", "static_map", "nav_msgs/GetMap", "", 27) in got
+    image = next(p for p in s.ports if p.kind == "subscriber" and p.line == 26)
+    assert image.handle_ns == "camera" and image.type == "sensor_msgs/LaserScan"
+    assert image.name == ParamRef("input_topic", "image", "", "relay.cpp", 25)
+
+
+def test_cpp_that_does_not_compile_keeps_the_calls(tmp_path: Path) -> None:
+    (tmp_path / "broken.cpp").write_text(
+        '#include <ros/ros.h>\n#include <std_msgs/String.h>\n#include <no/such_header.h>\n'
+        'int main(int c, char** v) { ros::init(c, v, "b"); ros::NodeHandle nh;\n'
+        '  ros::Publisher p = nh.advertise<std_msgs::String>("chatter", 1);\n  undeclared_call(); }\n')
+    sink = DiagnosticSink()
+    s = extract_cpp([tmp_path / "broken.cpp"], "demo", "b", [], lambda p: Path(p).name, sink)
+    assert [(d.file, d.code) for d in sink.items] == [("broken.cpp", "cpp-compile")]
+    assert sink.items[0].line == 3
+    assert [(p.kind, p.name, p.type) for p in s.ports] == [("publisher", "chatter", "std_msgs/String")]

@@ -1,0 +1,138 @@
+"""ROS 1 launch interpretation: args, groups, includes, remap scoping, params, conditions."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.launch import LaunchConfig, LaunchInterpreter
+from archlog.extract.substitution import SubstContext, SubstitutionError, substitute
+from archlog.extract.workspace import Workspace
+
+
+def load(tmp_path: Path, files: dict[str, str], args: dict[str, str] | None = None) -> tuple[LaunchConfig, DiagnosticSink]:
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+    sink = DiagnosticSink()
+    config = LaunchInterpreter(Workspace([tmp_path], sink), sink).load([tmp_path / "main.launch"], args or {})
+    return config, sink
+
+
+def test_group_namespaces_and_remap_scoping(tmp_path: Path) -> None:
+    config, sink = load(tmp_path, {"main.launch": """<launch>
+  <node pkg="p" type="t" name="before"/>
+  <remap from="scan" to="base_scan"/>
+  <group ns="r1">
+    <remap from="odom" to="odometry"/>
+    <node pkg="p" type="t" name="a" ns="sub"><remap from="x" to="y"/></node>
+  </group>
+  <node pkg="p" type="t" name="after"/>
+</launch>"""})
+    nodes = {n.name: n for n in config.nodes}
+    assert set(nodes) == {"/before", "/r1/sub/a", "/after"}
+    assert [(a, b) for a, b, _ in nodes["/before"].remaps] == []
+    assert [(a, b) for a, b, _ in nodes["/r1/sub/a"].remaps] == [("scan", "base_scan"), ("odom", "odometry"), ("x", "y")]
+    assert [(a, b) for a, b, _ in nodes["/after"].remaps] == [("scan", "base_scan")]
+    assert nodes["/r1/sub/a"].namespace == "/r1/sub"
+    assert sink.items == []
+
+
+def test_args_defaults_values_and_include(tmp_path: Path) -> None:
+    config, sink = load(tmp_path, {
+        "main.launch": """<launch>
+  <arg name="robot" default="r1"/>
+  <include file="$(dirname)/child.launch" ns="$(arg robot)">
+    <arg name="name" value="$(arg robot)_driver"/>
+  </include>
+</launch>""",
+        "child.launch": """<launch>
+  <arg name="name"/>
+  <arg name="rate" default="10"/>
+  <node pkg="p" type="t" name="$(arg name)"><param name="rate" value="$(arg rate)"/></node>
+</launch>"""}, {"robot": "r7"})
+    assert [n.name for n in config.nodes] == ["/r7/r7_driver"]
+    assert config.params["/r7/r7_driver/rate"][0] == 10
+    assert sink.items == []
+
+
+def test_conditions_and_eval(tmp_path: Path) -> None:
+    config, sink = load(tmp_path, {"main.launch": """<launch>
+  <arg name="sim" default="true"/>
+  <arg name="mode" default="fast"/>
+  <node if="$(arg sim)" pkg="p" type="t" name="sim_only"/>
+  <node unless="$(arg sim)" pkg="p" type="t" name="real_only"/>
+  <node if="$(eval mode == 'fast' and sim)" pkg="p" type="t" name="fast"/>
+  <node if="$(eval arg('mode').upper() == 'SLOW' or False)" pkg="p" type="t" name="slow"/>
+</launch>"""})
+    assert [n.name for n in config.nodes] == ["/sim_only", "/fast"]
+
+
+def test_unresolvable_condition_keeps_element_as_conditional(tmp_path: Path) -> None:
+    config, sink = load(tmp_path, {"main.launch": """<launch>
+  <node if="$(env ARCHLOG_TEST_SURELY_UNSET)" pkg="p" type="t" name="maybe"/>
+</launch>"""})
+    assert [(n.name, n.condition) for n in config.nodes] == [("/maybe", "if=$(env ARCHLOG_TEST_SURELY_UNSET)")]
+    assert [(d.line, d.code) for d in sink.items] == [(2, "launch-condition")]
+
+
+def test_params_types_rosparam_and_node_args(tmp_path: Path) -> None:
+    config, _ = load(tmp_path, {"main.launch": """<launch>
+  <param name="global_int" value="3"/>
+  <param name="as_str" value="3" type="str"/>
+  <param name="flag" value="True"/>
+  <param name="robot_description" command="xacro robot.urdf.xacro"/>
+  <group ns="g">
+    <rosparam>{speed: 1.5, pid: {p: 2, d: 0}}</rosparam>
+    <node pkg="p" type="t" name="n" args="__name:=renamed in:=/input _rate:=5"/>
+  </group>
+</launch>"""})
+    values = {k: v for k, (v, _e) in config.params.items()}
+    assert values["/global_int"] == 3 and values["/as_str"] == "3" and values["/flag"] is True
+    assert values["/g/speed"] == 1.5 and values["/g/pid/p"] == 2 and values["/g/pid/d"] == 0
+    assert values["/g/renamed/rate"] == 5
+    assert type(values["/robot_description"]).__name__ == "Unknown"
+    node = config.nodes[0]
+    assert node.name == "/g/renamed" and [(a, b) for a, b, _ in node.remaps] == [("in", "/input")]
+
+
+def test_bad_launch_input_becomes_diagnostics(tmp_path: Path) -> None:
+    config, sink = load(tmp_path, {
+        "main.launch": """<launch>
+  <include file="$(dirname)/missing.launch"/>
+  <include file="$(dirname)/broken.launch"/>
+  <node pkg="$(find no_such_package_xyz)" type="t" name="x"/>
+  <node pkg="p" type="t" name="ok"/>
+</launch>""",
+        "broken.launch": "<launch>\n  <node pkg='p' type='t' name='n'\n</launch>\n"})
+    assert [n.name for n in config.nodes] == ["/ok"]
+    found = {(d.file, d.line, d.code) for d in sink.items}
+    assert ("main.launch", 2, "launch-include") in found
+    assert ("main.launch", 4, "launch-subst") in found
+    assert any(f == "broken.launch" and code == "launch-xml" for f, _l, code in found)
+
+
+@pytest.mark.parametrize("expr", [
+    "__import__('os').system('touch /tmp/archlog_pwned')",
+    "().__class__.__base__.__subclasses__()",
+    "open('/etc/passwd').read()",
+    "[x for x in range(3)]",
+    "lambda: 1",
+])
+def test_eval_never_runs_arbitrary_code(expr: str) -> None:
+    ctx = SubstContext({"a": "1"}, lambda _p: None, Path("/tmp/x.launch"))
+    with pytest.raises(SubstitutionError):
+        substitute(f"$(eval {expr})", ctx)
+    assert not Path("/tmp/archlog_pwned").exists()
+
+
+def test_substitution_nesting_and_optenv() -> None:
+    ctx = SubstContext({"pkg": "demo", "n": "2"}, lambda p: Path(f"/ws/{p}"), Path("/ws/demo/launch/x.launch"),
+                       env={"HOME": "/root"})
+    assert substitute("$(find $(arg pkg))/cfg", ctx) == "/ws/demo/cfg"
+    assert substitute("$(optenv NOPE fallback words)-$(env HOME)", ctx) == "fallback words-/root"
+    assert substitute("$(eval int(n) * 2)", ctx) == "4"
+    assert substitute("$(eval n + 'x')", ctx) == "2x"
+    assert substitute("$(dirname)", ctx) == "/ws/demo/launch"
+    assert substitute("$(anon a)", ctx) == substitute("$(anon a)", ctx) != substitute("$(anon b)", ctx)

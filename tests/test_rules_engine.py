@@ -1,0 +1,98 @@
+"""Rule files: metadata, user rules loaded like shipped ones, and errors with file:line:column."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from archlog.facts.store import FactStore
+from archlog.rules.engine import Engine
+from archlog.rules.ruleset import RuleError, load_rules
+from archlog.values import Unknown
+
+HEADER = """%! id: {id}
+%! name: test-rule
+%! severity: warning
+%! summary: test
+%! finding: {finding}
+%! location: {location}
+%! message: "{message}"
+"""
+
+
+def rule_file(tmp_path: Path, body: str, finding: str = "hit(topic, port)", location: str = "port",
+              message: str = "{topic}", rule_id: str = "USR1") -> Path:
+    path = tmp_path / "user.lp"
+    path.write_text(HEADER.format(id=rule_id, finding=finding, location=location, message=message) + body)
+    return path
+
+
+def small_store() -> FactStore:
+    store = FactStore()
+    for pid, node, topic in (("p1", "/a", "/x"), ("p2", "/b", "/x"), ("p3", "/c", "/y")):
+        store.add("publisher", pid, node, topic, "std_msgs/String")
+        store.locate(pid, f"{node[1:]}.py", 3, 5)
+    store.add("subscriber", "p4", "/d", Unknown("f()", "d.py", 9), "std_msgs/String")
+    return store
+
+
+def test_user_rule_reuses_shipped_relations(tmp_path: Path) -> None:
+    path = rule_file(tmp_path, "hit(T, P) :- publisher(P, N, T, _), publisher(Q, M, T, _), N != M, published(T).\n",
+                     message="{topic} has several publishers")
+    _ctl, findings = Engine(load_rules([path])).run(small_store())
+    user = [f for f in findings if f.rule.id == "USR1"]
+    assert [(f.message, f.location.file, f.location.line, f.location.column) for f in user] == [
+        ("/x has several publishers", "a.py", 3, 5), ("/x has several publishers", "b.py", 3, 5)]
+    assert user[0].subjects == {"topics": ["/x"]}
+
+
+def test_unknown_values_never_join(tmp_path: Path) -> None:
+    path = rule_file(tmp_path, "hit(T, P) :- subscriber(P, _, T, _), published(T).\n")
+    _ctl, findings = Engine(load_rules([path])).run(small_store())
+    assert [f for f in findings if f.rule.id == "USR1"] == []
+
+
+@pytest.mark.parametrize("body, line, column, words", [
+    ("hit(T, P) :- publisher(P, _, T _).\n", 8, 32, "syntax error"),
+    ("hit(T, P) :- publisher(P, _, T, _), not subscriber(Q, _, X, _).\n", 8, 1, "unsafe"),
+    ("hit(T, P) :- publisher(P, _, T, _), no_such_relation(T).\n", 8, 37, "unknown relation no_such_relation/1"),
+    ("hit(T, P) :- publisher(P, T).\n", 8, 14, "publisher takes 4 columns, not 2"),
+    ("other(T, P) :- publisher(P, _, T, _).\n", 1, 1, "no rule derives the finding hit/2"),
+    ("hit(T, P) :- publisher(P, _, T, _).\npublisher(T) :- hit(T, _).\n", 9, 1, "fact relation"),
+])
+def test_rule_errors_point_at_file_line_column(tmp_path: Path, body: str, line: int, column: int, words: str) -> None:
+    path = rule_file(tmp_path, body)
+    with pytest.raises(RuleError) as err:
+        Engine(load_rules([path]))
+    assert (err.value.file, err.value.line, err.value.column) == (str(path), line, column)
+    assert words in err.value.message
+
+
+def test_non_stratified_rules_are_rejected(tmp_path: Path) -> None:
+    path = rule_file(tmp_path, "hit(T, P) :- publisher(P, _, T, _), not skip(T).\n"
+                               "skip(T) :- publisher(_, _, T, _), not hit(T, _).\n")
+    with pytest.raises(RuleError) as err:
+        Engine(load_rules([path])).run(small_store())
+    assert "not stratified" in err.value.message and err.value.file == str(path)
+
+
+@pytest.mark.parametrize("change, words", [
+    (("%! severity: warning", "%! severity: fatal"), "severity must be one of"),
+    (("%! location: port", "%! location: nowhere"), "location column 'nowhere'"),
+    (('%! message: "{topic}"', '%! message: "{missing}"'), "unknown column"),
+    (("%! summary: test\n", ""), "metadata lacks summary"),
+])
+def test_bad_metadata(tmp_path: Path, change: tuple[str, str], words: str) -> None:
+    path = rule_file(tmp_path, "hit(T, P) :- publisher(P, _, T, _).\n")
+    path.write_text(path.read_text().replace(*change))
+    with pytest.raises(RuleError) as err:
+        load_rules([path])
+    assert words in err.value.message and err.value.line == 1
+
+
+def test_shipped_rules_have_complete_metadata() -> None:
+    rules = load_rules([]).rules
+    assert len(rules) >= 8 and len({r.id for r in rules}) == len(rules)
+    for rule in rules:
+        assert rule.description and rule.help and rule.tags and rule.summary

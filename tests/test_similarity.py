@@ -1,0 +1,39 @@
+"""Near-miss names: the pinned examples and the prefix filter's completeness."""
+
+from __future__ import annotations
+
+import itertools
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from archlog.facts.similarity import distance, near_pairs
+
+
+def test_pinned_examples() -> None:
+    assert distance("/base_waypoint", "/base_waypoints") < 0.5
+    assert distance("/vector_map_info/point", "/vector_map_info/point_class") < 0.5
+    assert distance("/vector_map_info/point", "/vector_map_info/line") >= 0.5
+    assert distance("/odom", "/odometry") >= 0.5
+    assert distance("/cmd_vel", "/cmd_vel") == 0
+
+
+def test_transposed_segments_are_near() -> None:
+    assert distance("/map_vector/info", "/vector_map/info") < 0.5
+
+
+def test_near_pairs_lists_each_pair_once() -> None:
+    pairs = near_pairs(["/base_waypoint", "/base_waypoints", "/vector_map_info/line", "/odom"])
+    assert [(a, b) for a, b, _ in pairs] == [("/base_waypoint", "/base_waypoints")]
+
+
+WORDS = ["scan", "scan2", "cmd", "vel", "map", "odom", "odm", "image", "raw", "base"]
+name = st.lists(st.lists(st.sampled_from(WORDS), min_size=1, max_size=2).map("_".join), min_size=1, max_size=4) \
+    .map(lambda segs: "/" + "/".join(segs))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(name, min_size=2, max_size=25, unique=True), st.sampled_from([0.3, 0.5, 0.8]))
+def test_prefix_filter_finds_every_pair_brute_force_finds(names: list[str], threshold: float) -> None:
+    brute = sorted((a, b) for a, b in itertools.combinations(sorted(names), 2) if distance(a, b) < threshold)
+    assert [(a, b) for a, b, _ in near_pairs(names, threshold)] == brute
