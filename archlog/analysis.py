@@ -6,6 +6,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cpp import extract_cpp
 from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode
@@ -16,7 +17,6 @@ from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace import Workspace
 from archlog.facts.compose import compose, rosrun_config
 from archlog.facts.store import FactStore
-from archlog import names
 
 
 class ConfigError(Exception):
@@ -103,9 +103,14 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
     return summaries
 
 
-def _models(paths: list[Path], workspace: Workspace, diagnostics: DiagnosticSink):
-    builtin: dict[tuple[str, str], NodeSummary] = {}
-    user: dict[tuple[str, str], NodeSummary] = {}
+Summaries = dict[tuple[str, str], NodeSummary]
+
+
+def _models(paths: list[Path], workspace: Workspace, diagnostics: DiagnosticSink
+            ) -> tuple[Summaries, Summaries, list[tuple[NodeSummary, str, Element]]]:
+    """Shipped models, the user's models, and external instances declared by models."""
+    builtin: Summaries = {}
+    user: Summaries = {}
     externals: list[tuple[NodeSummary, str, Element]] = []
     files = [(p, builtin) for p in sorted(BUILTIN_DIR.glob("*.yaml"))] + [(p, user) for p in paths]
     for index, (path, target) in enumerate(files, 1):

@@ -73,10 +73,11 @@ def check(paths, launches, args, models, near_miss_threshold, rule_paths, fmt, o
     analysis = _analyse(paths, launches, args, models, near_miss_threshold)
     _ctl, findings = engine.run(analysis.store)
     report = Report(findings, analysis.diagnostics.items, ruleset.rules, analysis.workspace.roots[0])
-    if fmt == "text":
-        console = Console(file=output.open("w", encoding="utf-8") if output else sys.stdout,
-                          no_color=bool(os.environ.get("NO_COLOR")) or output is not None, soft_wrap=True)
-        print_text(report, console)
+    if fmt == "text" and output:
+        with output.open("w", encoding="utf-8") as fh:
+            print_text(report, Console(file=fh, no_color=True, soft_wrap=True))
+    elif fmt == "text":
+        print_text(report, Console(no_color=bool(os.environ.get("NO_COLOR")), soft_wrap=True))
     else:
         text = to_json(report) if fmt == "json" else to_sarif(report)
         if output:

@@ -83,7 +83,7 @@ def test_bad_input_gives_diagnostics_in_every_format(tmp_path: Path, sarif_schem
     (pkg / "scripts").mkdir(parents=True)
     (pkg / "launch").mkdir()
     (pkg / "package.xml").write_text("<package format='2'><name>messy</name><version>0.0.1</version>"
-                                     "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+                                     "<description>d</description><maintainer email='dev@example.com'>m</maintainer>"
                                      "<license>MIT</license></package>")
     (pkg / "CMakeLists.txt").write_text("project(messy)\nadd_executable(broken_node src/missing.cpp)\n")
     for name, text in {"old.py": "#!/usr/bin/env python\nimport rospy\nprint 'hi'\n",

@@ -157,4 +157,6 @@ def _is_python_script(path: Path) -> bool:
 
 
 def _first_line(exc: BaseException) -> str:
-    return (str(exc).strip().splitlines() or [type(exc).__name__])[0]
+    """The message of a catkin_pkg error, whose first line is often only a heading."""
+    lines = [ln.strip(" -") for ln in str(exc).strip().splitlines() if ln.strip(" -")]
+    return "; ".join(ln for ln in lines if not ln.startswith("Error(s) in package")) or type(exc).__name__

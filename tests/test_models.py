@@ -1,0 +1,84 @@
+"""Node models: shipped models for nodes without source, user models, external instances."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from archlog.analysis import analyse
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.models import load_models
+from archlog.rules.engine import Engine
+from archlog.rules.ruleset import load_rules
+
+PACKAGE_XML = ("<package format='2'><name>{}</name><version>0.1.0</version><description>d</description>"
+               "<maintainer email='dev@example.com'>m</maintainer><license>MIT</license></package>")
+CLIENT = """#!/usr/bin/env python3
+import rospy
+from nav_msgs.srv import GetMap
+from sensor_msgs.msg import LaserScan
+rospy.init_node('planner')
+rospy.ServiceProxy('static_map', GetMap)
+rospy.Subscriber('scan', LaserScan, print)
+"""
+
+
+def workspace(tmp_path: Path, launch: str) -> Path:
+    pkg = tmp_path / "src" / "demo"
+    (pkg / "scripts").mkdir(parents=True)
+    (pkg / "package.xml").write_text(PACKAGE_XML.format("demo"))
+    (pkg / "scripts" / "planner.py").write_text(CLIENT)
+    (pkg / "scripts" / "planner.py").chmod(0o755)
+    (pkg / "demo.launch").write_text(launch)
+    return pkg / "demo.launch"
+
+
+def findings(tmp_path: Path, launch: Path, models: list[Path]) -> tuple[list, DiagnosticSink]:
+    analysis = analyse([tmp_path], [str(launch)], {}, models)
+    return Engine(load_rules([])).run(analysis.store)[1], analysis.diagnostics
+
+
+def test_shipped_model_provides_map_server_service(tmp_path: Path) -> None:
+    with_server = workspace(tmp_path, "<launch><node pkg='map_server' type='map_server' name='map_server'/>"
+                                      "<node pkg='demo' type='planner.py' name='planner'/></launch>")
+    result, diags = findings(tmp_path, with_server, [])
+    assert [f.rule.id for f in result] == [] and diags.items == []
+    with_server.write_text("<launch><node pkg='demo' type='planner.py' name='planner'/></launch>")
+    result, _ = findings(tmp_path, with_server, [])
+    assert [(f.rule.id, f.values["service"]) for f in result] == [("AL201", "/static_map")]
+
+
+def test_model_reads_parameters_and_declares_external_instances(tmp_path: Path) -> None:
+    launch = workspace(tmp_path, "<launch><param name='laser/topic' value='scan'/>"
+                                 "<node pkg='demo' type='planner.py' name='planner'/>"
+                                 "<node pkg='laser_vendor' type='driver' name='laser'/></launch>")
+    model = tmp_path / "laser.yaml"
+    model.write_text("models:\n  - package: laser_vendor\n    executable: driver\n    publishers:\n"
+                     "      - {name: {param: ~topic, default: laser_scan}, type: sensor_msgs/LaserScan}\n"
+                     "  - instance: /rviz\n    subscribers:\n      - {name: /scan, type: sensor_msgs/LaserScan}\n")
+    analysis = analyse([tmp_path], [str(launch)], {}, [model])
+    pubs = {(n, t) for _p, n, t, _ty in analysis.store.rows("publisher")}
+    subs = {(n, t) for _p, n, t, _ty in analysis.store.rows("subscriber")}
+    assert ("/laser", "/scan") in pubs
+    assert {("/planner", "/scan"), ("/rviz", "/scan")} <= subs
+    assert analysis.store.location([p for p, n, _t, _ty in analysis.store.rows("publisher") if n == "/laser"][0]) \
+        == ("laser.yaml", 5, 0)
+
+
+def test_node_without_source_or_model_is_reported_once(tmp_path: Path) -> None:
+    launch = workspace(tmp_path, "<launch><node pkg='mystery' type='x' name='a'/><node pkg='mystery' type='x' "
+                                 "name='b'/><node pkg='demo' type='planner.py' name='planner'/></launch>")
+    _result, diags = findings(tmp_path, launch, [])
+    assert [d.code for d in diags.items] == ["no-model"]
+
+
+def test_invalid_model_files_are_diagnostics(tmp_path: Path) -> None:
+    broken = tmp_path / "broken.yaml"
+    broken.write_text("package: x\nexecutable: y\npublishers:\n  - {name: a\n")
+    incomplete = tmp_path / "incomplete.yaml"
+    incomplete.write_text("package: x\nexecutable: y\npublishers:\n  - {name: a}\n")
+    sink = DiagnosticSink()
+    assert load_models(broken, "broken.yaml", sink) == []
+    [(summary, instance)] = load_models(incomplete, "incomplete.yaml", sink)
+    assert summary.ports == [] and instance is None
+    assert [(d.file, d.line, d.code) for d in sink.items] == [("broken.yaml", 5, "model-yaml"),
+                                                             ("incomplete.yaml", 4, "model-schema")]
