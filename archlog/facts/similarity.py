@@ -11,15 +11,16 @@ much as three character edits, so /a/point and /a/line stay apart while /a/point
 
 from __future__ import annotations
 
-import math
 import re
-from collections import Counter, defaultdict
 from collections.abc import Iterable
 
+import numpy as np
+from rapidfuzz import process
 from rapidfuzz.distance import OSA, DamerauLevenshtein
 
 _SPLIT = re.compile(r"[/_]")
 INDEL = 1.5
+_BLOCK = 1024
 
 
 def segments(name: str) -> list[str]:
@@ -28,60 +29,79 @@ def segments(name: str) -> list[str]:
 
 def distance(a: str, b: str) -> float:
     """The normalised segment distance of two names."""
-    sa, sb = segments(a), segments(b)
-    return _segment_dl(sa, sb) / ((len(sa) + len(sb)) / 2)
-
-
-def _segment_dl(a: list[str], b: list[str]) -> float:
-    rows, cols = len(a) + 1, len(b) + 1
-    d = [[0.0] * cols for _ in range(rows)]
-    for i in range(rows):
-        d[i][0] = i * INDEL
-    for j in range(cols):
-        d[0][j] = j * INDEL
-    for i in range(1, rows):
-        for j in range(1, cols):
-            sub = 0.0 if a[i - 1] == b[j - 1] else DamerauLevenshtein.distance(a[i - 1], b[j - 1])
-            d[i][j] = min(d[i - 1][j] + INDEL, d[i][j - 1] + INDEL, d[i - 1][j - 1] + sub)
-            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
-                d[i][j] = min(d[i][j], d[i - 2][j - 2] + 1)
-    return d[-1][-1]
+    return _Measure([a, b]).distances(np.array([0]), np.array([1]))[0]
 
 
 def near_pairs(names: Iterable[str], threshold: float = 0.5) -> list[tuple[str, str, float]]:
     """Every unordered pair of distinct names whose distance is below `threshold`.
 
-    Two names can only be that close if they share more than (1 - threshold) of the segments of
-    each, so candidates come from a prefix filter over segments ordered rarest first.
+    Each segment is encoded as one character, so rapidfuzz's optimal-string-alignment distance
+    over the encoded names (every segment edit counted 1) bounds the real distance from below.
+    That bound runs in C over all pairs, a block of rows at a time; only pairs under it are
+    measured exactly, all at once.
     """
-    unique = sorted(set(names))
-    tokens = [_tokens(n) for n in unique]
-    split = [segments(n) for n in unique]
-    frequency = Counter(t for ts in tokens for t in ts)
-    index: dict[tuple[str, int], list[int]] = defaultdict(list)
-    result = []
-    for i, toks in enumerate(tokens):
-        ordered = sorted(toks, key=lambda t: (frequency[t], t))
-        need = math.floor((1 - threshold) * len(ordered)) + 1
-        prefix = ordered[: max(len(ordered) - need + 1, 1)]
-        candidates = {j for t in prefix for j in index[t]}
-        for t in prefix:
-            index[t].append(i)
-        for j in candidates:
-            budget = threshold * (len(tokens[j]) + len(toks)) / 2
-            # every segment edit costs at least 1, so OSA over segments bounds the distance below
-            if INDEL * abs(len(tokens[j]) - len(toks)) >= budget or OSA.distance(split[i], split[j]) >= budget:
+    measure = _Measure(sorted(set(names)))
+    lengths = measure.lengths
+    first, second = [], []
+    for start in range(0, len(measure.names), _BLOCK):
+        rows = slice(start, start + _BLOCK)
+        bound = process.cdist(measure.encoded[rows], measure.encoded, scorer=OSA.distance, dtype=np.float32, workers=-1)
+        bound -= lengths[rows, None] * (threshold / 2)
+        i, j = np.nonzero(bound < lengths[None, :] * (threshold / 2))
+        i += start
+        first.append(i[i < j])
+        second.append(j[i < j])
+    i, j = (np.concatenate(first), np.concatenate(second)) if first else (np.array([], int), np.array([], int))
+    scores = measure.distances(i, j, threshold)
+    keep = scores < threshold
+    return sorted((measure.names[a], measure.names[b], float(d)) for a, b, d in zip(i[keep], j[keep], scores[keep]))
+
+
+class _Measure:
+    """Names as arrays of segment codes, and the character distance of every two segments."""
+
+    def __init__(self, names: list[str]) -> None:
+        self.names = names
+        split = [segments(n) for n in names]
+        vocabulary: dict[str, int] = {}
+        codes = [[vocabulary.setdefault(seg, len(vocabulary)) for seg in segs] for segs in split]
+        self.encoded = ["".join(chr(0x100 + c) for c in row) for row in codes]
+        self.lengths = np.array([len(row) for row in codes], dtype=np.float32)
+        width = max((len(row) for row in codes), default=0)
+        self.codes = np.full((len(codes), width), -1, dtype=np.int64)
+        for k, row in enumerate(codes):
+            self.codes[k, : len(row)] = row
+        words = list(vocabulary)
+        self.cost = process.cdist(words, words, scorer=DamerauLevenshtein.distance, dtype=np.float32, workers=-1)
+
+    def distances(self, first: np.ndarray, second: np.ndarray, limit: float | None = None) -> np.ndarray:
+        """Normalised segment distances of the pairs (first[k], second[k]); with `limit`, values
+        at or above it may come back as infinity."""
+        result = np.zeros(len(first))
+        la_all, lb_all = self.lengths[first].astype(int), self.lengths[second].astype(int)
+        for la, lb in set(zip(la_all.tolist(), lb_all.tolist())):
+            ks = np.nonzero((la_all == la) & (lb_all == lb))[0]
+            budget = None if limit is None else limit * (la + lb) / 2
+            dist = _dl(self.codes[first[ks], :la], self.codes[second[ks], :lb], self.cost, budget)
+            result[ks] = dist * 2 / (la + lb)
+        return result
+
+
+def _dl(left: np.ndarray, right: np.ndarray, cost: np.ndarray, budget: float | None) -> np.ndarray:
+    """Damerau-Levenshtein (optimal string alignment) over segment codes, vectorised over pairs.
+    With a budget, cells that only paths costing at least the budget can cross are skipped."""
+    pairs, la, lb = left.shape[0], left.shape[1], right.shape[1]
+    sub = cost[left[:, :, None], right[:, None, :]]
+    d = np.full((pairs, la + 1, lb + 1), np.inf, dtype=np.float32)
+    d[:, :, 0] = np.arange(la + 1) * INDEL
+    d[:, 0, :] = np.arange(lb + 1) * INDEL
+    for i in range(1, la + 1):
+        for j in range(1, lb + 1):
+            if budget is not None and INDEL * (abs(i - j) + abs((la - i) - (lb - j))) >= budget:
                 continue
-            score = _segment_dl(split[j], split[i]) * 2 / (len(split[i]) + len(split[j]))
-            if score < threshold:
-                result.append((unique[j], unique[i], score))
-    return sorted(result)
-
-
-def _tokens(name: str) -> list[tuple[str, int]]:
-    seen: Counter[str] = Counter()
-    out = []
-    for seg in segments(name):
-        out.append((seg, seen[seg]))
-        seen[seg] += 1
-    return out
+            best = np.minimum(np.minimum(d[:, i - 1, j], d[:, i, j - 1]) + INDEL, d[:, i - 1, j - 1] + sub[:, i - 1, j - 1])
+            if i > 1 and j > 1:
+                swapped = (left[:, i - 1] == right[:, j - 2]) & (left[:, i - 2] == right[:, j - 1])
+                best = np.where(swapped, np.minimum(best, d[:, i - 2, j - 2] + 1), best)
+            d[:, i, j] = best
+    return d[:, la, lb]
