@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import os
 import time
+from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -89,18 +92,67 @@ def resolve_launch(spec: str, workspace: Workspace) -> Path:
 def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
              diagnostics: DiagnosticSink) -> dict[tuple[str, str], NodeSummary]:
     summaries = {}
+    cpp_jobs = []
     includes = [p.path / "include" for p in workspace.packages.values()]
     for package in workspace.packages.values():
         for exe in package.executables.values():
             if wanted is not None and (package.name, exe.name) not in wanted:
                 continue
             if exe.lang == "python":
-                summary = extract_python(exe.sources[0], package.name, exe.name,
-                                         workspace.display(exe.sources[0]), diagnostics)
+                summaries[(package.name, exe.name)] = extract_python(
+                    exe.sources[0], package.name, exe.name, workspace.display(exe.sources[0]), diagnostics)
             else:
-                summary = extract_cpp(exe.sources, package.name, exe.name, includes, workspace.display, diagnostics)
-            summaries[(package.name, exe.name)] = summary
+                shown = [workspace.display(s) for s in exe.sources]
+                cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, includes))
+    for job, result in _run_isolated(cpp_jobs):
+        if result is None:
+            diagnostics.add(job.shown[0] if job.shown else job.package, 1, "cpp-crash",
+                            f"the C++ parser crashed on {job.package}/{job.executable}; its ROS calls are not "
+                            "recovered", "error")
+            continue
+        summary, found = result
+        summaries[(job.package, job.executable)] = summary
+        for diag in found:
+            diagnostics.add(diag.file, diag.line, diag.code, diag.message, diag.severity, diag.column)
     return summaries
+
+
+@dataclass(frozen=True)
+class _CppJob:
+    sources: list[Path]
+    shown: list[str]
+    package: str
+    executable: str
+    includes: list[Path]
+
+    def __call__(self) -> tuple[NodeSummary, list]:
+        sink = DiagnosticSink()
+        names_of = dict(zip(self.sources, self.shown))
+        summary = extract_cpp(self.sources, self.package, self.executable, self.includes,
+                              lambda p: names_of.get(Path(p), str(p)), sink)
+        return summary, sink.items
+
+
+def _run_isolated(jobs: list[_CppJob]) -> list[tuple[_CppJob, tuple[NodeSummary, list] | None]]:
+    """Run jobs in worker processes so that a crash in libclang costs one executable, not the run.
+    Jobs lost when a worker dies are retried one per process to find the one that crashes."""
+    if not jobs:
+        return []
+    results: dict[int, tuple[NodeSummary, list] | None] = {}
+    with ProcessPoolExecutor(max_workers=min(len(jobs), os.cpu_count() or 1)) as pool:
+        futures = {k: pool.submit(job) for k, job in enumerate(jobs)}
+        for k, future in futures.items():
+            try:
+                results[k] = future.result()
+            except BrokenProcessPool:
+                pass
+    for k in [k for k in range(len(jobs)) if k not in results]:
+        with ProcessPoolExecutor(max_workers=1) as pool:
+            try:
+                results[k] = pool.submit(jobs[k]).result()
+            except BrokenProcessPool:
+                results[k] = None
+    return [(job, results[k]) for k, job in enumerate(jobs)]
 
 
 Summaries = dict[tuple[str, str], NodeSummary]

@@ -111,3 +111,32 @@ def test_cpp_that_does_not_compile_keeps_the_calls(tmp_path: Path) -> None:
     assert [(d.file, d.code) for d in sink.items] == [("broken.cpp", "cpp-compile")]
     assert sink.items[0].line == 3
     assert [(p.kind, p.name, p.type) for p in s.ports] == [("publisher", "chatter", "std_msgs/String")]
+
+
+def test_a_parser_crash_costs_one_executable_not_the_run(tmp_path: Path, monkeypatch) -> None:
+    """Fault injection: the C++ extractor aborts the worker process on one file."""
+    import os
+
+    import archlog.analysis as analysis
+
+    pkg = tmp_path / "src" / "demo"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package format='2'><name>demo</name><version>0.1.0</version><description>d"
+                                     "</description><maintainer email='dev@example.com'>m</maintainer>"
+                                     "<license>MIT</license></package>")
+    (pkg / "CMakeLists.txt").write_text("project(demo)\nadd_executable(good src/good.cpp)\nadd_executable(bad src/bad.cpp)\n")
+    (pkg / "src" / "good.cpp").write_text('#include <ros/ros.h>\n#include <std_msgs/String.h>\nint main(int c, char** v)'
+                                          ' { ros::init(c, v, "good"); ros::NodeHandle nh;\n'
+                                          '  nh.advertise<std_msgs::String>("out", 1); }\n')
+    (pkg / "src" / "bad.cpp").write_text("int main() {}\n")
+    real = analysis.extract_cpp
+
+    def crashing(sources, *args):
+        if sources[0].name == "bad.cpp":
+            os.abort()
+        return real(sources, *args)
+
+    monkeypatch.setattr(analysis, "extract_cpp", crashing)
+    result = analysis.analyse([tmp_path], [], {}, [])
+    assert [(n, t) for _p, n, t, _ty in result.store.rows("publisher")] == [("/good", "/out")]
+    assert [(d.file, d.code) for d in result.diagnostics.items] == [("src/demo/src/bad.cpp", "cpp-crash")]
