@@ -145,7 +145,7 @@ def _run_isolated(jobs: list[_CppJob]) -> list[tuple[_CppJob, tuple[NodeSummary,
             try:
                 results[k] = future.result()
             except BrokenProcessPool:
-                pass
+                continue  # retried below, one job per process
     for k in [k for k in range(len(jobs)) if k not in results]:
         with ProcessPoolExecutor(max_workers=1) as pool:
             try:

@@ -267,7 +267,7 @@ def _auto(text: str) -> object:
         try:
             return convert(text)
         except ValueError:
-            pass
+            continue
     lowered = text.strip().lower()
     return {"true": True, "false": False}.get(lowered, text)
 
