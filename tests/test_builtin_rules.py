@@ -1,0 +1,70 @@
+"""Built-in rules on small fact stores: each rule fires where it should and stays quiet otherwise."""
+
+from __future__ import annotations
+
+from archlog.facts.similarity import near_pairs
+from archlog.facts.store import FactStore
+from archlog.rules.engine import Engine
+from archlog.rules.ruleset import load_rules
+from archlog.values import Unknown
+
+ENGINE = Engine(load_rules([]))
+
+
+def system(*ports: tuple[str, str, str, object, str]) -> FactStore:
+    """Ports as (relation, port id, node, name, type); names are also checked for near misses."""
+    store = FactStore()
+    for relation, pid, node, name, type_ in ports:
+        store.add(relation, pid, node, name, type_)
+        store.locate(pid, f"{node.strip('/')}.py", int(pid[1:]))
+    names = {p[3] for p in ports if isinstance(p[3], str)}
+    for a, b, score in near_pairs(names):
+        store.add("near_name", a, b, round(score * 1000))
+        store.add("near_name", b, a, round(score * 1000))
+    return store
+
+
+def found(store: FactStore) -> list[tuple[str, str, int]]:
+    return [(f.rule.id, f.location.file, f.location.line) for f in ENGINE.run(store)[1]]
+
+
+def test_orphan_subscriber_with_connected_publisher_of_its_type() -> None:
+    store = system(("publisher", "p1", "/laser", "/front/scan", "sensor_msgs/LaserScan"),
+                   ("subscriber", "p2", "/rviz", "/front/scan", "sensor_msgs/LaserScan"),
+                   ("subscriber", "p3", "/amcl", "/base_laser", "sensor_msgs/LaserScan"))
+    assert found(store) == [("AL104", "amcl.py", 3)]
+
+
+def test_no_dangling_guess_when_a_publisher_name_is_unknown() -> None:
+    store = system(("publisher", "p1", "/laser", "/front/scan", "sensor_msgs/LaserScan"),
+                   ("subscriber", "p2", "/rviz", "/front/scan", "sensor_msgs/LaserScan"),
+                   ("publisher", "p4", "/relay", Unknown("topic_from_cli()", "relay.py", 4), "sensor_msgs/LaserScan"),
+                   ("subscriber", "p3", "/amcl", "/base_laser", "sensor_msgs/LaserScan"))
+    assert found(store) == []
+
+
+def test_service_provided_twice_and_not_provided() -> None:
+    store = system(("service_server", "p1", "/map_a", "/static_map", "nav_msgs/GetMap"),
+                   ("service_server", "p2", "/map_b", "/static_map", "nav_msgs/GetMap"),
+                   ("service_client", "p3", "/planner", "/static_map", "nav_msgs/GetMap"),
+                   ("service_client", "p4", "/planner", "/make_plan", "nav_msgs/GetPlan"))
+    assert found(store) == [("AL202", "map_b.py", 2), ("AL201", "planner.py", 4)]
+
+
+def test_connected_system_is_quiet_and_mismatch_needs_known_types() -> None:
+    store = system(("publisher", "p1", "/a", "/chatter", "std_msgs/String"),
+                   ("subscriber", "p2", "/b", "/chatter", Unknown("T", "b.py", 2)),
+                   ("subscriber", "p3", "/c", "/chatter", "std_msgs/String"))
+    assert found(store) == []
+    store.add("subscriber", "p9", "/d", "/chatter", "std_msgs/Int32")
+    store.locate("p9", "d.py", 9)
+    assert found(store) == [("AL101", "d.py", 9)]
+
+
+def test_near_miss_on_a_dangling_publisher_whose_counterpart_is_connected() -> None:
+    store = system(("publisher", "p1", "/teleop", "/cmd_vel", "geometry_msgs/Twist"),
+                   ("subscriber", "p2", "/base", "/cmd_vel", "geometry_msgs/Twist"),
+                   ("publisher", "p3", "/planner", "/cmd_vell", "geometry_msgs/Twist"))
+    [finding] = ENGINE.run(store)[1]
+    assert (finding.rule.id, finding.location.line, finding.values["role"]) == ("AL102", 3, "publishes")
+    assert [r.line for r in finding.related] == [2]
