@@ -1,88 +1,161 @@
 """roslaunch substitution args: $(arg) $(find) $(env) $(optenv) $(anon) $(dirname) $(eval).
 
-`$(eval)` is interpreted over Python's AST with roslaunch's restricted names only; nothing from
-the project is ever executed.
+The grammar follows roslaunch 1.15: `$(cmd words)` cannot nest (a `$` inside is an error), an
+unterminated `$(` stays literal, `find` is resolved after the others, and `$(eval expr)` applies
+only when it is the whole value. `$(eval)` is interpreted over Python's AST with roslaunch's
+names (args, true/false, arg/find/env/optenv/anon/dirname, math, a few pure builtins); nothing
+from the project is ever executed.
 """
 
 from __future__ import annotations
 
 import ast
+import math
 import operator
 import os
-import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
 
 class SubstitutionError(Exception):
-    """A substitution roslaunch would reject or that cannot be resolved statically."""
+    """A substitution roslaunch rejects."""
+
+
+class Unresolved(SubstitutionError):
+    """A substitution that depends on the machine it runs on (an unset env var, a package that
+    is not here, an arg whose value is itself unresolved)."""
+
+
+@dataclass(frozen=True)
+class UnknownArg:
+    """An arg whose value could not be resolved statically."""
+
+    reason: str
 
 
 @dataclass
 class SubstContext:
     """What substitutions can see: the current file's args, package lookup and environment."""
 
-    args: dict[str, str]
+    args: dict[str, str | UnknownArg]
     find: Callable[[str], Path | None]
     file: Path
     anon: dict[str, str] = field(default_factory=dict)
     env: dict[str, str] = field(default_factory=lambda: dict(os.environ))
-    args_declared: set[str] = field(default_factory=set)
 
     def arg(self, name: str) -> str:
         if name not in self.args:
             raise SubstitutionError(f"arg '{name}' is not defined")
-        return self.args[name]
+        value = self.args[name]
+        if isinstance(value, UnknownArg):
+            raise Unresolved(f"arg '{name}' is unknown ({value.reason})")
+        return value
 
     def find_pkg(self, name: str) -> str:
         path = self.find(name)
         if path is None:
-            raise SubstitutionError(f"package '{name}' not found")
+            raise Unresolved(f"package '{name}' not found")
         return str(path)
 
     def getenv(self, name: str, default: str | None = None) -> str:
         if name in self.env:
             return self.env[name]
         if default is None:
-            raise SubstitutionError(f"environment variable '{name}' is not set")
+            raise Unresolved(f"environment variable {name} is not set")
         return default
 
     def anonymous(self, name: str) -> str:
         return self.anon.setdefault(name, f"{name}_anon{len(self.anon) + 1}")
 
-
-_CALL = re.compile(r"\$\((\w+)((?:\s[^$()]*)?)\)")
+    def child(self, args: dict[str, str | UnknownArg] | None = None, file: Path | None = None) -> "SubstContext":
+        return SubstContext(dict(self.args) if args is None else args, self.find, file or self.file, self.anon, self.env)
 
 
 def substitute(text: str, ctx: SubstContext) -> str:
-    """Resolve every substitution in `text`, innermost first."""
-    stripped = text.strip()
-    if stripped.startswith("$(eval ") and stripped.endswith(")"):
-        return _eval(stripped[7:-1], ctx)
-    previous = None
-    while previous != text and "$(" in text:
-        previous = text
-        text = _CALL.sub(lambda m: _one(m.group(1), m.group(2).split(), ctx), text, count=1)
-    if "$(" in text:
-        raise SubstitutionError(f"cannot resolve '{text}'")
-    return text
+    """Resolve every substitution in `text` as roslaunch does."""
+    if text.startswith("$(eval ") and text.endswith(")"):
+        return _eval(text[7:-1], ctx)
+    text = _pass(text, ctx, ("env", "optenv", "dirname", "anon", "arg"))
+    return _pass(text, ctx, ("find",))
+
+
+_VALID = ("find", "env", "optenv", "dirname", "anon", "arg")
+
+
+def _pass(text: str, ctx: SubstContext, commands: tuple[str, ...]) -> str:
+    resolved = text
+    for inner in _collect(text):
+        words = inner.split()
+        if not words or words[0] not in _VALID:
+            raise SubstitutionError(f"unknown substitution command $({inner})")
+        if words[0] in commands:
+            placeholder = f"$({inner})"
+            if words[0] == "find":
+                resolved = _find(resolved, placeholder, words[1:], ctx)
+            else:
+                resolved = resolved.replace(placeholder, _one(words[0], words[1:], ctx))
+    return resolved
+
+
+def _collect(text: str) -> list[str]:
+    """The insides of `$(...)` in order; a `$` or `(` inside one is an error, as in roslaunch."""
+    found: list[str] = []
+    state, buffer = "out", []
+    for char in text:
+        if char == "$":
+            if state in ("in", "open"):
+                raise SubstitutionError(f"'$' cannot be inside a substitution arg: {text}")
+            state = "dollar"
+        elif char == "(":
+            if state == "dollar":
+                state = "open"
+                continue
+            if state != "out":
+                raise SubstitutionError(f"'(' cannot be inside a substitution arg: {text}")
+        elif char == ")":
+            if state == "in":
+                found.append("".join(buffer))
+                buffer = []
+            state = "out"
+        elif state == "dollar":
+            state = "out"
+        elif state == "open":
+            state = "in"
+        if state == "in":
+            buffer.append(char)
+    return found
 
 
 def _one(command: str, words: list[str], ctx: SubstContext) -> str:
-    if command == "arg" and len(words) == 1:
+    if command == "arg":
+        if len(words) != 1:
+            raise SubstitutionError("$(arg) takes exactly one name")
         return ctx.arg(words[0])
-    if command == "find" and len(words) == 1:
-        return ctx.find_pkg(words[0])
-    if command == "env" and len(words) == 1:
+    if command == "env":
+        if len(words) != 1:
+            raise SubstitutionError("$(env) takes exactly one variable")
         return ctx.getenv(words[0])
-    if command == "optenv" and words:
+    if command == "optenv":
+        if not words:
+            raise SubstitutionError("$(optenv) needs a variable")
         return ctx.getenv(words[0], " ".join(words[1:]))
-    if command == "anon" and len(words) == 1:
+    if command == "anon":
+        if len(words) != 1:
+            raise SubstitutionError("$(anon) takes exactly one name")
         return ctx.anonymous(words[0])
-    if command == "dirname" and not words:
-        return str(ctx.file.parent)
-    raise SubstitutionError(f"unknown or malformed substitution $({command} {' '.join(words)})")
+    return str(ctx.file.resolve().parent)  # dirname
+
+
+def _find(resolved: str, placeholder: str, words: list[str], ctx: SubstContext) -> str:
+    """$(find pkg) joined with the path that follows it (executables and share files alike)."""
+    if len(words) != 1:
+        raise SubstitutionError("$(find) takes exactly one package")
+    before, _, after = resolved.partition(placeholder)
+    cut = min([i for i in (after.find(" "), after.find("$(")) if i >= 0], default=len(after))
+    path, rest = after[:cut], after[cut:]
+    base = ctx.find_pkg(words[0])
+    return before + (os.path.join(base, path.lstrip("/\\")) if path else base) + rest
 
 
 # -- restricted $(eval) -------------------------------------------------------------------
@@ -93,27 +166,49 @@ _BINOPS = {
 _CMPOPS = {
     ast.Eq: operator.eq, ast.NotEq: operator.ne, ast.Lt: operator.lt, ast.LtE: operator.le,
     ast.Gt: operator.gt, ast.GtE: operator.ge, ast.In: lambda a, b: a in b, ast.NotIn: lambda a, b: a not in b,
+    ast.Is: operator.is_, ast.IsNot: operator.is_not,
 }
-_STR_METHODS = {"lower", "upper", "strip", "startswith", "endswith", "replace", "split", "join", "format"}
+_STR_METHODS = {"lower", "upper", "strip", "lstrip", "rstrip", "startswith", "endswith", "replace", "split",
+                "join", "find", "count", "capitalize", "title", "isdigit"}
+_MATH = {k: v for k, v in vars(math).items() if not k.startswith("_")}
+_BUILTINS = {f.__name__: f for f in (int, float, str, bool, list, dict, len, abs, min, max, round, sorted, sum)}
+
+
+def auto_value(text: str) -> object:
+    """roslaunch's 'auto' conversion: float with a '.', int without '_', true/false, else text."""
+    try:
+        if "." in text:
+            return float(text)
+        if "_" not in text:
+            return int(text)
+    except ValueError:
+        pass
+    lowered = text.lower()
+    if lowered in ("true", "false"):
+        return lowered == "true"
+    return text
 
 
 def _eval(expr: str, ctx: SubstContext) -> str:
+    if "__" in expr:
+        raise SubstitutionError("$(eval ...) may not contain double underscore expressions")
     try:
         tree = ast.parse(expr.strip(), mode="eval")
     except SyntaxError as exc:
         raise SubstitutionError(f"$(eval) syntax error: {exc.msg}") from None
-    functions: dict[str, Callable[..., object]] = {
-        "arg": ctx.arg, "find": ctx.find_pkg, "env": ctx.getenv,
+    functions: dict[str, object] = {
+        **_MATH, **_BUILTINS,
+        "arg": lambda name: auto_value(ctx.arg(name)), "find": ctx.find_pkg, "env": ctx.getenv,
         "optenv": lambda n, d="": ctx.getenv(n, d), "anon": ctx.anonymous,
-        "dirname": lambda: str(ctx.file.parent),
-        **{f.__name__: f for f in (int, float, str, bool, len, abs, min, max, round)},
+        "dirname": lambda: str(ctx.file.resolve().parent),
+        "true": True, "false": False, "True": True, "False": False, "None": None,
     }
     return str(_Evaluator(ctx, functions).visit(tree.body))
 
 
 class _Evaluator(ast.NodeVisitor):
-    def __init__(self, ctx: SubstContext, functions: dict[str, Callable[..., object]]) -> None:
-        self.ctx, self.functions = ctx, functions
+    def __init__(self, ctx: SubstContext, names: dict[str, object]) -> None:
+        self.ctx, self.names = ctx, names
 
     def generic_visit(self, node: ast.AST) -> object:
         raise SubstitutionError(f"$(eval) does not allow {type(node).__name__}")
@@ -122,14 +217,22 @@ class _Evaluator(ast.NodeVisitor):
         return node.value
 
     def visit_Name(self, node: ast.Name) -> object:
-        names = {"true": True, "false": False, "True": True, "False": False, "None": None}
-        return names[node.id] if node.id in names else self.ctx.arg(node.id)
+        if node.id in self.names:
+            return self.names[node.id]
+        return auto_value(self.ctx.arg(node.id))
 
     def visit_List(self, node: ast.List) -> object:
         return [self.visit(e) for e in node.elts]
 
     def visit_Tuple(self, node: ast.Tuple) -> object:
         return tuple(self.visit(e) for e in node.elts)
+
+    def visit_Subscript(self, node: ast.Subscript) -> object:
+        target, index = self.visit(node.value), self.visit(node.slice)
+        try:
+            return target[index]  # type: ignore[index]
+        except (TypeError, KeyError, IndexError) as exc:
+            raise SubstitutionError(f"$(eval) {exc}") from None
 
     def visit_BoolOp(self, node: ast.BoolOp) -> object:
         result: object = isinstance(node.op, ast.And)
@@ -140,11 +243,13 @@ class _Evaluator(ast.NodeVisitor):
         return result
 
     def visit_UnaryOp(self, node: ast.UnaryOp) -> object:
-        value = self.visit(node.operand)
         ops = {ast.Not: operator.not_, ast.USub: operator.neg, ast.UAdd: operator.pos}
         if type(node.op) not in ops:
             return self.generic_visit(node)
-        return ops[type(node.op)](value)
+        try:
+            return ops[type(node.op)](self.visit(node.operand))
+        except TypeError as exc:
+            raise SubstitutionError(f"$(eval) {exc}") from None
 
     def visit_BinOp(self, node: ast.BinOp) -> object:
         if type(node.op) not in _BINOPS:
@@ -165,8 +270,6 @@ class _Evaluator(ast.NodeVisitor):
         left = self.visit(node.left)
         for op, comparator in zip(node.ops, node.comparators):
             right = self.visit(comparator)
-            if type(op) not in _CMPOPS:
-                return self.generic_visit(node)
             try:
                 if not _CMPOPS[type(op)](left, right):
                     return False
@@ -182,10 +285,16 @@ class _Evaluator(ast.NodeVisitor):
         if node.keywords:
             return self.generic_visit(node)
         args = [self.visit(a) for a in node.args]
-        if isinstance(node.func, ast.Name) and node.func.id in self.functions:
-            return self.functions[node.func.id](*args)
-        if isinstance(node.func, ast.Attribute) and node.func.attr in _STR_METHODS:
+        if isinstance(node.func, ast.Name) and callable(self.names.get(node.func.id)):
+            function = self.names[node.func.id]
+        elif isinstance(node.func, ast.Attribute) and node.func.attr in _STR_METHODS:
             target = self.visit(node.func.value)
-            if isinstance(target, str):
-                return getattr(target, node.func.attr)(*args)
-        raise SubstitutionError(f"$(eval) cannot call {ast.unparse(node.func)}")
+            if not isinstance(target, str):
+                raise SubstitutionError(f"$(eval) cannot call {node.func.attr} on {type(target).__name__}")
+            function = getattr(target, node.func.attr)
+        else:
+            raise SubstitutionError(f"$(eval) cannot call {ast.unparse(node.func)}")
+        try:
+            return function(*args)  # type: ignore[operator]
+        except (TypeError, ValueError, OverflowError) as exc:
+            raise SubstitutionError(f"$(eval) {exc}") from None

@@ -41,14 +41,19 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
         store.locate(elem.id, elem.file, elem.line)
     missing: set[tuple[str, str]] = set()
     for node in config.nodes:
-        summary = summaries.get((node.pkg, node.type))
+        kind = tuple(node.plugin.split("/", 1)) if node.plugin and "/" in node.plugin else (node.pkg, node.type)
+        summary = summaries.get(kind)
         store.add("node", node.name, node.pkg, node.type, node.elem.id)
         store.locate(node.elem.id, node.elem.file, node.elem.line)
+        if node.condition:
+            store.add("conditional", node.elem.id, node.condition)
+        if node.plugin:
+            store.add("nodelet", node.name, node.plugin, node.manager or "")
         if summary is None:
-            if (node.pkg, node.type) not in missing:
-                missing.add((node.pkg, node.type))
+            if kind not in missing:
+                missing.add(kind)
                 diagnostics.add(node.elem.file, node.elem.line, "no-model",
-                                f"no source or model for {node.pkg}/{node.type}: the ports of {node.name} are unknown "
+                                f"no source or model for {'/'.join(kind)}: the ports of {node.name} are unknown "
                                 "(write a model with --model)", "warning")
             continue
         store.add("node_source", node.name, summary.origin)

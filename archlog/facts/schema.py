@@ -48,6 +48,10 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("configuration", "node", "A node instance of the system configuration.",
          _NODE, ("pkg", "str", "package"), ("exe", "str", "executable"),
          ("elem", "id", "the launch element (or executable, for a rosrun configuration) that creates it")),
+    _rel("configuration", "conditional", "A node kept although its if/unless (or an enclosing one) could not be "
+         "resolved statically.", ("elem", "id", "the node's element"), ("condition", "str", "the condition and why")),
+    _rel("configuration", "nodelet", "A node instance that loads a nodelet plugin (nodelet load/standalone).",
+         _NODE, ("plugin", "str", "plugin type pkg/Name"), ("manager", "str", "manager node as written, or empty")),
     _rel("configuration", "node_source", "Where a node instance's ports were recovered from.",
          _NODE, ("origin", "str", "cpp, python or model")),
     _rel("configuration", "remap", "A remapping applied to a node instance, both sides resolved in its namespace.",
