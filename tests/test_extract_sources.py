@@ -140,3 +140,27 @@ def test_a_parser_crash_costs_one_executable_not_the_run(tmp_path: Path, monkeyp
     result = analysis.analyse([tmp_path], [], {}, [])
     assert [(n, t) for _p, n, t, _ty in result.store.rows("publisher")] == [("/good", "/out")]
     assert [(d.file, d.code) for d in result.diagnostics.items] == [("src/demo/src/bad.cpp", "cpp-crash")]
+
+
+def test_handles_and_strings_through_constructor_call_sites(tmp_path: Path) -> None:
+    """A NodeHandle and a name passed into a constructor: absolute, private and relative names."""
+    from archlog.analysis import analyse
+
+    pkg = tmp_path / "src" / "rp"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package format='2'><name>rp</name><version>0.1.0</version><description>d"
+                                     "</description><maintainer email='dev@example.com'>m</maintainer>"
+                                     "<license>MIT</license></package>")
+    (pkg / "CMakeLists.txt").write_text("project(rp)\nadd_executable(talker src/talker.cpp)\n")
+    (pkg / "src" / "talker.cpp").write_text(
+        '#include <ros/ros.h>\n#include <std_msgs/String.h>\n'
+        'struct Part { Part(const std::string& name, ros::NodeHandle& nh) {\n'
+        '    ros::NodeHandle pnh(nh, name);\n'
+        '    a_ = pnh.advertise<std_msgs::String>("/chatter", 1);\n'
+        '    b_ = pnh.advertise<std_msgs::String>("~status", 1);\n'
+        '    c_ = pnh.advertise<std_msgs::String>("rel", 1); }\n'
+        '  ros::Publisher a_, b_, c_; };\n'
+        'int main(int argc, char** argv) { ros::init(argc, argv, "talker"); ros::NodeHandle nh;\n'
+        '  Part p("arm", nh); ros::spin(); }\n')
+    result = analyse([tmp_path], [], {}, [])
+    assert sorted(t for _p, _n, t, _ty in result.store.rows("publisher")) == ["/arm/rel", "/chatter", "/talker/status"]

@@ -102,9 +102,8 @@ class _Walker:
         for cursor in cursors:
             if cursor.kind == K.CALL_EXPR and cursor.referenced is not None:
                 self.call_sites.setdefault(self.key(cursor.referenced), []).append(cursor)
-            elif cursor.kind in (K.VAR_DECL, K.FIELD_DECL) and "NodeHandle" in cursor.type.spelling:
-                self.handles.setdefault(self.key(cursor), self.handle_ns(cursor))
-            elif cursor.kind == K.CONSTRUCTOR:
+        for cursor in cursors:
+            if cursor.kind == K.CONSTRUCTOR:
                 self.member_inits(cursor)
         for cursor in cursors:
             if cursor.kind == K.CALL_EXPR:
@@ -144,6 +143,8 @@ class _Walker:
             if cursor.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) and "NodeHandle" in cursor.type.spelling:
                 decl = cursor.referenced
                 key = self.key(decl)
+                if key not in self.handles and decl is not None and decl.kind == K.VAR_DECL:
+                    self.handles[key] = self.handle_ns(decl)
                 if key in self.handles:
                     return self.handles[key]
                 if decl is not None and decl.kind == K.FIELD_DECL:
@@ -155,14 +156,18 @@ class _Walker:
 
     def parameter_handle(self, param: ci.Cursor, expr: ci.Cursor, depth: int) -> Value:
         """A handle parameter takes the namespace every call site in this file passes for it."""
+        return self.from_call_sites(param, expr, lambda arg: self.handle_of(arg, depth + 1), "NodeHandle")
+
+    def from_call_sites(self, param: ci.Cursor, expr: ci.Cursor, evaluate, what: str) -> Value:
+        """The value all call sites in this file agree on for a parameter (a function summary)."""
         function = param.semantic_parent
         params = [p.spelling for p in function.get_arguments()] if function is not None else []
-        sites = self.call_sites.get(self.key(function), []) if param.spelling in params else []
-        found = {self.handle_of(args[params.index(param.spelling)], depth + 1)
-                 for site in sites if len(args := _written_args(site)) > params.index(param.spelling)}
-        if len(found) == 1 and isinstance(value := next(iter(found)), str):
-            return value
-        why = "no call site passes this NodeHandle" if not found else "call sites pass different NodeHandles"
+        index = params.index(param.spelling) if param.spelling in params else -1
+        sites = self.call_sites.get(self.key(function), []) if index >= 0 else []
+        found = {evaluate(args[index]) for site in sites if len(args := _written_args(site)) > index}
+        if len(found) == 1:
+            return next(iter(found))
+        why = f"no call site passes this {what}" if not found else f"call sites pass different values for {what}"
         return self.unknown(expr, why)
 
     # -- values ---------------------------------------------------------------------------
@@ -179,6 +184,8 @@ class _Walker:
             key = self.key(decl)
             if key in self.param_vars:
                 return self.param_vars[key]
+            if decl is not None and decl.kind == K.PARM_DECL:
+                return self.from_call_sites(decl, expr, lambda arg: self.value(arg, depth + 1), decl.spelling)
             if decl is not None and decl.kind == K.VAR_DECL:
                 init = [c for c in decl.get_children() if c.kind not in (K.TYPE_REF, K.NAMESPACE_REF, K.TEMPLATE_REF)]
                 if init and decl.type.is_const_qualified() or init and _single_assignment(decl):

@@ -88,13 +88,18 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
 def _resolve(name: Value, handle_ns: Value, node: LaunchNode, config: LaunchConfig,
              remaps: dict[str, str]) -> str | Unknown:
     """Resolve a port name in the instance's context: handle namespace, `~`, then remaps."""
-    raw, handle = _bind(name, node, config), _bind(handle_ns, node, config)
+    raw = _bind(name, node, config)
     if isinstance(raw, Unknown):
         return raw
-    if not raw.startswith(("/", "~")) and isinstance(handle, Unknown):
-        return Unknown(f"{handle.expr}/{raw}", handle.file, handle.line)
-    base = names.resolve(handle, node.namespace, node.name) if handle else node.namespace
-    resolved = names.join(node.name, raw[1:]) if raw.startswith("~") else names.join(base, raw)
+    if raw.startswith("~"):
+        resolved = names.join(node.name, raw[1:])
+    elif raw.startswith("/"):
+        resolved = names.canonical(raw)
+    else:
+        handle = _bind(handle_ns, node, config)
+        if isinstance(handle, Unknown):
+            return Unknown(f"{handle.expr}/{raw}", handle.file, handle.line)
+        resolved = names.join(names.resolve(handle, node.namespace, node.name) if handle else node.namespace, raw)
     return names.remap(resolved, remaps)
 
 
@@ -112,7 +117,7 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
     unknown = next((p for p in parts if isinstance(p, Unknown)), None)
     if unknown is None:
         return "".join(parts)  # type: ignore[arg-type]
-    return Unknown("".join(p.expr if isinstance(p, Unknown) else repr(p) for p in parts), unknown.file, unknown.line)
+    return Unknown(" + ".join(p.expr if isinstance(p, Unknown) else repr(p) for p in parts), unknown.file, unknown.line)
 
 
 def _text(value: object) -> str:
