@@ -93,10 +93,12 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
              diagnostics: DiagnosticSink) -> dict[tuple[str, str], NodeSummary]:
     summaries = {}
     cpp_jobs = []
-    includes = [p.path / "include" for p in workspace.packages.values()]
+    includes = [d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]]
     for package in workspace.packages.values():
         for exe in package.executables.values():
             if wanted is not None and (package.name, exe.name) not in wanted:
+                continue
+            if exe.lang == "other":
                 continue
             if exe.lang == "python":
                 summaries[(package.name, exe.name)] = extract_python(

@@ -19,9 +19,10 @@ class Command:
     line: int
 
 
-def commands(text: str) -> list[Command]:
-    """Parse CMake source into commands; arguments are expanded with the variables set so far."""
-    variables: dict[str, str] = {}
+def commands(text: str, variables: dict[str, str] | None = None) -> list[Command]:
+    """Parse CMake source into commands; arguments are expanded with the variables set so far
+    (`variables`, if given, seeds them and receives the ones set)."""
+    variables = {} if variables is None else variables
     result: list[Command] = []
     tokens = [(m.group(0), text.count("\n", 0, m.start()) + 1) for m in _TOKEN.finditer(text)]
     tokens = [t for t in tokens if not t[0].startswith("#")]
@@ -65,6 +66,7 @@ def _expand(value: str, variables: dict[str, str]) -> str:
 def _track(cmd: Command, variables: dict[str, str]) -> None:
     if cmd.name == "project" and cmd.args:
         variables["PROJECT_NAME"] = cmd.args[0]
+        variables.setdefault("PROJECT_SOURCE_DIR", variables.get("CMAKE_CURRENT_SOURCE_DIR", ""))
     elif cmd.name == "set" and cmd.args:
         values = [a for a in cmd.args[1:] if a not in ("CACHE", "PARENT_SCOPE", "FORCE")]
         if "CACHE" in cmd.args:

@@ -59,17 +59,20 @@ def extract_cpp(sources: list[Path], package: str, executable: str, includes: li
         shown = display(source)
         if not source.is_file():
             diagnostics.add(shown, 1, "cpp-missing", "source file listed in CMakeLists.txt does not exist", "error")
+            summary.incomplete = summary.incomplete or f"{shown}: missing"
             continue
         try:
             tu = index.parse(str(source), args=args, options=_KEEP_GOING)
         except ci.TranslationUnitLoadError as exc:
             diagnostics.add(shown, 1, "cpp-parse", f"libclang could not parse this file: {exc}", "error")
+            summary.incomplete = summary.incomplete or f"{shown}: could not be parsed"
             continue
         for diag in tu.diagnostics:
             if diag.severity >= ci.Diagnostic.Error and diag.location.file and \
                     Path(diag.location.file.name) == source:
                 diagnostics.add(shown, diag.location.line, "cpp-compile",
                                 f"C++ does not compile here ({diag.spelling}); recovery may be partial", "warning")
+                summary.incomplete = summary.incomplete or f"{shown}:{diag.location.line}: does not compile"
                 break
         _Walker(summary, source, shown).walk(tu.cursor)
     return summary
@@ -211,6 +214,7 @@ class _Walker:
         args = _written_args(call)
         if name == "init" and parent == "ros" and len(args) >= 3:
             self.summary.default_name = self.value(args[2])
+            self.summary.name_file, self.summary.name_line = self.file, call.location.line
             self.summary.anonymous = len(args) > 3 and "AnonymousName" in " ".join(
                 t.spelling for t in args[3].get_tokens())
         elif parent == "NodeHandle" and args:

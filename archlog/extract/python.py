@@ -31,9 +31,11 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
     except SyntaxError as exc:
         diagnostics.add(shown, exc.lineno or 1, "python-syntax",
                         f"does not parse as Python 3 ({exc.msg}); its ROS calls are not recovered", "error")
+        summary.incomplete = f"{shown}:{exc.lineno or 1}: does not parse as Python 3"
         return summary
     except OSError as exc:
         diagnostics.add(shown, 1, "python-read", f"cannot read: {exc.strerror}", "error")
+        summary.incomplete = f"{shown}: cannot be read"
         return summary
     _Visitor(summary, shown).visit(tree)
     return summary
@@ -123,6 +125,7 @@ class _Visitor(ast.NodeVisitor):
         func = self.qualified(node.func)
         if func == "rospy.init_node":
             self.summary.default_name = self.value(self.arg(node, 0, "name"))
+            self.summary.name_file, self.summary.name_line = self.file, node.lineno
             anon = self.arg(node, 2, "anonymous")
             self.summary.anonymous = isinstance(anon, ast.Constant) and anon.value is True
         elif func in _PORTS:

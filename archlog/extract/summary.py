@@ -36,3 +36,6 @@ class NodeSummary:
     default_name: Value | None = None
     anonymous: bool = False
     ports: list[Port] = field(default_factory=list)
+    incomplete: str | None = None
+    name_file: str = ""
+    name_line: int = 0

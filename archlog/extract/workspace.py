@@ -33,6 +33,7 @@ class Package:
     path: Path
     executables: dict[str, Executable] = field(default_factory=dict)
     plugin_xml: list[str] = field(default_factory=list)
+    include_dirs: list[Path] = field(default_factory=list)
 
 
 def share_dirs() -> list[Path]:
@@ -104,28 +105,40 @@ class Workspace:
         self._script_executables(package)
 
     def _cmake_executables(self, package: Package) -> None:
-        cmake = package.path / "CMakeLists.txt"
-        if not cmake.is_file():
+        self._cmake_dir(package, package.path, {"CMAKE_CURRENT_SOURCE_DIR": str(package.path)}, depth=0)
+
+    def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int) -> None:
+        """Read one CMakeLists.txt; add_subdirectory() folders inherit a copy of the variables."""
+        cmake = folder / "CMakeLists.txt"
+        if not cmake.is_file() or depth > 8:
             return
-        cmds = commands(cmake.read_text(errors="replace"))
+        variables = {**variables, "CMAKE_CURRENT_SOURCE_DIR": str(folder)}
+        cmds = commands(cmake.read_text(errors="replace"), variables)
         output_names = {
             c.args[0]: c.args[c.args.index("OUTPUT_NAME") + 1]
             for c in cmds
             if c.name == "set_target_properties" and "OUTPUT_NAME" in c.args[:-1]
         }
         for c in cmds:
-            if c.name == "add_executable" and c.args and "IMPORTED" not in c.args and "ALIAS" not in c.args:
+            if c.name in ("add_executable", "cuda_add_executable") and c.args and \
+                    "IMPORTED" not in c.args and "ALIAS" not in c.args:
                 target = c.args[0]
-                sources = [package.path / s for s in c.args[1:] if Path(s).suffix in SOURCE_SUFFIXES]
+                sources = [_under(folder, s) for s in c.args[1:] if Path(s).suffix in SOURCE_SUFFIXES | {".cu"}]
                 name = output_names.get(target, target)
                 package.executables[name] = Executable(package.name, name, "cpp", sources, c.line)
+            elif c.name == "include_directories":
+                package.include_dirs += [_under(folder, a) for a in c.args if a not in ("SYSTEM", "BEFORE", "AFTER")
+                                         and "$" not in a]
+            elif c.name == "add_subdirectory" and c.args:
+                self._cmake_dir(package, _under(folder, c.args[0]), variables, depth + 1)
             elif c.name in ("catkin_install_python", "install") and "PROGRAMS" in c.args:
                 for arg in c.args[c.args.index("PROGRAMS") + 1:]:
                     if arg == "DESTINATION":
                         break
-                    path = package.path / arg
+                    path = _under(folder, arg)
                     if path.is_file():
-                        package.executables[path.name] = Executable(package.name, path.name, "python", [path], c.line)
+                        lang = "python" if path.suffix == ".py" or _is_python_script(path) else "other"
+                        package.executables[path.name] = Executable(package.name, path.name, lang, [path], c.line)
 
     def _script_executables(self, package: Package) -> None:
         for folder in ("scripts", "nodes", "bin", "src"):
@@ -149,6 +162,11 @@ def _manifests(root: Path) -> list[Path]:
             found.append(Path(dirpath) / "package.xml")
             dirnames[:] = []
     return found
+
+
+def _under(folder: Path, path: str) -> Path:
+    """A CMake path argument: absolute as given, otherwise relative to the current folder."""
+    return Path(path) if Path(path).is_absolute() else folder / path
 
 
 def _is_python_script(path: Path) -> bool:

@@ -57,6 +57,8 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
                                 "(write a model with --model)", "warning")
             continue
         store.add("node_source", node.name, summary.origin)
+        if summary.incomplete:
+            store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config)
     used = {row[2] for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)}
     for a, b, score in near_pairs(used, near_threshold):
@@ -133,7 +135,8 @@ def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Work
     for index, ((pkg, exe), summary) in enumerate(sorted(summaries.items()), 1):
         executable = workspace.executable(pkg, exe)
         source = executable.sources[0] if executable and executable.sources else None
-        elem = Element(f"x{index:05d}", workspace.display(source) if source else pkg, 1)
+        file = summary.name_file or (workspace.display(source) if source else pkg)
+        elem = Element(f"x{index:05d}", file, summary.name_line or 1)
         name = summary.default_name if isinstance(summary.default_name, str) else exe
         if summary.default_name is not None and not isinstance(summary.default_name, str):
             diagnostics.add(elem.file, elem.line, "node-name", f"node name of {pkg}/{exe} is not known statically; "

@@ -54,6 +54,8 @@ RELATIONS: tuple[Relation, ...] = (
          _NODE, ("plugin", "str", "plugin type pkg/Name"), ("manager", "str", "manager node as written, or empty")),
     _rel("configuration", "node_source", "Where a node instance's ports were recovered from.",
          _NODE, ("origin", "str", "cpp, python or model")),
+    _rel("configuration", "node_incomplete", "A node instance whose source could not be fully read (it does not "
+         "parse or compile), so some of its ports may be missing.", _NODE, ("reason", "str", "the first problem")),
     _rel("configuration", "remap", "A remapping applied to a node instance, both sides resolved in its namespace.",
          ("elem", "id", "the `<remap>` element (or node args) that declares it"), _NODE,
          ("from", "name", "resolved source name"), ("to", "name", "resolved target name")),
