@@ -48,7 +48,7 @@ def requires_ros() -> list:
     """Marks for tests that run Debian's ROS 1; in CI (CI set) a missing ROS is a failure, not a skip."""
     import os
 
-    from support.rosgraph import ros_available
+    from support.live_graph import ros_available
 
     return [pytest.mark.ros,
             pytest.mark.skipif(not ros_available() and not os.environ.get("CI"), reason="Debian ROS 1 not installed")]

@@ -105,7 +105,7 @@ def test_bad_input_gives_diagnostics_in_every_format(tmp_path: Path, sarif_schem
     assert ("src/messy/launch/all.launch", 3, "no-model") in diags
     assert ("src/messy/scripts/old.py", 3, "python-syntax") in diags
     assert ("src/messy/src/missing.cpp", 1, "cpp-missing") in diags
-    assert ("src/messy/launch/all.launch", 7, "launch-subst") in diags
+    assert ("src/messy/launch/all.launch", 7, "launch-unresolved") in diags
     assert any(f == "src/messy/launch/bad.launch" and c == "launch-xml" for f, _l, c in diags)
     sarif = json.loads(archlog("check", tmp_path, "--launch", "messy/launch/all.launch", "--format", "sarif").stdout)
     jsonschema.validate(sarif, sarif_schema)

@@ -110,7 +110,7 @@ def test_bad_launch_input_becomes_diagnostics(tmp_path: Path) -> None:
     assert [n.name for n in config.nodes] == ["/ok"]
     found = {(d.file, d.line, d.code) for d in sink.items}
     assert ("main.launch", 2, "launch-include") in found
-    assert ("main.launch", 4, "launch-subst") in found
+    assert ("main.launch", 4, "launch-unresolved") in found
     assert any(f == "broken.launch" and code == "launch-xml" for f, _l, code in found)
 
 

@@ -9,7 +9,7 @@ import pytest
 
 from archlog.analysis import resolve_launch
 from conftest import corpus_cases, load_case, requires_ros, run_case
-from support.rosgraph import launch_graph
+from support.live_graph import launch_graph
 
 pytestmark = requires_ros()
 

@@ -188,6 +188,10 @@ class LaunchInterpreter:
                 if enabled is not True:
                     self._conditional(path, el, enabled)
                 handler(path, el, scope if enabled is True else replace(scope, condition=enabled))
+            except Unresolved as exc:
+                self._diag(path, el, "launch-unresolved",
+                           f"<{el.tag}> skipped: {exc}; pass the value with --arg or set it in the environment",
+                           "warning")
             except (SubstitutionError, LaunchError) as exc:
                 self._diag(path, el, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",
                            f"<{el.tag}>: {exc}")

@@ -72,7 +72,7 @@ def archlog_view(files: list[Path], args: dict[str, str], package_path: list[Pat
         nodes[_anon(node.name)] = {"pkg": node.pkg, "type": node.type, "namespace": node.namespace,
                                    "remaps": {_anon(a): _anon(b) for a, b, _e in node.remaps}}
     params = {_anon(k): _anon(v) for k, (v, _e) in config.params.items() if not isinstance(v, Unknown)}
-    errors = [d for d in sink.items if d.severity == "error"]
+    errors = [d for d in sink.items if d.severity == "error" or d.code in ("launch-unresolved", "launch-condition")]
     duplicates = len(config.nodes) != len({n.name for n in config.nodes})
     return View(nodes, params, "duplicate node names" if duplicates and not errors else
                 (errors[0].message if errors else None), sink.items)

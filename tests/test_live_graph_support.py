@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from conftest import requires_ros
-from support.rosgraph import LiveGraph, _pids_with_env, launch_graph
+from support.live_graph import LiveGraph, _pids_with_env, launch_graph
 
 pytestmark = requires_ros()
 
