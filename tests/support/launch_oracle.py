@@ -43,7 +43,8 @@ def roslaunch_view(files: list[Path], args: dict[str, str], package_path: list[P
     if out.returncode != 0:
         raise RuntimeError(f"oracle failed: {out.stderr[-2000:]}")
     data = json.loads(out.stdout.strip().splitlines()[-1])
-    nodes, params = {}, {k: _anon(v) for k, v in data["params"].items()}
+    # command= params are never run (archlog records them as unknown): leave them out
+    nodes, params = {}, {k: _anon(v) for k, v in data["params"].items() if v != "<command not run>"}
     for node in data["nodes"]:
         ns, name, remaps = node["namespace"], node["name"], [tuple(r) for r in node["remaps"]]
         for word in shlex.split(node["args"] or ""):

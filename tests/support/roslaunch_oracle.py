@@ -24,7 +24,18 @@ def main():
     request = json.load(sys.stdin)
     sys.argv = ["roslaunch"] + ["%s:=%s" % kv for kv in request["args"].items()]
     import roslaunch.config
+    import roslaunch.loader
     import roslaunch.xmlloader
+
+    # never run a project's commands: a command= param gets a placeholder value
+    original = roslaunch.loader.Loader.param_value
+
+    def param_value(self, verbose, name, ptype, value, textfile, binfile, command):
+        if command is not None:
+            return "<command not run>"
+        return original(self, verbose, name, ptype, value, textfile, binfile, command)
+
+    roslaunch.loader.Loader.param_value = param_value
 
     result = {"nodes": [], "params": {}, "error": None}
     try:
