@@ -1,66 +1,210 @@
-"""rospy nodes: recover init_node, publishers, subscribers, services and params with Python's ast."""
+"""rospy and rclpy nodes: recover node names, ports, params, timers and QoS with Python's ast.
+
+Nothing is imported or run. Values are folded from literals, module and class constants,
+`self` attributes, f-strings, `%` and `.format`, `+`, and function or `__init__` parameters
+whose call sites in the file agree (a small function summary). Anything else is an explicit
+Unknown with file:line. Python 2 sources are repaired line by line (parso finds the statements
+that do not parse) so their ROS calls are still recovered.
+"""
 
 from __future__ import annotations
 
 import ast
+import re
+from dataclasses import dataclass, field
 from pathlib import Path
+
+import parso
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.summary import NodeSummary, Port
 from archlog.values import ParamRef, Unknown, Value, concat
 
-# rospy callable -> (port kind, index of the name argument, index and keyword of the type argument)
-_PORTS: dict[str, tuple[str, str]] = {
-    "rospy.Publisher": ("publisher", "data_class"),
-    "rospy.Subscriber": ("subscriber", "data_class"),
-    "rospy.Service": ("service_server", "service_class"),
-    "rospy.ServiceProxy": ("service_client", "service_class"),
-    "actionlib.SimpleActionServer": ("action_server", "ActionSpec"),
-    "actionlib.SimpleActionClient": ("action_client", "action_spec"),
+# rospy-style constructors: qualified name -> (kind, keyword of the name, keyword of the type)
+_ROSPY = {
+    "rospy.Publisher": ("publisher", "name", "data_class"),
+    "rospy.Subscriber": ("subscriber", "name", "data_class"),
+    "rospy.Service": ("service_server", "name", "service_class"),
+    "rospy.ServiceProxy": ("service_client", "name", "service_class"),
+    "rospy.wait_for_message": ("subscriber", "topic", "topic_type"),
+    "message_filters.Subscriber": ("subscriber", "topic", "data_class"),
+    "actionlib.SimpleActionServer": ("action_server", "name", "ActionSpec"),
+    "actionlib.SimpleActionClient": ("action_client", "ns", "ActionSpec"),
+    "actionlib.ActionServer": ("action_server", "ns", "ActionSpec"),
+    "actionlib.ActionClient": ("action_client", "ns", "ActionSpec"),
 }
-_PARAM_READS = {"rospy.get_param", "rospy.search_param", "rospy.has_param"}
-_IDENTITY = {"rospy.resolve_name", "str"}
+# rclpy Node methods: method -> (kind, index of the type, index of the name)
+_RCLPY_METHODS = {
+    "create_publisher": ("publisher", 0, 1), "create_subscription": ("subscriber", 0, 1),
+    "create_service": ("service_server", 0, 1), "create_client": ("service_client", 0, 1),
+}
+_RCLPY_ACTIONS = {"rclpy.action.ActionServer": "action_server", "rclpy.action.ActionClient": "action_client"}
+# tf broadcasters and listeners: qualified name -> ports they create
+_TF = {
+    "tf.TransformBroadcaster": [("publisher", "/tf")],
+    "tf2_ros.TransformBroadcaster": [("publisher", "/tf")],
+    "tf2_ros.StaticTransformBroadcaster": [("publisher", "/tf_static")],
+    "tf.TransformListener": [("subscriber", "/tf"), ("subscriber", "/tf_static")],
+    "tf2_ros.TransformListener": [("subscriber", "/tf"), ("subscriber", "/tf_static")],
+}
+_PARAM_READS = {"rospy.get_param": True, "rospy.search_param": False, "rospy.has_param": False}
+_PARAM_WRITES = {"rospy.set_param", "rospy.delete_param"}
+_QOS_PRESETS = {
+    "qos_profile_sensor_data": (("reliability", "best_effort"), ("durability", "volatile"), ("history", "keep_last"),
+                                ("depth", "5")),
+    "qos_profile_system_default": (("reliability", "reliable"), ("durability", "volatile")),
+    "qos_profile_services_default": (("reliability", "reliable"), ("durability", "volatile")),
+    "qos_profile_parameters": (("reliability", "reliable"), ("durability", "volatile"), ("depth", "1000")),
+    "qos_profile_parameter_events": (("reliability", "reliable"), ("durability", "volatile"), ("depth", "1000")),
+}
+_QOS_KEYWORDS = {"history", "depth", "reliability", "durability", "deadline", "lifespan", "liveliness",
+                 "liveliness_lease_duration"}
+_TF_MESSAGE = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage"}
+_PARAMETER_VALUES = {"value", "string_value", "integer_value", "double_value", "bool_value"}
+_KIND = {ast.AugAssign: "augmented assignment", ast.For: "loop variable", ast.With: "with target"}
 
 
 def extract_python(path: Path, package: str, executable: str, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
-    """Read one rospy script; never imports or runs it."""
+    """Read one rospy/rclpy script; never imports or runs it."""
     summary = NodeSummary(package, executable, "python")
     try:
         source = path.read_bytes().decode("utf-8", errors="replace")
-        tree = ast.parse(source, filename=str(path))
-    except SyntaxError as exc:
-        diagnostics.add(shown, exc.lineno or 1, "python-syntax",
-                        f"does not parse as Python 3 ({exc.msg}); its ROS calls are not recovered", "error")
-        summary.incomplete = f"{shown}:{exc.lineno or 1}: does not parse as Python 3"
-        return summary
     except OSError as exc:
         diagnostics.add(shown, 1, "python-read", f"cannot read: {exc.strerror}", "error")
         summary.incomplete = f"{shown}: cannot be read"
         return summary
-    _Visitor(summary, shown).visit(tree)
+    tree, repaired = parse_tolerant(source)
+    if tree is None:
+        diagnostics.add(shown, repaired[0] if repaired else 1, "python-syntax",
+                        "does not parse as Python 3 or 2; its ROS calls are not recovered", "error")
+        summary.incomplete = f"{shown}: does not parse"
+        return summary
+    if repaired:
+        diagnostics.add(shown, repaired[0], "python2",
+                        f"Python 2 source: {len(repaired)} line(s) repaired or skipped to recover its ROS calls",
+                        "note")
+    _Extractor(summary, shown, tree).run()
     return summary
 
 
-class _Visitor(ast.NodeVisitor):
-    def __init__(self, summary: NodeSummary, shown: str) -> None:
-        self.summary, self.file = summary, shown
-        self.aliases: dict[str, str] = {}
-        self.constants: dict[str, ast.expr] = {}
+# -- Python 2 and broken sources ----------------------------------------------------------
+_REPAIRS = [
+    (re.compile(r"^(\s*)print\s*>>\s*[^,]+,\s*(.*?)\s*$"), r"\1print(\2)"),
+    (re.compile(r"^(\s*)print\s+(?!\()(.*?)\s*$"), r"\1print(\2)"),
+    (re.compile(r"^(\s*)print\s*$"), r"\1print()"),
+    (re.compile(r"^(\s*except\s+[^,:]+),\s*(\w+)\s*:"), r"\1 as \2:"),
+    (re.compile(r"^(\s*)exec\s+(?!\()(.*?)\s*$"), r"\1exec(\2)"),
+    (re.compile(r"^(\s*raise\s+[\w.]+)\s*,\s*(.+?)\s*$"), r"\1(\2)"),
+    (re.compile(r"\b0([0-7]+)\b"), r"0o\1"),
+    (re.compile(r"\b(\d+)[lL]\b"), r"\1"),
+    (re.compile(r"\bur(['\"])"), r"u\1"),
+    (re.compile(r"<>"), "!="),
+    (re.compile(r"`([^`]*)`"), r"repr(\1)"),
+]
 
-    # -- module context -----------------------------------------------------------------
-    def visit_Module(self, node: ast.Module) -> None:
-        for stmt in ast.walk(node):
-            if isinstance(stmt, ast.Import):
-                for a in stmt.names:
+
+def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int]]:
+    """Parse with ast; on failure repair the lines parso (error recovery) or ast points at:
+    first with Python 2 rewrites, then by neutralising the statement. Line numbers never move."""
+    lines = source.splitlines()
+    repaired: list[int] = []
+    grammar = parso.load_grammar()
+    for _attempt in range(200):
+        try:
+            return ast.parse("\n".join(lines) + "\n"), repaired
+        except SyntaxError as exc:
+            bad = sorted({e.start_pos[0] for e in grammar.iter_errors(grammar.parse("\n".join(lines)))}
+                         | {exc.lineno or 1})
+        for number in bad:
+            if not 1 <= number <= len(lines):
+                continue
+            text = lines[number - 1]
+            fixed = text
+            for pattern, replacement in _REPAIRS:
+                fixed = pattern.sub(replacement, fixed)
+            if fixed == text:
+                indent = text[: len(text) - len(text.lstrip())]
+                fixed = indent + ("if True:" if text.rstrip().endswith(":") else "pass")
+                if fixed == text:
+                    continue
+            lines[number - 1] = fixed
+            if number not in repaired:
+                repaired.append(number)
+    return None, repaired
+
+
+# -- scopes ---------------------------------------------------------------------------------
+@dataclass
+class _Function:
+    node: ast.FunctionDef | ast.AsyncFunctionDef
+    cls: str | None
+    assigns: dict[str, list[ast.expr]] = field(default_factory=dict)
+
+
+class _Extractor:
+    """Walks a module once to index names, then again to read the ROS calls in their scopes."""
+
+    def __init__(self, summary: NodeSummary, shown: str, tree: ast.Module) -> None:
+        self.summary, self.file, self.tree = summary, shown, tree
+        self.aliases: dict[str, str] = {}
+        self.module_assigns: dict[str, list[ast.expr]] = {}
+        self.class_attrs: dict[str, dict[str, list[ast.expr]]] = {}
+        self.class_bases: dict[str, list[str]] = {}
+        self.functions: dict[tuple[str | None, str], _Function] = {}
+        self.calls: dict[tuple[str | None, str], list[tuple[ast.Call, bool]]] = {}
+        self.declared: dict[str, ast.expr] = {}
+        self.scope: _Function | None = None
+
+    def run(self) -> None:
+        self._index()
+        for stmt in self.tree.body:
+            self._visit(stmt)
+
+    # -- indexing ---------------------------------------------------------------------------
+    def _index(self) -> None:
+        for node in ast.walk(self.tree):
+            if isinstance(node, ast.Import):
+                for a in node.names:
                     self.aliases[a.asname or a.name.split(".")[0]] = a.name if a.asname else a.name.split(".")[0]
-            elif isinstance(stmt, ast.ImportFrom) and stmt.module and not stmt.level:
-                for a in stmt.names:
-                    self.aliases[a.asname or a.name] = f"{stmt.module}.{a.name}"
-        for stmt in node.body:
-            if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 and isinstance(stmt.targets[0], ast.Name):
-                name = stmt.targets[0].id
-                self.constants[name] = stmt.value if name not in self.constants else ast.Constant(None)
-        self.generic_visit(node)
+            elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+                for a in node.names:
+                    self.aliases[a.asname or a.name] = f"{node.module}.{a.name}"
+        _assigns(self.tree.body, self.module_assigns, nested=False)
+        for node in self.tree.body:
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                self._function(node, None)
+            elif isinstance(node, ast.ClassDef):
+                self.class_bases[node.name] = [self.qualified(b) or "" for b in node.bases]
+                attrs = self.class_attrs.setdefault(node.name, {})
+                _assigns(node.body, attrs, nested=False)
+                for item in node.body:
+                    if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                        self._function(item, node.name)
+                        for sub in ast.walk(item):
+                            if isinstance(sub, (ast.Assign, ast.AnnAssign)):
+                                for target in sub.targets if isinstance(sub, ast.Assign) else [sub.target]:
+                                    if _is_self_attr(target) and sub.value is not None:
+                                        attrs.setdefault(target.attr, []).append(sub.value)
+                            elif isinstance(sub, ast.AugAssign) and _is_self_attr(sub.target):
+                                attrs.setdefault(sub.target.attr, []).append(sub)
+        for node in ast.walk(self.tree):
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
+                    node.func.attr == "declare_parameter" and len(node.args) > 1 and \
+                    isinstance(node.args[0], ast.Constant):
+                self.declared[str(node.args[0].value)] = node.args[1]
+            if isinstance(node, ast.Call):
+                if isinstance(node.func, ast.Name):
+                    key = (node.func.id, "__init__") if node.func.id in self.class_attrs else (None, node.func.id)
+                    self.calls.setdefault(key, []).append((node, key[1] == "__init__"))
+                elif isinstance(node.func, ast.Attribute) and isinstance(node.func.value, ast.Name) \
+                        and node.func.value.id == "self":
+                    for cls in self.class_attrs:
+                        self.calls.setdefault((cls, node.func.attr), []).append((node, True))
+
+    def _function(self, node: ast.FunctionDef | ast.AsyncFunctionDef, cls: str | None) -> None:
+        function = _Function(node, cls)
+        _assigns(node.body, function.assigns, nested=True)
+        self.functions[(cls, node.name)] = function
 
     def qualified(self, expr: ast.expr) -> str | None:
         if isinstance(expr, ast.Name):
@@ -70,72 +214,340 @@ class _Visitor(ast.NodeVisitor):
             return f"{base}.{expr.attr}" if base else None
         return None
 
-    # -- values -------------------------------------------------------------------------
-    def unknown(self, expr: ast.expr) -> Unknown:
-        return Unknown(ast.unparse(expr), self.file, expr.lineno)
+    def is_rclpy_node_class(self, cls: str | None, depth: int = 0) -> bool:
+        bases = self.class_bases.get(cls or "", [])
+        return any(b in ("rclpy.node.Node", "rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode")
+                   or (depth < 5 and self.is_rclpy_node_class(b, depth + 1)) for b in bases)
 
-    def value(self, expr: ast.expr | None, depth: int = 0) -> Value:
-        if expr is None or depth > 8:
-            return Unknown("<missing>", self.file, 0) if expr is None else self.unknown(expr)
-        if isinstance(expr, ast.Constant) and isinstance(expr.value, str):
-            return expr.value
-        if isinstance(expr, ast.Constant) and isinstance(expr.value, (int, float, bool)):
-            return str(expr.value).lower() if isinstance(expr.value, bool) else str(expr.value)
-        if isinstance(expr, ast.Name) and isinstance(self.constants.get(expr.id), ast.expr):
-            const = self.constants[expr.id]
-            if not (isinstance(const, ast.Constant) and const.value is None):
-                return self.value(const, depth + 1)
+    # -- traversal --------------------------------------------------------------------------
+    def _visit(self, node: ast.AST) -> None:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            outer = self.scope
+            cls = outer.cls if outer else self._enclosing_class(node)
+            self.scope = self.functions.get((cls, node.name)) or _Function(node, cls)
+            for child in node.body:
+                self._visit(child)
+            self.scope = outer
+            return
+        if isinstance(node, ast.ClassDef):
+            for child in node.body:
+                if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    outer, self.scope = self.scope, self.functions[(node.name, child.name)]
+                    for stmt in child.body:
+                        self._visit(stmt)
+                    self.scope = outer
+                else:
+                    self._visit(child)
+            return
+        if isinstance(node, ast.Call):
+            self._call(node)
+        for child in ast.iter_child_nodes(node):
+            self._visit(child)
+
+    def _enclosing_class(self, node: ast.AST) -> str | None:
+        for (cls, _name), function in self.functions.items():
+            if function.node is node:
+                return cls
+        return None
+
+    # -- values -----------------------------------------------------------------------------
+    def unknown(self, expr: ast.expr, why: str = "") -> Unknown:
+        return Unknown(ast.unparse(expr) + (f" ({why})" if why else ""), self.file, getattr(expr, "lineno", 0))
+
+    def value(self, expr: ast.expr | None, depth: int = 0, scope: _Function | None = None) -> Value:
+        scope = self.scope if scope is None else scope
+        if expr is None:
+            return Unknown("<missing argument>", self.file, 0)
+        if depth > 10:
+            return self.unknown(expr, "too deep")
+        if isinstance(expr, ast.Constant):
+            if isinstance(expr.value, str):
+                return expr.value
+            if isinstance(expr.value, bool):
+                return str(expr.value).lower()
+            if isinstance(expr.value, (int, float)):
+                return str(expr.value)
+            return self.unknown(expr)
+        if isinstance(expr, ast.Name):
+            return self.name_value(expr, depth, scope)
+        if _is_self_attr(expr) and scope is not None and scope.cls:
+            return self.single(self.class_attrs.get(scope.cls, {}).get(expr.attr, []), expr, depth, scope)
+        if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and expr.value.id in self.class_attrs:
+            return self.single(self.class_attrs[expr.value.id].get(expr.attr, []), expr, depth, None)
         if isinstance(expr, ast.BinOp) and isinstance(expr.op, ast.Add):
-            return concat(self.value(expr.left, depth + 1), self.value(expr.right, depth + 1))
+            return concat(self.value(expr.left, depth + 1, scope), self.value(expr.right, depth + 1, scope))
+        if isinstance(expr, ast.BinOp) and isinstance(expr.op, ast.Mod) and isinstance(expr.left, ast.Constant):
+            return self.percent(expr, depth, scope)
         if isinstance(expr, ast.JoinedStr):
-            parts = [self.value(v.value if isinstance(v, ast.FormattedValue) and v.conversion == -1
-                                and v.format_spec is None else v, depth + 1) for v in expr.values]
+            parts = [self.value(v.value, depth + 1, scope) if isinstance(v, ast.FormattedValue)
+                     and v.conversion == -1 and v.format_spec is None else
+                     (v.value if isinstance(v, ast.Constant) else self.unknown(expr)) for v in expr.values]
             return concat(*parts)
         if isinstance(expr, ast.Call):
-            func = self.qualified(expr.func)
-            if func in _PARAM_READS and func == "rospy.get_param" and expr.args:
-                name = self.value(expr.args[0], depth + 1)
-                default = self.arg(expr, 1, "default")
-                if isinstance(name, str):
-                    return ParamRef(name, self.value(default, depth + 1) if default is not None
-                                    else self.unknown(expr), "", self.file, expr.lineno)
-            if func in _IDENTITY and len(expr.args) == 1:
-                return self.value(expr.args[0], depth + 1)
+            return self.call_value(expr, depth, scope)
+        if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Call) and expr.attr in _PARAMETER_VALUES:
+            return self.call_value(expr.value, depth + 1, scope)
         return self.unknown(expr)
 
-    def message_type(self, expr: ast.expr | None) -> Value:
+    def name_value(self, expr: ast.Name, depth: int, scope: _Function | None) -> Value:
+        if scope is not None:
+            if expr.id in scope.assigns:
+                return self.single(scope.assigns[expr.id], expr, depth, scope)
+            params = [a.arg for a in scope.node.args.args + scope.node.args.kwonlyargs]
+            if expr.id in params:
+                return self.parameter(scope, expr.id, expr, depth)
+        return self.single(self.module_assigns.get(expr.id, []), expr, depth, None)
+
+    def single(self, exprs: list[ast.expr], at: ast.expr, depth: int, scope: _Function | None) -> Value:
+        """The value of a variable assigned exactly once (several different values: unknown)."""
+        values = {self.value(e, depth + 1, scope) if isinstance(e, ast.expr) else self.unknown(at, _KIND[type(e)])
+                  for e in exprs}
+        if len(values) == 1:
+            return next(iter(values))
+        return self.unknown(at, "assigned several values" if values else "not assigned in this file")
+
+    def parameter(self, scope: _Function, name: str, at: ast.expr, depth: int) -> Value:
+        """A parameter takes the value all call sites in the file pass (or its default)."""
+        args = scope.node.args
+        positional = [a.arg for a in args.args]
+        if scope.cls and positional and positional[0] in ("self", "cls"):
+            positional = positional[1:]
+        defaults = dict(zip([a.arg for a in args.args][len(args.args) - len(args.defaults):], args.defaults))
+        defaults.update({a.arg: d for a, d in zip(args.kwonlyargs, args.kw_defaults) if d is not None})
+        values = set()
+        for call, _bound in self.calls.get((scope.cls, scope.node.name), []):
+            passed = next((kw.value for kw in call.keywords if kw.arg == name), None)
+            if passed is None and name in positional and positional.index(name) < len(call.args):
+                passed = call.args[positional.index(name)]
+            if passed is None:
+                passed = defaults.get(name)
+            caller = self.function_of(call)
+            values.add(self.value(passed, depth + 1, caller) if passed is not None else self.unknown(at))
+        if not values and name in defaults:
+            values.add(self.value(defaults[name], depth + 1, scope))
+        if len(values) == 1:
+            return next(iter(values))
+        return self.unknown(at, "call sites pass different values" if values else "parameter not passed in this file")
+
+    def function_of(self, node: ast.AST) -> _Function | None:
+        for function in self.functions.values():
+            if any(sub is node for sub in ast.walk(function.node)):
+                return function
+        return None
+
+    def percent(self, expr: ast.BinOp, depth: int, scope: _Function | None) -> Value:
+        template = expr.left.value
+        items = expr.right.elts if isinstance(expr.right, ast.Tuple) else [expr.right]
+        pieces = re.split(r"%[sdr]", template) if isinstance(template, str) else []
+        if len(pieces) != len(items) + 1:
+            return self.unknown(expr)
+        parts: list[Value] = [pieces[0]]
+        for item, piece in zip(items, pieces[1:]):
+            parts += [self.value(item, depth + 1, scope), piece]
+        return concat(*parts)
+
+    def call_value(self, expr: ast.Call, depth: int, scope: _Function | None) -> Value:
+        func = self.qualified(expr.func)
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr == "format" and \
+                isinstance(expr.func.value, ast.Constant) and isinstance(expr.func.value.value, str):
+            return self.format_value(expr, depth, scope)
+        if func == "rospy.get_param" and expr.args:
+            name = self.value(expr.args[0], depth + 1, scope)
+            default = _arg(expr, 1, "default")
+            if isinstance(name, str):
+                return ParamRef(name, self.value(default, depth + 1, scope) if default is not None
+                                else self.unknown(expr, "parameter without default"), "", self.file, expr.lineno)
+        if func in ("rospy.resolve_name", "str", "os.path.join") and len(expr.args) == 1:
+            return self.value(expr.args[0], depth + 1, scope)
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr == "get_parameter_value" and \
+                isinstance(expr.func.value, ast.Call):
+            return self.call_value(expr.func.value, depth + 1, scope)
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr in ("declare_parameter", "get_parameter") \
+                and expr.args:
+            name = self.value(expr.args[0], depth + 1, scope)
+            default = _arg(expr, 1, "value")
+            if isinstance(name, str):
+                default = default if default is not None else self.declared.get(name)
+                return ParamRef(name, self.value(default, depth + 1, scope) if default is not None
+                                else self.unknown(expr, "parameter without default"), "", self.file, expr.lineno)
+        return self.unknown(expr)
+
+    def format_value(self, expr: ast.Call, depth: int, scope: _Function | None) -> Value:
+        template = expr.func.value.value  # type: ignore[union-attr]
+        parts: list[Value] = []
+        position = 0
+        for index, match in enumerate(re.finditer(r"\{(\w*)\}", template)):
+            parts.append(template[position:match.start()])
+            key = match.group(1)
+            if key.isdigit() or not key:
+                number = int(key) if key else index
+                item = expr.args[number] if number < len(expr.args) else None
+            else:
+                item = next((kw.value for kw in expr.keywords if kw.arg == key), None)
+            parts.append(self.value(item, depth + 1, scope) if item is not None else self.unknown(expr))
+            position = match.end()
+        parts.append(template[position:])
+        return concat(*parts)
+
+    def message_type(self, expr: ast.expr | None, ros2: bool) -> Value:
         name = self.qualified(expr) if expr is not None else None
         parts = name.split(".") if name else []
-        if len(parts) == 3 and parts[1] in ("msg", "srv"):
+        if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
             base = parts[2]
             if parts[1] == "msg" and base.endswith("Action"):
                 base = base[: -len("Action")]
-            return f"{parts[0]}/{base}"
-        return self.unknown(expr) if expr is not None else Unknown("<missing type>", self.file, 0)
+            return f"{parts[0]}/{parts[1]}/{base}" if ros2 else f"{parts[0]}/{base}"
+        if expr is None:
+            return Unknown("<missing type>", self.file, 0)
+        return self.unknown(expr, "message type not resolved")
 
-    @staticmethod
-    def arg(call: ast.Call, index: int, keyword: str) -> ast.expr | None:
-        for kw in call.keywords:
-            if kw.arg == keyword:
-                return kw.value
-        return call.args[index] if len(call.args) > index else None
-
-    # -- calls --------------------------------------------------------------------------
-    def visit_Call(self, node: ast.Call) -> None:
-        func = self.qualified(node.func)
+    # -- ROS calls --------------------------------------------------------------------------
+    def _call(self, call: ast.Call) -> None:
+        func = self.qualified(call.func)
+        method = call.func.attr if isinstance(call.func, ast.Attribute) else None
         if func == "rospy.init_node":
-            self.summary.default_name = self.value(self.arg(node, 0, "name"))
-            self.summary.name_file, self.summary.name_line = self.file, node.lineno
-            anon = self.arg(node, 2, "anonymous")
+            self.set_name(call, self.value(_arg(call, 0, "name")))
+            anon = _arg(call, 2, "anonymous")
             self.summary.anonymous = isinstance(anon, ast.Constant) and anon.value is True
-        elif func in _PORTS:
-            kind, type_kw = _PORTS[func]
-            self.add(kind, node, self.value(self.arg(node, 0, "name")), self.message_type(self.arg(node, 1, type_kw)))
-        elif func == "rospy.get_param" and node.args:
-            default = self.arg(node, 1, "default")
-            self.add("param_read", node, self.value(node.args[0]), "",
+        elif func in _ROSPY:
+            kind, name_kw, type_kw = _ROSPY[func]
+            self.add(kind, call, self.value(_arg(call, 0, name_kw)), self.message_type(_arg(call, 1, type_kw), False))
+        elif func in _TF:
+            for kind, topic in _TF[func]:
+                self.add(kind, call, topic, _TF_MESSAGE[topic])
+        elif func in _PARAM_READS and call.args:
+            default = _arg(call, 1, "default") if _PARAM_READS[func] else None
+            self.add("param_read", call, self.value(call.args[0]), "",
                      self.value(default) if default is not None else None)
-        self.generic_visit(node)
+        elif func in _PARAM_WRITES and call.args:
+            value = self.value(_arg(call, 1, "param_value")) if func == "rospy.set_param" else "delete"
+            self.add("param_write", call, self.value(call.args[0]), "", value)
+        elif func == "rospy.wait_for_service" and call.args:
+            self.add("service_client", call, self.value(call.args[0]), self.unknown(call, "type not given"))
+        elif func in ("rospy.Timer", "rospy.Rate"):
+            self.add("timer", call, self.period(_arg(call, 0, "period" if func == "rospy.Timer" else "hz"), func), "")
+        elif func in _RCLPY_ACTIONS:
+            self.add(_RCLPY_ACTIONS[func], call, self.value(_arg(call, 2, "action_name")),
+                     self.message_type(_arg(call, 1, "action_type"), True))
+        elif method and self.is_rclpy_call(call):
+            self.rclpy_call(call, method)
+        elif func in ("rclpy.create_node", "rclpy.node.Node") or (
+                isinstance(call.func, ast.Attribute) and call.func.attr == "__init__"
+                and isinstance(call.func.value, ast.Call) and isinstance(call.func.value.func, ast.Name)
+                and call.func.value.func.id == "super" and self.scope and self.is_rclpy_node_class(self.scope.cls)):
+            self.set_name(call, self.value(_arg(call, 0, "node_name")))
+            namespace = next((kw.value for kw in call.keywords if kw.arg == "namespace"), None)
+            if namespace is not None:
+                self.summary.namespace = self.value(namespace)
 
-    def add(self, kind: str, node: ast.Call, name: Value, type_: Value, default: Value | None = None) -> None:
-        self.summary.ports.append(Port(kind, name, type_, self.file, node.lineno, node.col_offset + 1, "", default))
+    def is_rclpy_call(self, call: ast.Call) -> bool:
+        """A method call on an rclpy Node: `self` in a Node subclass, or a variable holding a node."""
+        target = call.func.value  # type: ignore[union-attr]
+        if isinstance(target, ast.Name) and target.id == "self":
+            return self.scope is not None and self.is_rclpy_node_class(self.scope.cls)
+        if isinstance(target, ast.Name):
+            for exprs in (self.module_assigns.get(target.id, []),
+                          self.scope.assigns.get(target.id, []) if self.scope else []):
+                if any(isinstance(e, ast.Call) and self.qualified(e.func) in ("rclpy.create_node", "rclpy.node.Node")
+                       for e in exprs):
+                    return True
+        return False
+
+    def rclpy_call(self, call: ast.Call, method: str) -> None:
+        if method in _RCLPY_METHODS:
+            kind, type_at, name_at = _RCLPY_METHODS[method]
+            name_kw = "topic" if kind in ("publisher", "subscriber") else "srv_name"
+            type_kw = "msg_type" if kind in ("publisher", "subscriber") else "srv_type"
+            qos = self.qos(_arg(call, 3 if kind == "subscriber" else 2, "qos_profile")) \
+                if kind in ("publisher", "subscriber") else ()
+            self.add(kind, call, self.value(_arg(call, name_at, name_kw)),
+                     self.message_type(_arg(call, type_at, type_kw), True), qos=qos)
+        elif method == "declare_parameter" and call.args:
+            default = _arg(call, 1, "value")
+            self.add("param_read", call, self.value(call.args[0]), "",
+                     self.value(default) if default is not None else None)
+        elif method == "declare_parameters":
+            prefix = self.value(_arg(call, 0, "namespace"))
+            params = _arg(call, 1, "parameters")
+            for item in params.elts if isinstance(params, (ast.List, ast.Tuple)) else []:
+                pair = item.elts if isinstance(item, ast.Tuple) else [item]
+                name = self.value(pair[0])
+                full = concat(prefix, ".", name) if prefix else name
+                self.add("param_read", call, full, "", self.value(pair[1]) if len(pair) > 1 else None)
+        elif method == "create_timer":
+            self.add("timer", call, self.value(_arg(call, 0, "timer_period_sec")), "")
+
+    def qos(self, expr: ast.expr | None) -> tuple[tuple[str, str], ...]:
+        """QoS policies from a depth, a preset, or a QoSProfile(...) call."""
+        if expr is None:
+            return ()
+        if isinstance(expr, ast.Constant) and isinstance(expr.value, int):
+            return (("history", "keep_last"), ("depth", str(expr.value)))
+        name = self.qualified(expr)
+        if name and name.rsplit(".", 1)[-1] in _QOS_PRESETS:
+            return (("profile", name.rsplit(".", 1)[-1]), *_QOS_PRESETS[name.rsplit(".", 1)[-1]])
+        if isinstance(expr, ast.Name) and self.scope is not None and expr.id in self.scope.assigns:
+            return self.qos(self.scope.assigns[expr.id][-1])
+        if isinstance(expr, ast.Name) and expr.id in self.module_assigns:
+            return self.qos(self.module_assigns[expr.id][-1])
+        if isinstance(expr, ast.Call) and (self.qualified(expr.func) or "").endswith("QoSProfile"):
+            found = []
+            for kw in expr.keywords:
+                if kw.arg in _QOS_KEYWORDS:
+                    text = ast.unparse(kw.value).rsplit(".", 1)[-1].lower()
+                    text = text.removeprefix("reliability_").removeprefix("durability_").removeprefix("history_")
+                    found.append((kw.arg, text))
+            return tuple(found)
+        return (("profile", f"?({ast.unparse(expr)})"),)
+
+    def period(self, expr: ast.expr | None, func: str) -> Value:
+        """A timer's period in seconds: Duration(x) / Duration.from_sec(x), or 1/hz for a Rate."""
+        if expr is None:
+            return Unknown("<missing period>", self.file, 0)
+        if isinstance(expr, ast.Call) and expr.args and (self.qualified(expr.func) or "").startswith("rospy.Duration"):
+            expr = expr.args[0]
+        value = self.value(expr)
+        if func == "rospy.Rate" and isinstance(value, str):
+            try:
+                return repr(1 / float(value))
+            except (ValueError, ZeroDivisionError):
+                return self.unknown(expr, "not a rate")
+        return value
+
+    def set_name(self, call: ast.Call, name: Value) -> None:
+        self.summary.default_name = name
+        self.summary.name_file, self.summary.name_line = self.file, call.lineno
+
+    def add(self, kind: str, call: ast.Call, name: Value, type_: Value, default: Value | None = None,
+            qos: tuple[tuple[str, str], ...] = ()) -> None:
+        self.summary.ports.append(Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, "", default, qos))
+
+
+def _arg(call: ast.Call, index: int, keyword: str) -> ast.expr | None:
+    for kw in call.keywords:
+        if kw.arg == keyword:
+            return kw.value
+    return call.args[index] if len(call.args) > index else None
+
+
+def _is_self_attr(expr: ast.AST) -> bool:
+    return isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and expr.value.id == "self"
+
+
+def _assigns(body: list[ast.stmt], into: dict[str, list[ast.expr]], nested: bool) -> None:
+    """Record `name = expr` (and `name += ...` as a second, unknown value) in a block."""
+    nodes = [n for stmt in body for n in (ast.walk(stmt) if nested else [stmt])]
+    for node in nodes:
+        if isinstance(node, ast.Assign):
+            for target in node.targets:
+                if isinstance(target, ast.Name):
+                    into.setdefault(target.id, []).append(node.value)
+        elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name) and node.value is not None:
+            into.setdefault(node.target.id, []).append(node.value)
+        elif isinstance(node, ast.AugAssign) and isinstance(node.target, ast.Name):
+            into.setdefault(node.target.id, []).append(node)  # type: ignore[arg-type]
+        elif isinstance(node, (ast.For, ast.With)) and nested:
+            targets = [node.target] if isinstance(node, ast.For) else [i.optional_vars for i in node.items]
+            for target in targets:
+                if isinstance(target, ast.Name):
+                    into.setdefault(target.id, []).append(node)  # type: ignore[arg-type]

@@ -8,7 +8,7 @@ from archlog.values import Value
 
 PORT_KINDS = (
     "publisher", "subscriber", "service_server", "service_client",
-    "action_server", "action_client", "param_read",
+    "action_server", "action_client", "param_read", "param_write", "timer",
 )
 
 
@@ -24,6 +24,7 @@ class Port:
     column: int = 0
     handle_ns: Value = ""
     default: Value | None = None
+    qos: tuple[tuple[str, str], ...] = ()
 
 
 @dataclass
@@ -39,3 +40,4 @@ class NodeSummary:
     incomplete: str | None = None
     name_file: str = ""
     name_line: int = 0
+    namespace: Value = ""

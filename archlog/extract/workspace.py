@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import ast
+import configparser
 import glob
 import os
 import re
@@ -102,6 +104,7 @@ class Workspace:
         package = Package(name, folder, plugin_xml=plugin_xml)
         self.packages[name] = package
         self._cmake_executables(package)
+        self._entry_points(package)
         self._script_executables(package)
 
     def _cmake_executables(self, package: Package) -> None:
@@ -140,12 +143,27 @@ class Workspace:
                         lang = "python" if path.suffix == ".py" or _is_python_script(path) else "other"
                         package.executables[path.name] = Executable(package.name, path.name, lang, [path], c.line)
 
+    def _entry_points(self, package: Package) -> None:
+        """console_scripts of setup.py / setup.cfg (catkin and ament_python packages)."""
+        for spec in _console_scripts(package.path, self.diagnostics, self.display):
+            name, _, target = spec.partition("=")
+            module = target.strip().split(":")[0].strip()
+            relative = Path(*module.split("."))
+            for base in (package.path, package.path / "src"):
+                for candidate in (base / relative.with_suffix(".py"), base / relative / "__init__.py"):
+                    if candidate.is_file():
+                        package.executables[name.strip()] = Executable(package.name, name.strip(), "python",
+                                                                       [candidate])
+                        break
+
     def _script_executables(self, package: Package) -> None:
-        for folder in ("scripts", "nodes", "bin", "src"):
+        """Executable Python scripts in the usual folders, and modules with a `__main__` block
+        that use rospy or rclpy."""
+        for folder in ("scripts", "nodes", "bin", "src", package.name):
             for path in sorted((package.path / folder).glob("**/*")):
                 if path.name in package.executables or not path.is_file() or path.suffix in SOURCE_SUFFIXES:
                     continue
-                if os.access(path, os.X_OK) and _is_python_script(path):
+                if os.access(path, os.X_OK) and _is_python_script(path) or _is_main_module(path):
                     package.executables[path.name] = Executable(package.name, path.name, "python", [path])
 
 
@@ -167,6 +185,40 @@ def _manifests(root: Path) -> list[Path]:
 def _under(folder: Path, path: str) -> Path:
     """A CMake path argument: absolute as given, otherwise relative to the current folder."""
     return Path(path) if Path(path).is_absolute() else folder / path
+
+
+def _console_scripts(folder: Path, diagnostics: DiagnosticSink, display) -> list[str]:
+    specs: list[str] = []
+    setup_cfg = folder / "setup.cfg"
+    if setup_cfg.is_file():
+        parser = configparser.ConfigParser()
+        try:
+            parser.read(setup_cfg, encoding="utf-8")
+            specs += [ln for ln in parser.get("options.entry_points", "console_scripts", fallback="").splitlines()
+                      if "=" in ln]
+        except configparser.Error as exc:
+            diagnostics.add(display(setup_cfg), 1, "setup-cfg", f"setup.cfg does not parse: {exc}", "warning")
+    setup_py = folder / "setup.py"
+    if setup_py.is_file():
+        try:
+            tree = ast.parse(setup_py.read_text(errors="replace"))
+        except SyntaxError as exc:
+            diagnostics.add(display(setup_py), exc.lineno or 1, "setup-py", "setup.py does not parse", "warning")
+            return specs
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Dict):
+                for key, value in zip(node.keys, node.values):
+                    if isinstance(key, ast.Constant) and key.value == "console_scripts" and \
+                            isinstance(value, (ast.List, ast.Tuple)):
+                        specs += [e.value for e in value.elts if isinstance(e, ast.Constant) and isinstance(e.value, str)]
+    return specs
+
+
+def _is_main_module(path: Path) -> bool:
+    if path.suffix != ".py" or path.name in ("setup.py", "__init__.py") or "test" in path.parts[-2:-1]:
+        return False
+    text = path.read_text(errors="replace")
+    return "__main__" in text and ("import rospy" in text or "import rclpy" in text or "from rclpy" in text)
 
 
 def _is_python_script(path: Path) -> bool:

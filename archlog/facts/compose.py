@@ -76,12 +76,17 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
     for port in summary.ports:
         pid = store.new_id("p")
         store.locate(pid, port.file, port.line, port.column)
+        for policy, value in port.qos:
+            store.add("qos", pid, policy, value)
+        if port.kind == "timer":
+            store.add("timer", pid, node.name, _bind(port.name, node, config))
+            continue
         before = _resolve(port.name, port.handle_ns, node, config, {})
         after = _resolve(port.name, port.handle_ns, node, config, remaps)
-        if port.kind == "param_read":
+        if port.kind in ("param_read", "param_write"):
             default = _bind(port.default, node, config) if port.default is not None else \
-                Unknown("no default", port.file, port.line)
-            store.add("param_read", pid, node.name, after, default)
+                Unknown("no default" if port.kind == "param_read" else "value", port.file, port.line)
+            store.add(port.kind, pid, node.name, after, default)
         else:
             store.add(port.kind, pid, node.name, after, _bind(port.type, node, config))
         store.add("port_source_name", pid, before)

@@ -76,6 +76,13 @@ RELATIONS: tuple[Relation, ...] = (
          _PORT, _NODE, ("action", "name", "resolved, remapped action namespace"), ("type", "type", "action type")),
     _rel("ports", "param_read", "A node instance reads a parameter.",
          _PORT, _NODE, ("param", "name", "resolved parameter name"), ("default", "str", "default value, or unknown")),
+    _rel("ports", "param_write", "A node instance sets (or deletes) a parameter.",
+         _PORT, _NODE, ("param", "name", "resolved parameter name"), ("value", "str", "value set, or 'delete'")),
+    _rel("ports", "timer", "A periodic trigger in a node: a timer or a loop rate (for behavioral rules).",
+         _PORT, _NODE, ("period", "str", "period in seconds as written or folded, or unknown")),
+    _rel("ports", "qos", "A QoS policy of a ROS 2 publisher or subscriber.",
+         _PORT, ("policy", "str", "history, depth, reliability, durability, deadline, lifespan, liveliness, "
+                 "liveliness_lease_duration, or profile"), ("value", "str", "the policy's value")),
     _rel("ports", "port_source_name", "A port's name resolved in the node's namespace, before remapping.",
          _PORT, ("name", "name", "resolved name before remaps")),
     _rel("provenance", "location", "Where a port, launch element or node comes from.",

@@ -1,0 +1,31 @@
+"""A stable text rendering of what an extractor recovered, for CodeQL-style .expected files."""
+
+from __future__ import annotations
+
+import json
+
+from archlog.diagnostics import Diagnostic
+from archlog.extract.summary import NodeSummary
+from archlog.values import Concat, ParamRef, Unknown, Value
+
+
+def plain(value: Value | None) -> object:
+    if isinstance(value, Unknown):
+        return {"unknown": value.expr, "line": value.line}
+    if isinstance(value, ParamRef):
+        return {"param": value.name, "default": plain(value.default)}
+    if isinstance(value, Concat):
+        return {"concat": [plain(p) for p in value.parts]}
+    return value
+
+
+def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
+    lines = [f"node {json.dumps(plain(summary.default_name))} namespace {json.dumps(plain(summary.namespace))}"
+             f" anonymous {summary.anonymous}"]
+    for p in summary.ports:
+        extra = f" default {json.dumps(plain(p.default))}" if p.default is not None else ""
+        extra += "".join(f" {k}={v}" for k, v in p.qos)
+        handle = f" handle {json.dumps(plain(p.handle_ns))}" if p.handle_ns else ""
+        lines.append(f"{p.line}: {p.kind} {json.dumps(plain(p.name))} {json.dumps(plain(p.type))}{handle}{extra}")
+    lines += [f"diagnostic {d.line}: {d.severity} {d.code}" for d in diagnostics]
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,75 @@
+"""Workspace indexing: packages, executables from CMake, setup.py/setup.cfg and scripts."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.workspace import Workspace
+
+MANIFEST = ("<package format='2'><name>{}</name><version>0.1.0</version><description>d</description>"
+            "<maintainer email='dev@example.com'>m</maintainer><license>MIT</license></package>")
+
+
+def package(root: Path, name: str, files: dict[str, str], executable: tuple[str, ...] = ()) -> Path:
+    folder = root / "src" / name
+    for rel, text in {"package.xml": MANIFEST.format(name), **files}.items():
+        (folder / rel).parent.mkdir(parents=True, exist_ok=True)
+        (folder / rel).write_text(text)
+    for rel in executable:
+        (folder / rel).chmod(0o755)
+    return folder
+
+
+def test_executables_from_every_source(tmp_path: Path) -> None:
+    package(tmp_path, "drivers", {
+        "CMakeLists.txt": "project(drivers)\nset(NODE ${PROJECT_NAME}_node)\nadd_executable(${NODE} src/a.cpp)\n"
+                          "set_target_properties(${NODE} PROPERTIES OUTPUT_NAME driver)\n"
+                          "include_directories(include extra/include)\nadd_subdirectory(gpu)\n"
+                          "catkin_install_python(PROGRAMS scripts/relay.py DESTINATION bin)\n"
+                          "install(PROGRAMS scripts/env_run DESTINATION bin)\n",
+        "gpu/CMakeLists.txt": "cuda_add_executable(gpu_node main.cu helper.cpp)\n",
+        "scripts/relay.py": "import rospy\n", "scripts/env_run": "#!/bin/bash\nexec \"$@\"\n",
+        "scripts/tool": "#!/usr/bin/env python3\nimport rospy\n",
+        "scripts/not_executable": "#!/usr/bin/env python3\n",
+    }, executable=("scripts/tool",))
+    package(tmp_path, "py_pkg", {
+        "setup.py": "from setuptools import setup\nsetup(name='py_pkg', entry_points={'console_scripts': "
+                    "['talker = py_pkg.talker:main']})\n",
+        "setup.cfg": "[options.entry_points]\nconsole_scripts =\n    listener = py_pkg.listener:main\n",
+        "py_pkg/__init__.py": "", "py_pkg/talker.py": "import rclpy\n", "py_pkg/listener.py": "import rclpy\n",
+        "py_pkg/standalone.py": "import rclpy\nif __name__ == '__main__':\n    rclpy.init()\n",
+        "py_pkg/util.py": "import rclpy\n",
+    })
+    package(tmp_path, "ignored", {"CATKIN_IGNORE": "", "CMakeLists.txt": "add_executable(x x.cpp)\n"})
+    sink = DiagnosticSink()
+    ws = Workspace([tmp_path], sink)
+    assert set(ws.packages) == {"drivers", "py_pkg"} and sink.items == []
+    drivers = ws.packages["drivers"]
+    found = {name: (e.lang, [s.name for s in e.sources]) for name, e in drivers.executables.items()}
+    assert found == {"driver": ("cpp", ["a.cpp"]), "gpu_node": ("cpp", ["main.cu", "helper.cpp"]),
+                     "relay.py": ("python", ["relay.py"]), "env_run": ("other", ["env_run"]),
+                     "tool": ("python", ["tool"])}
+    assert [p.relative_to(drivers.path).as_posix() for p in drivers.include_dirs] == ["include", "extra/include"]
+    py = {name: e.sources[0].name for name, e in ws.packages["py_pkg"].executables.items()}
+    assert py == {"talker": "talker.py", "listener": "listener.py", "standalone.py": "standalone.py"}
+
+
+def test_find_prefers_the_workspace_then_installed_packages(tmp_path: Path) -> None:
+    package(tmp_path, "std_msgs", {})
+    ws = Workspace([tmp_path], DiagnosticSink())
+    assert ws.find("std_msgs") == tmp_path / "src" / "std_msgs"
+    assert ws.find("nav_msgs") == Path("/usr/share/nav_msgs")
+    assert ws.find("no_such_package_anywhere") is None
+
+
+def test_bad_manifests_are_diagnostics(tmp_path: Path) -> None:
+    package(tmp_path, "a", {})
+    (tmp_path / "src" / "copy").mkdir(parents=True)
+    (tmp_path / "src" / "copy" / "package.xml").write_text(MANIFEST.format("a"))
+    (tmp_path / "src" / "broken").mkdir()
+    (tmp_path / "src" / "broken" / "package.xml").write_text("<package><name>broken</name>")
+    sink = DiagnosticSink()
+    ws = Workspace([tmp_path], sink)
+    assert set(ws.packages) == {"a", "broken"}
+    assert sorted(d.code for d in sink.items) == ["duplicate-package", "package-xml"]
