@@ -79,11 +79,17 @@ def test_rospy_calls_types_and_values(tmp_path: Path) -> None:
     assert got[6][0] == "publisher" and got[6][1] == Unknown("make_topic()", "talker.py", 16)
 
 
-def test_python2_source_is_a_diagnostic(tmp_path: Path) -> None:
-    (tmp_path / "old.py").write_text("import rospy\nprint 'hello'\n")
+def test_python2_is_repaired_and_garbage_is_a_diagnostic(tmp_path: Path) -> None:
+    (tmp_path / "old.py").write_text("import rospy\nfrom std_msgs.msg import String\nprint 'hello'\n"
+                                     "rospy.Publisher('out', String)\n")
     sink = DiagnosticSink()
     s = extract_python(tmp_path / "old.py", "demo", "old.py", "old.py", sink)
-    assert s.ports == [] and [(d.line, d.code) for d in sink.items] == [(2, "python-syntax")]
+    assert [(p.kind, p.name, p.line) for p in s.ports] == [("publisher", "out", 4)]
+    assert [(d.line, d.code) for d in sink.items] == [(3, "python2")] and s.incomplete is None
+    (tmp_path / "garbage.py").write_bytes(b"\x00\x01 def (((\n" * 300)
+    sink = DiagnosticSink()
+    s = extract_python(tmp_path / "garbage.py", "demo", "g", "garbage.py", sink)
+    assert s.ports == [] and [d.code for d in sink.items] == ["python-syntax"] and s.incomplete
 
 
 def test_roscpp_handles_templates_callbacks_and_params(tmp_path: Path) -> None:

@@ -73,8 +73,10 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
         diagnostics.add(shown, 1, "python-read", f"cannot read: {exc.strerror}", "error")
         summary.incomplete = f"{shown}: cannot be read"
         return summary
-    tree, repaired = parse_tolerant(source)
-    if tree is None:
+    tree, repaired, dropped = parse_tolerant(source)
+    lines = source.splitlines()
+    if tree is not None and len(repaired) * 2 > len([ln for ln in lines if ln.strip()]):
+        tree = None  # mostly not Python: do not pretend to have read it
         diagnostics.add(shown, repaired[0] if repaired else 1, "python-syntax",
                         "does not parse as Python 3 or 2; its ROS calls are not recovered", "error")
         summary.incomplete = f"{shown}: does not parse"
@@ -83,11 +85,15 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
         diagnostics.add(shown, repaired[0], "python2",
                         f"Python 2 source: {len(repaired)} line(s) repaired or skipped to recover its ROS calls",
                         "note")
+        lost = [n for n in dropped if _ROS_WORDS.search(lines[n - 1])]
+        if lost:
+            summary.incomplete = f"{shown}:{lost[0]}: a line with ROS calls could not be read"
     _Extractor(summary, shown, tree).run()
     return summary
 
 
 # -- Python 2 and broken sources ----------------------------------------------------------
+_ROS_WORDS = re.compile(r"rospy\.|rclpy|Publisher|Subscriber|Service|create_")
 _REPAIRS = [
     (re.compile(r"^(\s*)print\s*>>\s*[^,]+,\s*(.*?)\s*$"), r"\1print(\2)"),
     (re.compile(r"^(\s*)print\s+(?!\()(.*?)\s*$"), r"\1print(\2)"),
@@ -103,15 +109,17 @@ _REPAIRS = [
 ]
 
 
-def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int]]:
+def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]]:
     """Parse with ast; on failure repair the lines parso (error recovery) or ast points at:
-    first with Python 2 rewrites, then by neutralising the statement. Line numbers never move."""
+    first with Python 2 rewrites, then by neutralising the statement. Line numbers never move.
+    Returns the tree, the repaired lines, and those of them whose statement was dropped."""
     lines = source.splitlines()
     repaired: list[int] = []
+    dropped: list[int] = []
     grammar = parso.load_grammar()
     for _attempt in range(200):
         try:
-            return ast.parse("\n".join(lines) + "\n"), repaired
+            return ast.parse("\n".join(lines) + "\n"), repaired, dropped
         except SyntaxError as exc:
             bad = sorted({e.start_pos[0] for e in grammar.iter_errors(grammar.parse("\n".join(lines)))}
                          | {exc.lineno or 1})
@@ -127,10 +135,11 @@ def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int]]:
                 fixed = indent + ("if True:" if text.rstrip().endswith(":") else "pass")
                 if fixed == text:
                     continue
+                dropped.append(number)
             lines[number - 1] = fixed
             if number not in repaired:
                 repaired.append(number)
-    return None, repaired
+    return None, repaired, dropped
 
 
 # -- scopes ---------------------------------------------------------------------------------
@@ -149,6 +158,7 @@ class _Extractor:
         self.aliases: dict[str, str] = {}
         self.module_assigns: dict[str, list[ast.expr]] = {}
         self.class_attrs: dict[str, dict[str, list[ast.expr]]] = {}
+        self.attr_scope: dict[int, _Function] = {}
         self.class_bases: dict[str, list[str]] = {}
         self.functions: dict[tuple[str | None, str], _Function] = {}
         self.calls: dict[tuple[str | None, str], list[tuple[ast.Call, bool]]] = {}
@@ -185,6 +195,7 @@ class _Extractor:
                                 for target in sub.targets if isinstance(sub, ast.Assign) else [sub.target]:
                                     if _is_self_attr(target) and sub.value is not None:
                                         attrs.setdefault(target.attr, []).append(sub.value)
+                                        self.attr_scope[id(sub.value)] = self.functions[(node.name, item.name)]
                             elif isinstance(sub, ast.AugAssign) and _is_self_attr(sub.target):
                                 attrs.setdefault(sub.target.attr, []).append(sub)
         for node in ast.walk(self.tree):
@@ -300,8 +311,8 @@ class _Extractor:
 
     def single(self, exprs: list[ast.expr], at: ast.expr, depth: int, scope: _Function | None) -> Value:
         """The value of a variable assigned exactly once (several different values: unknown)."""
-        values = {self.value(e, depth + 1, scope) if isinstance(e, ast.expr) else self.unknown(at, _KIND[type(e)])
-                  for e in exprs}
+        values = {self.value(e, depth + 1, self.attr_scope.get(id(e), scope)) if isinstance(e, ast.expr)
+                  else self.unknown(at, _KIND[type(e)]) for e in exprs}
         if len(values) == 1:
             return next(iter(values))
         return self.unknown(at, "assigned several values" if values else "not assigned in this file")
