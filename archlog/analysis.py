@@ -11,9 +11,10 @@ from pathlib import Path
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cpp import extract_cpp
+from archlog.extract.cpp import CppEnvironment, extract_cpp
 from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode
 from archlog.extract.messages import message_files
+from archlog.extract.msg_headers import generated_headers
 from archlog.extract.models import BUILTIN_DIR, load_models
 from archlog.extract.python import extract_python
 from archlog.extract.summary import NodeSummary
@@ -93,7 +94,7 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
              diagnostics: DiagnosticSink) -> dict[tuple[str, str], NodeSummary]:
     summaries = {}
     cpp_jobs = []
-    includes = [d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]]
+    env: CppEnvironment | None = None
     for package in workspace.packages.values():
         for exe in package.executables.values():
             if wanted is not None and (package.name, exe.name) not in wanted:
@@ -104,11 +105,14 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
                 summaries[(package.name, exe.name)] = extract_python(
                     exe.sources[0], package.name, exe.name, workspace.display(exe.sources[0]), diagnostics)
             else:
-                shown = [workspace.display(s) for s in exe.sources]
-                cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, includes))
+                env = env or CppEnvironment(
+                    [d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
+                    generated_headers(workspace, diagnostics))
+                shown = {s: workspace.display(s) for s in exe.sources}
+                cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, env))
     for job, result in _run_isolated(cpp_jobs):
         if result is None:
-            diagnostics.add(job.shown[0] if job.shown else job.package, 1, "cpp-crash",
+            diagnostics.add(next(iter(job.shown.values()), job.package), 1, "cpp-crash",
                             f"the C++ parser crashed on {job.package}/{job.executable}; its ROS calls are not "
                             "recovered", "error")
             continue
@@ -122,16 +126,14 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
 @dataclass(frozen=True)
 class _CppJob:
     sources: list[Path]
-    shown: list[str]
+    shown: dict[Path, str]
     package: str
     executable: str
-    includes: list[Path]
+    env: CppEnvironment
 
     def __call__(self) -> tuple[NodeSummary, list]:
         sink = DiagnosticSink()
-        names_of = dict(zip(self.sources, self.shown))
-        summary = extract_cpp(self.sources, self.package, self.executable, self.includes,
-                              lambda p: names_of.get(Path(p), str(p)), sink)
+        summary = extract_cpp(self.sources, self.package, self.executable, self.env, self.shown, sink)
         return summary, sink.items
 
 

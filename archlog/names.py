@@ -28,7 +28,7 @@ def namespace_of(name: str) -> str:
 def resolve(name: str, namespace: str, node_name: str) -> str:
     """Resolve a graph name for a node named `node_name` in `namespace` (no remapping)."""
     if name.startswith("~"):
-        return join(node_name, name[1:])
+        return join(node_name, name[1:].lstrip("/"))
     return join(namespace, name)
 
 

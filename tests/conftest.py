@@ -37,6 +37,16 @@ def finding_keys(findings: list[Finding]) -> list[tuple[str, str, int, str]]:
                   for f in findings)
 
 
+@pytest.fixture(scope="session", autouse=True)
+def private_cache(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Every run (and the CLI subprocesses it starts) uses a fresh archlog cache folder."""
+    import os
+
+    folder = tmp_path_factory.mktemp("archlog-cache")
+    os.environ["ARCHLOG_CACHE_DIR"] = str(folder)
+    return folder
+
+
 @pytest.fixture(scope="session")
 def sarif_schema() -> dict:
     path = SHARED / "schemas" / "sarif-schema-2.1.0.json"

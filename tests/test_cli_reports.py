@@ -103,16 +103,16 @@ def test_bad_input_gives_diagnostics_in_every_format(tmp_path: Path, sarif_schem
     diags = {(d["file"], d["line"], d["code"]) for d in json.loads(json_out.stdout)["diagnostics"]}
     assert ("src/messy/launch/all.launch", 2, "launch-include") in diags
     assert ("src/messy/launch/all.launch", 3, "no-model") in diags
-    assert ("src/messy/scripts/old.py", 3, "python-syntax") in diags
+    assert ("src/messy/scripts/old.py", 3, "python2") in diags
     assert ("src/messy/src/missing.cpp", 1, "cpp-missing") in diags
     assert ("src/messy/launch/all.launch", 7, "launch-unresolved") in diags
     assert any(f == "src/messy/launch/bad.launch" and c == "launch-xml" for f, _l, c in diags)
     sarif = json.loads(archlog("check", tmp_path, "--launch", "messy/launch/all.launch", "--format", "sarif").stdout)
     jsonschema.validate(sarif, sarif_schema)
     notes = sarif["runs"][0]["invocations"][0]["toolExecutionNotifications"]
-    assert {n["descriptor"]["id"] for n in notes} >= {"launch-include", "no-model", "python-syntax", "cpp-missing"}
+    assert {n["descriptor"]["id"] for n in notes} >= {"launch-include", "no-model", "python2", "cpp-missing"}
     text = archlog("check", tmp_path, "--launch", "messy/launch/all.launch")
-    assert "Traceback" not in text.stdout + text.stderr and "python-syntax" in text.stdout
+    assert "Traceback" not in text.stdout + text.stderr and "python2" in text.stdout
 
 
 def test_text_report_shows_both_sides_with_source() -> None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cpp import extract_cpp
+from archlog.extract.cpp import CppEnvironment, extract_cpp
 from archlog.extract.python import extract_python
 from archlog.values import ParamRef, Unknown
 
@@ -95,7 +95,8 @@ def test_python2_is_repaired_and_garbage_is_a_diagnostic(tmp_path: Path) -> None
 def test_roscpp_handles_templates_callbacks_and_params(tmp_path: Path) -> None:
     (tmp_path / "relay.cpp").write_text(CPP)
     sink = DiagnosticSink()
-    s = extract_cpp([tmp_path / "relay.cpp"], "demo", "relay", [], lambda p: Path(p).name, sink)
+    s = extract_cpp([tmp_path / "relay.cpp"], "demo", "relay", CppEnvironment([]), {tmp_path / "relay.cpp": "relay.cpp"},
+                    sink)
     assert s.default_name == "relay" and sink.items == []
     got = {(k, n if isinstance(n, str) else type(n).__name__, t, h, line) for k, n, t, h, line in ports(s)}
     assert ("publisher", "out/text", "std_msgs/String", "", 9) in got
@@ -113,7 +114,8 @@ def test_cpp_that_does_not_compile_keeps_the_calls(tmp_path: Path) -> None:
         'int main(int c, char** v) { ros::init(c, v, "b"); ros::NodeHandle nh;\n'
         '  ros::Publisher p = nh.advertise<std_msgs::String>("chatter", 1);\n  undeclared_call(); }\n')
     sink = DiagnosticSink()
-    s = extract_cpp([tmp_path / "broken.cpp"], "demo", "b", [], lambda p: Path(p).name, sink)
+    s = extract_cpp([tmp_path / "broken.cpp"], "demo", "b", CppEnvironment([]), {tmp_path / "broken.cpp": "broken.cpp"},
+                    sink)
     assert [(d.file, d.code) for d in sink.items] == [("broken.cpp", "cpp-compile")]
     assert sink.items[0].line == 3
     assert [(p.kind, p.name, p.type) for p in s.ports] == [("publisher", "chatter", "std_msgs/String")]

@@ -57,9 +57,11 @@ _QOS_PRESETS = {
     "qos_profile_parameters": (("reliability", "reliable"), ("durability", "volatile"), ("depth", "1000")),
     "qos_profile_parameter_events": (("reliability", "reliable"), ("durability", "volatile"), ("depth", "1000")),
 }
+_QOS_DEFAULTS = (("reliability", "reliable"), ("durability", "volatile"))
 _QOS_KEYWORDS = {"history", "depth", "reliability", "durability", "deadline", "lifespan", "liveliness",
                  "liveliness_lease_duration"}
 _TF_MESSAGE = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage"}
+_RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "create_timer"}
 _PARAMETER_VALUES = {"value", "string_value", "integer_value", "double_value", "bool_value"}
 _KIND = {ast.AugAssign: "augmented assignment", ast.For: "loop variable", ast.With: "with target"}
 
@@ -88,8 +90,19 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
         lost = [n for n in dropped if _ROS_WORDS.search(lines[n - 1])]
         if lost:
             summary.incomplete = f"{shown}:{lost[0]}: a line with ROS calls could not be read"
-    _Extractor(summary, shown, tree).run()
+    extractor = _Extractor(summary, shown, tree)
+    extractor.run()
+    for line, message in extractor.notes:
+        diagnostics.add(shown, line, "python-several-nodes", message, "note")
+    summary.ports = _without_untyped_duplicates(summary.ports)
     return summary
+
+
+def _without_untyped_duplicates(ports: list[Port]) -> list[Port]:
+    """wait_for_service(name) next to ServiceProxy(name, Type) is one client, with its type."""
+    typed = {(p.kind, p.name) for p in ports if p.kind == "service_client" and not isinstance(p.type, Unknown)
+             and isinstance(p.name, str)}
+    return [p for p in ports if not (isinstance(p.type, Unknown) and (p.kind, p.name) in typed)]
 
 
 # -- Python 2 and broken sources ----------------------------------------------------------
@@ -163,6 +176,7 @@ class _Extractor:
         self.functions: dict[tuple[str | None, str], _Function] = {}
         self.calls: dict[tuple[str | None, str], list[tuple[ast.Call, bool]]] = {}
         self.declared: dict[str, ast.expr] = {}
+        self.notes: list[tuple[int, str]] = []
         self.scope: _Function | None = None
 
     def run(self) -> None:
@@ -452,17 +466,15 @@ class _Extractor:
                 self.summary.namespace = self.value(namespace)
 
     def is_rclpy_call(self, call: ast.Call) -> bool:
-        """A method call on an rclpy Node: `self` in a Node subclass, or a variable holding a node."""
+        """A method call on an rclpy Node: `self` in a Node subclass, or any object of a module
+        that uses rclpy when the method is one only rclpy nodes have (create_publisher, ...)."""
         target = call.func.value  # type: ignore[union-attr]
-        if isinstance(target, ast.Name) and target.id == "self":
-            return self.scope is not None and self.is_rclpy_node_class(self.scope.cls)
-        if isinstance(target, ast.Name):
-            for exprs in (self.module_assigns.get(target.id, []),
-                          self.scope.assigns.get(target.id, []) if self.scope else []):
-                if any(isinstance(e, ast.Call) and self.qualified(e.func) in ("rclpy.create_node", "rclpy.node.Node")
-                       for e in exprs):
-                    return True
-        return False
+        if isinstance(target, ast.Name) and target.id == "self" and self.scope is not None and \
+                self.is_rclpy_node_class(self.scope.cls):
+            return True
+        method = call.func.attr  # type: ignore[union-attr]
+        uses_rclpy = any(v == "rclpy" or v.startswith("rclpy.") for v in self.aliases.values())
+        return uses_rclpy and method in _RCLPY_ONLY
 
     def rclpy_call(self, call: ast.Call, method: str) -> None:
         if method in _RCLPY_METHODS:
@@ -493,7 +505,7 @@ class _Extractor:
         if expr is None:
             return ()
         if isinstance(expr, ast.Constant) and isinstance(expr.value, int):
-            return (("history", "keep_last"), ("depth", str(expr.value)))
+            return (("history", "keep_last"), ("depth", str(expr.value)), *_QOS_DEFAULTS)
         name = self.qualified(expr)
         if name and name.rsplit(".", 1)[-1] in _QOS_PRESETS:
             return (("profile", name.rsplit(".", 1)[-1]), *_QOS_PRESETS[name.rsplit(".", 1)[-1]])
@@ -508,7 +520,9 @@ class _Extractor:
                     text = ast.unparse(kw.value).rsplit(".", 1)[-1].lower()
                     text = text.removeprefix("reliability_").removeprefix("durability_").removeprefix("history_")
                     found.append((kw.arg, text))
-            return tuple(found)
+            given = {policy for policy, _v in found}
+            implied = [("history", "keep_last")] if "depth" in given and "history" not in given else []
+            return tuple(found + implied + [d for d in _QOS_DEFAULTS if d[0] not in given])
         return (("profile", f"?({ast.unparse(expr)})"),)
 
     def period(self, expr: ast.expr | None, func: str) -> Value:
@@ -526,6 +540,9 @@ class _Extractor:
         return value
 
     def set_name(self, call: ast.Call, name: Value) -> None:
+        if self.summary.default_name is not None and self.summary.default_name != name:
+            self.notes.append((call.lineno, f"this file creates several nodes ({self.summary.default_name}, {name}); "
+                                            "archlog reads them as one node named after the last"))
         self.summary.default_name = name
         self.summary.name_file, self.summary.name_line = self.file, call.lineno
 

@@ -99,7 +99,7 @@ def _resolve(name: Value, handle_ns: Value, node: LaunchNode, config: LaunchConf
     if isinstance(raw, Unknown):
         return raw
     if raw.startswith("~"):
-        resolved = names.join(node.name, raw[1:])
+        resolved = names.join(node.name, raw[1:].lstrip("/"))
     elif raw.startswith("/"):
         resolved = names.canonical(raw)
     else:

@@ -1,0 +1,465 @@
+"""The roscpp walker: NodeHandles and their API calls, ROS libraries built on them, and values.
+
+Recognised APIs are tables below, keyed by the callee's qualified class. Values are folded from
+string literals, constants, std::string `+`, parameters read with defaults, and function
+parameters whose call sites in the file agree (a per-function summary). When a file does not
+compile, calls the AST lost are read from the tokens.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import clang.cindex as ci
+
+from archlog import names
+from archlog.diagnostics import Diagnostic
+from archlog.extract.summary import Port
+from archlog.values import ParamRef, Unknown, Value, concat
+
+K = ci.CursorKind
+_SKIP = (K.TYPE_REF, K.NAMESPACE_REF, K.TEMPLATE_REF)
+
+NODE_HANDLE = "ros::NodeHandle"
+IMAGE_TRANSPORT = "image_transport::ImageTransport"
+HANDLE_TYPES = (NODE_HANDLE, IMAGE_TRANSPORT)
+# (class, method) -> port kind
+METHODS = {
+    (NODE_HANDLE, "advertise"): "publisher", (NODE_HANDLE, "subscribe"): "subscriber",
+    (NODE_HANDLE, "advertiseService"): "service_server", (NODE_HANDLE, "serviceClient"): "service_client",
+    (IMAGE_TRANSPORT, "advertise"): "publisher", (IMAGE_TRANSPORT, "subscribe"): "subscriber",
+    (IMAGE_TRANSPORT, "advertiseCamera"): "publisher", (IMAGE_TRANSPORT, "subscribeCamera"): "subscriber",
+    ("message_filters::Subscriber", "subscribe"): "subscriber",
+}
+PARAM_READS = {"param", "getParam", "getParamCached", "hasParam", "searchParam", "get", "getCached", "has", "search"}
+PARAM_WRITES = {"setParam", "deleteParam", "set", "del"}
+TIMERS = {"createTimer", "createWallTimer", "createSteadyTimer"}
+# constructed objects that are ports: class -> (kind, fixed name or None, index of the name argument)
+CONSTRUCTED = {
+    "message_filters::Subscriber": [("subscriber", None, 1)],
+    "actionlib::SimpleActionServer": [("action_server", None, 1)],
+    "actionlib::ActionServer": [("action_server", None, 1)],
+    "actionlib::SimpleActionClient": [("action_client", None, 1)],
+    "actionlib::ActionClient": [("action_client", None, 1)],
+    "tf::TransformBroadcaster": [("publisher", "/tf", None)],
+    "tf2_ros::TransformBroadcaster": [("publisher", "/tf", None)],
+    "tf2_ros::StaticTransformBroadcaster": [("publisher", "/tf_static", None)],
+    "tf::TransformListener": [("subscriber", "/tf", None), ("subscriber", "/tf_static", None)],
+    "tf2_ros::TransformListener": [("subscriber", "/tf", None), ("subscriber", "/tf_static", None)],
+    "diagnostic_updater::Updater": [("publisher", "/diagnostics", None)],
+    "dynamic_reconfigure::Server": [("service_server", "set_parameters", None),
+                                    ("publisher", "parameter_descriptions", None),
+                                    ("publisher", "parameter_updates", None)],
+}
+FIXED_TYPES = {
+    "/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage", "/diagnostics": "diagnostic_msgs/DiagnosticArray",
+    "set_parameters": "dynamic_reconfigure/Reconfigure", "parameter_descriptions": "dynamic_reconfigure/ConfigDescription",
+    "parameter_updates": "dynamic_reconfigure/Config",
+}
+_MSG_TYPE = re.compile(r"\b(\w+)::(\w+?)(?:Request|Response)?_<")
+_PLAIN_TYPE = re.compile(r"\b(?!std\b|boost\b|ros\b|message_filters\b|actionlib\b)(\w+)::(\w+?)"
+                         r"(?:Request|Response)?(?:::(?:Const)?Ptr|ConstPtr)?\b")
+_FALLBACK = re.compile(r"(\w+)\s*(?:\.|->)\s*(advertise|subscribe|advertiseService|serviceClient)\s*"
+                       r"(?:<\s*([\w:\s]+?)\s*>)?\s*\(\s*(\"(?:[^\"\\]|\\.)*\"|\w+)")
+
+
+@dataclass
+class FileResult:
+    """What one C++ file contributes to its executable's summary."""
+
+    ports: list[Port] = field(default_factory=list)
+    default_name: Value | None = None
+    anonymous: bool = False
+    name_file: str = ""
+    name_line: int = 0
+    incomplete: str | None = None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    fallback_lines: list[int] = field(default_factory=list)
+
+
+def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool) -> FileResult:
+    walker = _Walker(source, shown)
+    walker.walk(tu.cursor)
+    if incomplete_ast:
+        walker.token_fallback(tu)
+    return walker.result
+
+
+def qualified(cursor: ci.Cursor | None) -> str:
+    """ns::Class of a declaration (template specialisations reduced to the template's name)."""
+    parts = []
+    while cursor is not None and cursor.kind != K.TRANSLATION_UNIT:
+        if cursor.spelling:
+            parts.append(cursor.spelling)
+        cursor = cursor.semantic_parent
+    return "::".join(reversed(parts))
+
+
+class _Walker:
+    def __init__(self, source: Path, shown: str) -> None:
+        self.source, self.file = str(source), shown
+        self.result = FileResult()
+        self.handles: dict[tuple, Value] = {}
+        self.param_vars: dict[tuple, Value] = {}
+        self.call_sites: dict[tuple, list[ci.Cursor]] = {}
+
+    @staticmethod
+    def key(decl: ci.Cursor | None) -> tuple | None:
+        if decl is None or decl.location.file is None:
+            return None
+        return (decl.location.file.name, decl.location.line, decl.location.column)
+
+    def in_main(self, cursor: ci.Cursor) -> bool:
+        loc = cursor.location
+        return loc.file is not None and loc.file.name == self.source
+
+    def unknown(self, cursor: ci.Cursor, why: str = "") -> Unknown:
+        text = " ".join(t.spelling for t in cursor.get_tokens())[:120] or cursor.spelling
+        return Unknown(text + (f" ({why})" if why else ""), self.file, cursor.location.line)
+
+    # -- traversal ------------------------------------------------------------------------
+    def walk(self, root: ci.Cursor) -> None:
+        cursors = [c for top in root.get_children() if self.in_main(top) for c in top.walk_preorder()
+                   if self.in_main(c)]
+        for cursor in cursors:
+            if cursor.kind == K.CALL_EXPR and cursor.referenced is not None:
+                self.call_sites.setdefault(self.key(cursor.referenced), []).append(cursor)
+        for cursor in cursors:
+            if cursor.kind == K.CONSTRUCTOR:
+                self.member_inits(cursor)
+        for cursor in cursors:
+            if cursor.kind == K.CALL_EXPR:
+                self.call(cursor)
+
+    def handle_ns(self, decl: ci.Cursor) -> Value:
+        ctor = next((c for c in decl.get_children() if c.kind in (K.CALL_EXPR, K.UNEXPOSED_EXPR)), None)
+        return self.ctor_ns(ctor) if ctor is not None else ""
+
+    def ctor_ns(self, ctor: ci.Cursor) -> Value:
+        """The namespace of a NodeHandle (or ImageTransport) built by this constructor call."""
+        while ctor.kind == K.UNEXPOSED_EXPR and len(list(ctor.get_children())) == 1:
+            ctor = next(ctor.get_children())
+        args = _written_args(ctor) if ctor.kind == K.CALL_EXPR else []
+        if not args:
+            return ""
+        first_is_handle = _is_handle_type(args[0].type)
+        parent = self.handle_of(args[0]) if first_is_handle else ""
+        if first_is_handle and len(args) == 1:
+            return parent
+        ns = self.value(args[1] if first_is_handle else args[0])
+        if not isinstance(ns, str) or not isinstance(parent, str):
+            return concat(parent, "/", ns) if parent else ns
+        if ns.startswith("/") or not parent:
+            return ns
+        return f"~{ns}" if parent == "~" else names.canonical(f"{parent}/{ns}")
+
+    def member_inits(self, ctor: ci.Cursor) -> None:
+        children = list(ctor.get_children())
+        for member, init in zip(children, children[1:]):
+            if member.kind == K.MEMBER_REF and _is_handle_type(member.type):
+                self.handles[self.key(member.referenced)] = self.ctor_ns(init)
+
+    def handle_of(self, expr: ci.Cursor, depth: int = 0) -> Value:
+        """The namespace of the NodeHandle an expression refers to."""
+        for cursor in expr.walk_preorder():
+            if cursor.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) and _is_handle_type(cursor.type):
+                decl = cursor.referenced
+                key = self.key(decl)
+                if key not in self.handles and decl is not None and decl.kind == K.VAR_DECL:
+                    self.handles[key] = self.handle_ns(decl)
+                if key in self.handles:
+                    return self.handles[key]
+                if decl is not None and decl.kind == K.FIELD_DECL:
+                    return ""
+                if decl is not None and decl.kind == K.PARM_DECL and depth < 4:
+                    return self.from_call_sites(decl, expr, lambda arg: self.handle_of(arg, depth + 1), "NodeHandle")
+                break
+            if cursor.kind == K.CALL_EXPR and _is_handle_type(cursor.type) and cursor.spelling in ("NodeHandle",
+                                                                                                  "ImageTransport"):
+                return self.ctor_ns(cursor)
+        return self.unknown(expr, "NodeHandle of unknown origin")
+
+    def from_call_sites(self, param: ci.Cursor, expr: ci.Cursor, evaluate, what: str) -> Value:
+        """The value all call sites in this file agree on for a parameter (a function summary)."""
+        function = param.semantic_parent
+        params = [p.spelling for p in function.get_arguments()] if function is not None else []
+        index = params.index(param.spelling) if param.spelling in params else -1
+        sites = self.call_sites.get(self.key(function), []) if index >= 0 else []
+        found = {evaluate(args[index]) for site in sites if len(args := _written_args(site)) > index}
+        if len(found) == 1:
+            return next(iter(found))
+        why = f"no call site passes this {what}" if not found else f"call sites pass different values for {what}"
+        return self.unknown(expr, why)
+
+    # -- values ---------------------------------------------------------------------------
+    def value(self, expr: ci.Cursor, depth: int = 0) -> Value:
+        kind = expr.kind
+        if depth > 12:
+            return self.unknown(expr)
+        if kind == K.STRING_LITERAL:
+            return _unquote(expr.spelling)
+        if kind in (K.INTEGER_LITERAL, K.FLOATING_LITERAL, K.CXX_BOOL_LITERAL_EXPR):
+            return "".join(t.spelling for t in expr.get_tokens())
+        if kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR):
+            return self.variable(expr, depth)
+        if kind == K.CALL_EXPR:
+            return self.call_value(expr, depth)
+        if kind == K.CONDITIONAL_OPERATOR:
+            *_cond, then, other = [c for c in expr.get_children()]
+            a, b = self.value(then, depth + 1), self.value(other, depth + 1)
+            return a if a == b else self.unknown(expr, "one of several values")
+        children = [c for c in expr.get_children() if c.kind not in _SKIP]
+        if kind in (K.UNEXPOSED_EXPR, K.PAREN_EXPR, K.CXX_FUNCTIONAL_CAST_EXPR, K.CSTYLE_CAST_EXPR,
+                    K.CXX_STATIC_CAST_EXPR) and len(children) == 1:
+            return self.value(children[0], depth + 1)
+        return self.unknown(expr)
+
+    def variable(self, expr: ci.Cursor, depth: int) -> Value:
+        decl = expr.referenced
+        key = self.key(decl)
+        if key in self.param_vars:
+            return self.param_vars[key]
+        if decl is None:
+            return self.unknown(expr)
+        if decl.kind == K.PARM_DECL:
+            return self.from_call_sites(decl, expr, lambda arg: self.value(arg, depth + 1), decl.spelling)
+        if decl.kind in (K.VAR_DECL, K.FIELD_DECL):
+            init = [c for c in decl.get_children() if c.kind not in _SKIP]
+            if init and (decl.type.is_const_qualified() or _single_assignment(decl)):
+                return self.value(init[-1], depth + 1)
+        return self.unknown(expr)
+
+    def call_value(self, expr: ci.Cursor, depth: int) -> Value:
+        name, owner = expr.spelling, qualified(expr.referenced.semantic_parent) if expr.referenced else ""
+        args = _written_args(expr)
+        if name == "operator+" and len(args) == 2:
+            return concat(self.value(args[0], depth + 1), self.value(args[1], depth + 1))
+        if owner == "ros::names" and name == "append" and len(args) == 2:
+            return concat(self.value(args[0], depth + 1), "/", self.value(args[1], depth + 1))
+        if owner in ("ros::names", "") and name in ("resolve", "clean") and args:
+            return self.value(args[-1] if name == "resolve" else args[0], depth + 1)
+        if owner == "ros::this_node" and name == "getName":
+            return "~"
+        if owner == "ros::this_node" and name == "getNamespace":
+            return ""
+        if owner == NODE_HANDLE and name in ("resolveName", "getNamespace"):
+            return self.handle_of(next(expr.get_children())) if name == "getNamespace" else self.value(args[0], depth + 1)
+        if name in ("basic_string", "string", "c_str", "str") or (name == "" and len(args) == 1):
+            inner = args or [c for c in expr.get_children() if c.kind not in _SKIP]
+            if len(inner) == 1:
+                return self.value(inner[0], depth + 1)
+        children = [c for c in expr.get_children() if c.kind not in _SKIP]
+        if len(children) == 1 and not args:
+            return self.value(children[0], depth + 1)
+        return self.unknown(expr)
+
+    # -- API calls ------------------------------------------------------------------------
+    def call(self, call: ci.Cursor) -> None:
+        ref = call.referenced
+        if ref is None:
+            return
+        name, args = call.spelling, _written_args(call)
+        owner = qualified(ref.semantic_parent)
+        if ref.kind == K.CONSTRUCTOR and owner in CONSTRUCTED:
+            self.constructed(call, owner, args)
+        elif owner in ("ros::Rate", "ros::WallRate") and ref.kind == K.CONSTRUCTOR and args:
+            hz = self.value(args[0])
+            self.add("timer", call, _period(hz) if isinstance(hz, str) else hz, "", "")
+        elif owner == "ros" and name == "init" and len(args) >= 3:
+            self.result.default_name = self.value(args[2])
+            self.result.name_file, self.result.name_line = self.file, call.location.line
+            self.result.anonymous = len(args) > 3 and "AnonymousName" in " ".join(
+                t.spelling for t in args[3].get_tokens())
+        elif (owner, name) in METHODS and args:
+            self.method(call, ref, owner, name, args)
+        elif owner == NODE_HANDLE and args and name in PARAM_READS | PARAM_WRITES:
+            self.param(call, args, self.handle_of(next(call.get_children())), name)
+        elif owner == "ros::param" and args and name in PARAM_READS | PARAM_WRITES | {"param"}:
+            self.param(call, args, "", name)
+        elif owner == NODE_HANDLE and name in TIMERS and args:
+            self.add("timer", call, self.duration(args[0]), "", self.handle_of(next(call.get_children())))
+        elif owner == "ros::service" and name in ("call", "waitForService", "exists") and args:
+            type_ = (_ros_type(args[1].type) if len(args) > 1 and name == "call" else None) or \
+                self.unknown(call, "service type not given")
+            self.add("service_client", call, self.value(args[0]), type_, "")
+
+    def method(self, call: ci.Cursor, ref: ci.Cursor, owner: str, name: str, args: list[ci.Cursor]) -> None:
+        kind = METHODS[(owner, name)]
+        if owner == "message_filters::Subscriber":
+            type_ = _ros_type(call.referenced.semantic_parent.type) or _template_arg_type(call) or \
+                self.unknown(call, "message type not resolved")
+            self.add(kind, call, self.value(args[1]) if len(args) > 1 else self.unknown(call), type_,
+                     self.handle_of(args[0]))
+            return
+        handle = self.handle_of(next(call.get_children()))
+        topic = self.value(args[0])
+        if owner == IMAGE_TRANSPORT:
+            self.add(kind, call, topic, "sensor_msgs/Image", handle)
+            if name.endswith("Camera"):
+                self.add(kind, call, _camera_info(topic), "sensor_msgs/CameraInfo", handle)
+            return
+        self.add(kind, call, topic, self.port_type(call, args, name), handle)
+
+    def constructed(self, call: ci.Cursor, owner: str, args: list[ci.Cursor]) -> None:
+        """Library objects whose construction creates ports (tf, actionlib, message_filters...)."""
+        has_handle = bool(args) and _is_handle_type(args[0].type)
+        handle = self.handle_of(args[0]) if has_handle else ("~" if owner == "dynamic_reconfigure::Server" else "")
+        type_ = _ros_type(call.type) or self.unknown(call, "type not resolved")
+        for kind, fixed, index in CONSTRUCTED[owner]:
+            if fixed is not None:
+                self.add(kind, call, fixed, FIXED_TYPES[fixed], handle)
+                continue
+            position = index if has_handle else index - 1
+            if position >= len(args):
+                return  # default-constructed: ports come from a later subscribe()/start()
+            self.add(kind, call, self.value(args[position]), type_, handle)
+
+    def param(self, call: ci.Cursor, args: list[ci.Cursor], handle: Value, method: str) -> None:
+        pname = self.value(args[0])
+        if method in PARAM_WRITES:
+            value = self.value(args[1]) if len(args) > 1 and method in ("setParam", "set") else "delete"
+            self.add("param_write", call, pname, "", handle, value)
+            return
+        has_default = len(args) > 2 or (method == "param" and len(args) == 2 and _is_rvalue(args[1]))
+        default = self.value(args[-1]) if has_default else None
+        self.add("param_read", call, pname, "", handle, default)
+        if len(args) > 1 and isinstance(pname, str) and not (has_default and len(args) == 2):
+            target = next((c for c in args[1].walk_preorder() if c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)), None)
+            key = self.key(target.referenced) if target is not None else None
+            if key is not None:
+                fallback = default if default is not None else self.unknown(call, "parameter without default")
+                self.param_vars[key] = ParamRef(pname, fallback, handle, self.file, call.location.line)
+
+    def duration(self, expr: ci.Cursor) -> Value:
+        """Seconds of a ros::Duration(x) / ros::Rate(hz) argument."""
+        for cursor in expr.walk_preorder():
+            if cursor.kind == K.CALL_EXPR and cursor.spelling in ("Duration", "WallDuration", "Rate", "WallRate"):
+                args = _written_args(cursor)
+                if args:
+                    value = self.value(args[0])
+                    return _period(value) if "Rate" in cursor.spelling and isinstance(value, str) else value
+        return self.unknown(expr, "timer period not resolved")
+
+    def port_type(self, call: ci.Cursor, args: list[ci.Cursor], name: str) -> Value:
+        template_arg = _template_arg_type(call)
+        if template_arg and name != "subscribe":
+            return template_arg
+        if name in ("subscribe", "advertiseService"):
+            for arg in args[1:]:
+                for cursor in arg.walk_preorder():
+                    target = cursor.referenced if cursor.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) else None
+                    if target is not None and target.kind in (K.FUNCTION_DECL, K.CXX_METHOD):
+                        params = list(target.get_arguments())
+                        if params and (found := _ros_type(params[0].type)):
+                            return found
+                    if cursor.kind == K.LAMBDA_EXPR:
+                        params = [c for c in cursor.get_children() if c.kind == K.PARM_DECL]
+                        if params and (found := _ros_type(params[0].type)):
+                            return found
+        return template_arg or self.unknown(call, "message type not resolved")
+
+    def add(self, kind: str, call: ci.Cursor, name: Value, type_: Value, handle: Value,
+            default: Value | None = None) -> None:
+        loc = call.location
+        self.result.ports.append(Port(kind, name, type_, self.file, loc.line, loc.column, handle, default))
+
+    # -- when the AST is incomplete -------------------------------------------------------------
+    def token_fallback(self, tu: ci.TranslationUnit) -> None:
+        """Read NodeHandle calls from the text of lines where the AST produced no port."""
+        covered = {p.line for p in self.result.ports}
+        text = Path(self.source).read_text(errors="replace")
+        handles = {m.group(1): _unquote(m.group(2)) if m.group(2) else ""
+                   for m in re.finditer(r"NodeHandle\s+(\w+)\s*(?:\(\s*(\"[^\"]*\")\s*\))?", text)}
+        for match in _FALLBACK.finditer(text):
+            line = text.count("\n", 0, match.start()) + 1
+            if line in covered:
+                continue
+            obj, method, template, first = match.groups()
+            kind = METHODS.get((NODE_HANDLE, method))
+            name: Value = _unquote(first) if first.startswith('"') else \
+                Unknown(f"{first} (read from tokens)", self.file, line)
+            handle: Value = handles[obj] if obj in handles else Unknown(f"{obj} (read from tokens)", self.file, line)
+            type_: Value = _type_from_spelling(template) if template else \
+                Unknown(f"{obj}.{method} (type not readable without the AST)", self.file, line)
+            self.result.ports.append(Port(kind, name, type_, self.file, line, 0, handle))
+            self.result.fallback_lines.append(line)
+
+
+def _is_handle_type(type_: ci.Type) -> bool:
+    spelling = type_.spelling
+    return "NodeHandle" in spelling or "ImageTransport" in spelling
+
+
+def _template_arg_type(call: ci.Cursor) -> str | None:
+    callee = next(call.get_children(), None)
+    if callee is None:
+        return None
+    return next((t for c in callee.get_children() if c.kind == K.TYPE_REF and (t := _ros_type(c.type))), None)
+
+
+def _ros_type(type_: ci.Type) -> str | None:
+    """'sensor_msgs/LaserScan' from a C++ type such as const sensor_msgs::LaserScan::ConstPtr&."""
+    canonical = type_.get_canonical().spelling
+    match = _MSG_TYPE.search(canonical)
+    if match:
+        return _action_base(f"{match.group(1)}/{match.group(2)}")
+    return _type_from_spelling(canonical) or _type_from_spelling(type_.spelling)
+
+
+def _type_from_spelling(spelling: str) -> str | None:
+    inner = spelling.replace("const ", "")
+    if "<" in inner:
+        inner = inner[inner.index("<") + 1:]
+    match = _PLAIN_TYPE.search(inner)
+    return _action_base(f"{match.group(1)}/{match.group(2)}") if match else None
+
+
+def _action_base(type_name: str) -> str:
+    """An action's messages are named after it: pkg/FooAction -> pkg/Foo."""
+    return type_name[: -len("Action")] if type_name.endswith("Action") else type_name
+
+
+def _camera_info(topic: Value) -> Value:
+    """image_transport's camera_info topic: a sibling of the image topic."""
+    if isinstance(topic, str):
+        parent = topic.rsplit("/", 1)[0] if "/" in topic.strip("/") else ("/" if topic.startswith("/") else "")
+        return f"{parent}/camera_info" if parent not in ("", "/") else f"{parent}camera_info"
+    return concat(topic, "/../camera_info")
+
+
+def _period(hz: str) -> str:
+    try:
+        return repr(1 / float(hz))
+    except (ValueError, ZeroDivisionError):
+        return f"1/{hz}"
+
+
+def _is_rvalue(expr: ci.Cursor) -> bool:
+    """A literal or temporary, not a variable the parameter could be stored into."""
+    return not any(c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) for c in expr.walk_preorder())
+
+
+def _written_args(call: ci.Cursor) -> list[ci.Cursor]:
+    """The call's arguments as written (default arguments have no location)."""
+    return [a for a in call.get_arguments() if a.location.file is not None]
+
+
+def _unquote(literal: str) -> str:
+    body = literal[literal.index('"') + 1: literal.rindex('"')] if '"' in literal else literal
+    return body.encode("utf-8").decode("unicode_escape", errors="replace") if "\\" in body else body
+
+
+def _single_assignment(decl: ci.Cursor) -> bool:
+    """A variable that is initialised and never assigned again in its scope."""
+    scope = decl.semantic_parent
+    if scope is None:
+        return False
+    for cursor in scope.walk_preorder():
+        if cursor.kind in (K.BINARY_OPERATOR, K.CALL_EXPR, K.COMPOUND_ASSIGNMENT_OPERATOR) and \
+                cursor.spelling in ("operator=", "operator+=", "=", "+="):
+            refs = [c for c in cursor.walk_preorder() if c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)]
+            if refs and refs[0].referenced == decl:
+                return False
+    return True
