@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
@@ -11,7 +11,7 @@ from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace import Workspace
 from archlog.facts.similarity import near_pairs
 from archlog.facts.store import FactStore
-from archlog.values import Concat, ParamRef, Unknown, Value
+from archlog.values import Concat, ParamRef, Unknown, Value, concat
 
 NAMED_PORTS = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 
@@ -73,7 +73,7 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         store.add("remap", elem.id, node.name, names.resolve(src, node.namespace, node.name),
                   names.resolve(dst, node.namespace, node.name))
         store.locate(elem.id, elem.file, elem.line)
-    for port in summary.ports:
+    for port in [q for p in summary.ports for q in [p, *action_topics(p)]]:
         pid = store.new_id("p")
         store.locate(pid, port.file, port.line, port.column)
         for policy, value in port.qos:
@@ -90,6 +90,29 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         else:
             store.add(port.kind, pid, node.name, after, _bind(port.type, node, config))
         store.add("port_source_name", pid, before)
+
+
+# actionlib (ROS 1): the topics under an action's namespace, as seen from the server
+_ACTION_TOPICS = (("goal", "subscriber", "ActionGoal"), ("cancel", "subscriber", "actionlib_msgs/GoalID"),
+                  ("status", "publisher", "actionlib_msgs/GoalStatusArray"),
+                  ("feedback", "publisher", "ActionFeedback"), ("result", "publisher", "ActionResult"))
+_FLIP = {"subscriber": "publisher", "publisher": "subscriber"}
+
+
+def action_topics(port: Port) -> list[Port]:
+    """The five topics of a ROS 1 action server or client (ROS 2 actions are not topics)."""
+    if port.kind not in ("action_server", "action_client") or \
+            (isinstance(port.type, str) and "/action/" in port.type):
+        return []
+    topics = []
+    for suffix, kind, message in _ACTION_TOPICS:
+        if "/" in message:
+            type_: Value = message
+        else:
+            type_ = port.type + message if isinstance(port.type, str) else port.type
+        kind = kind if port.kind == "action_server" else _FLIP[kind]
+        topics.append(replace(port, kind=kind, name=concat(port.name, "/" + suffix), type=type_))
+    return topics
 
 
 def _resolve(name: Value, handle_ns: Value, node: LaunchNode, config: LaunchConfig,
