@@ -55,7 +55,7 @@ def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models
 
     clock = time.perf_counter()
     builtin, user, externals = _models(models, workspace, diagnostics)
-    wanted = {(n.pkg, n.type) for n in config.nodes} if config else None
+    wanted = {n.kind for n in config.nodes} if config else None
     summaries = dict(builtin)
     summaries.update(_extract(workspace, wanted, diagnostics))
     summaries.update(user)
@@ -109,7 +109,7 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
                     [d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
                     generated_headers(workspace, diagnostics))
                 shown = {s: workspace.display(s) for s in exe.sources}
-                cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, env))
+                cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, env, exe.cls))
     for job, result in _run_isolated(cpp_jobs):
         if result is None:
             diagnostics.add(next(iter(job.shown.values()), job.package), 1, "cpp-crash",
@@ -130,10 +130,11 @@ class _CppJob:
     package: str
     executable: str
     env: CppEnvironment
+    cls: str | None = None
 
     def __call__(self) -> tuple[NodeSummary, list]:
         sink = DiagnosticSink()
-        summary = extract_cpp(self.sources, self.package, self.executable, self.env, self.shown, sink)
+        summary = extract_cpp(self.sources, self.package, self.executable, self.env, self.shown, sink, self.cls)
         return summary, sink.items
 
 

@@ -48,7 +48,8 @@ def main() -> None:
             ports += [p for p in summary.ports if p.kind != "timer"]
     from python_bench import known  # same definition of "resolved" as for Python
 
-    resolved = [p for p in ports if known(p.name) and known(p.handle_ns) and (p.kind.startswith("param") or known(p.type))]
+    resolved = [p for p in ports if known(p.name) and (known(p.handle_ns) or str(p.name).startswith(("/", "~")))
+                and (p.kind.startswith("param") or known(p.type))]
     print(f"{len(jobs)} translation units: cold median {statistics.median(cold):.3f} s (max {max(cold):.3f}), "
           f"warm median {statistics.median(warm) * 1000:.1f} ms")
     print(f"{len(ports)} API calls, {len(resolved)} fully resolved ({100 * len(resolved) / max(len(ports), 1):.1f}%)")

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import glob
 import json
+import re
 import shutil
 import subprocess
 import tempfile
@@ -22,9 +23,11 @@ import clang.cindex as ci
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cache import ResultCache, cache_dir, key
 from archlog.extract.cpp_walk import FileResult, walk
+from archlog.extract.stub_headers import stub_dir
 from archlog.extract.summary import NodeSummary
 
 _KEEP_GOING = 0x200
+_NOT_FOUND = re.compile(r"'([^']+)' file not found")
 _HEADER_SUFFIXES = {".h", ".hh", ".hpp", ".hxx", ".cuh"}
 
 
@@ -51,7 +54,7 @@ class CppEnvironment:
     fingerprint: str = ""
 
     def __post_init__(self) -> None:
-        system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"]
+        system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots()
         includes = [str(p) for p in self.workspace_includes if p.is_dir()]
         includes += [str(self.generated)] if self.generated else []
         self.args = ["-x", "c++", "-std=c++17", "-Wno-everything", *(f"-I{d}" for d in includes + system)]
@@ -66,8 +69,9 @@ class CppEnvironment:
 
 
 def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvironment,
-                shown: dict[Path, str], diagnostics: DiagnosticSink) -> NodeSummary:
-    """The summary of one executable: every source file read (from the cache when unchanged)."""
+                shown: dict[Path, str], diagnostics: DiagnosticSink, cls: str | None = None) -> NodeSummary:
+    """The summary of one executable (or of one nodelet class): every source file read, from the
+    cache when unchanged."""
     summary = NodeSummary(package, executable, "cpp")
     cache = ResultCache("cpp")
     index: ci.Index | None = None
@@ -77,22 +81,25 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             diagnostics.add(name, 1, "cpp-missing", "source file listed in CMakeLists.txt does not exist", "error")
             summary.incomplete = summary.incomplete or f"{name}: missing"
             continue
-        cache_key = key(env.fingerprint, name, source.read_bytes())
+        cache_key = key(env.fingerprint, name, cls or "", source.read_bytes())
         result = cache.get(cache_key)
-        if not isinstance(result, FileResult):
+        if not isinstance(result, FileResult) or not _still_valid(result, env):
             index = index or ci.Index.create()
-            result = _parse(index, source, name, env)
+            result = _parse(index, source, name, env, cls)
             cache.put(cache_key, result)
         _merge(summary, result, diagnostics)
     return summary
 
 
-def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment) -> FileResult:
+def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
     try:
-        try:
-            tu = index.parse(str(source), args=env.parse_args(), options=_KEEP_GOING)
-        except ci.TranslationUnitLoadError:
-            tu = index.parse(str(source), args=env.args, options=_KEEP_GOING)  # without the PCH
+        stubs = stub_dir(_unresolved_includes(source, env))
+        extra = [f"-I{stubs}"] if stubs else []
+        tu = _load(index, source, env.parse_args() + extra, env.args + extra)
+        missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
+        more = stub_dir(missing) if missing else None
+        if more is not None and not extra:  # found only while parsing (included by a header): again
+            tu = _load(index, source, env.parse_args() + [f"-I{more}"], env.args + [f"-I{more}"])
     except ci.TranslationUnitLoadError as exc:
         result = FileResult()
         result.diagnostics.append(Diagnostic(shown, 1, "cpp-parse", f"libclang could not parse this file: {exc}",
@@ -101,7 +108,9 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment) -> Fi
         return result
     errors = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error and d.location.file
               and Path(d.location.file.name) == source]
-    result = walk(tu, source, shown, incomplete_ast=bool(errors))
+    result = walk(tu, source, shown, incomplete_ast=bool(errors), cls=cls)
+    result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
+    result.missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
     if errors:
         first = errors[0]
         result.diagnostics.append(Diagnostic(shown, first.location.line, "cpp-compile",
@@ -110,6 +119,45 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment) -> Fi
         if result.fallback_lines:
             result.incomplete = f"{shown}:{first.location.line}: does not compile"
     return result
+
+
+@lru_cache(maxsize=1)
+def _nested_include_roots() -> list[str]:
+    """Debian puts some ROS headers one level down (/usr/include/pluginlib/pluginlib/...); their
+    pkg-config files add /usr/include/<name>, and so does archlog."""
+    return sorted(str(d) for d in Path("/usr/include").glob("*") if (d / d.name).is_dir())
+
+
+_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
+
+
+def _unresolved_includes(source: Path, env: CppEnvironment) -> list[str]:
+    """The file's own #includes that no include folder (nor the file's folder) has."""
+    folders = [source.parent] + [Path(a[2:]) for a in env.args if a.startswith("-I")]
+    names = _INCLUDE.findall(source.read_text(errors="replace"))
+    return [n for n in names if not any((folder / n).is_file() for folder in folders)]
+
+
+def _load(index: ci.Index, source: Path, args: list[str], without_pch: list[str]) -> ci.TranslationUnit:
+    try:
+        return index.parse(str(source), args=args, options=_KEEP_GOING)
+    except ci.TranslationUnitLoadError:
+        return index.parse(str(source), args=without_pch, options=_KEEP_GOING)
+
+
+def _mtime(path: str) -> int:
+    try:
+        return Path(path).stat().st_mtime_ns
+    except OSError:
+        return -1
+
+
+def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
+    """A cached result holds while its headers are unchanged and its missing headers still are."""
+    if any(_mtime(path) != mtime for path, mtime in result.depends):
+        return False
+    folders = [a[2:] for a in env.args if a.startswith("-I")]
+    return not any((Path(folder) / name).is_file() for name in result.missing for folder in folders)
 
 
 def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink) -> None:

@@ -33,6 +33,9 @@ METHODS = {
     (IMAGE_TRANSPORT, "advertiseCamera"): "publisher", (IMAGE_TRANSPORT, "subscribeCamera"): "subscriber",
     ("message_filters::Subscriber", "subscribe"): "subscriber",
 }
+# nodelet::Nodelet accessors for the manager-provided handles
+NODELET_HANDLES = {"getNodeHandle": "", "getMTNodeHandle": "", "getPrivateNodeHandle": "~",
+                   "getMTPrivateNodeHandle": "~"}
 PARAM_READS = {"param", "getParam", "getParamCached", "hasParam", "searchParam", "get", "getCached", "has", "search"}
 PARAM_WRITES = {"setParam", "deleteParam", "set", "del"}
 TIMERS = {"createTimer", "createWallTimer", "createSteadyTimer"}
@@ -77,10 +80,13 @@ class FileResult:
     incomplete: str | None = None
     diagnostics: list[Diagnostic] = field(default_factory=list)
     fallback_lines: list[int] = field(default_factory=list)
+    depends: list[tuple[str, int]] = field(default_factory=list)
+    missing: list[str] = field(default_factory=list)
 
 
-def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool) -> FileResult:
-    walker = _Walker(source, shown)
+def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool, cls: str | None = None) -> FileResult:
+    """Read one parsed file; with `cls`, only that class's methods (and free functions) count."""
+    walker = _Walker(source, shown, cls)
     walker.walk(tu.cursor)
     if incomplete_ast:
         walker.token_fallback(tu)
@@ -98,12 +104,13 @@ def qualified(cursor: ci.Cursor | None) -> str:
 
 
 class _Walker:
-    def __init__(self, source: Path, shown: str) -> None:
-        self.source, self.file = str(source), shown
+    def __init__(self, source: Path, shown: str, cls: str | None = None) -> None:
+        self.source, self.file, self.cls = str(source), shown, cls
         self.result = FileResult()
         self.handles: dict[tuple, Value] = {}
         self.param_vars: dict[tuple, Value] = {}
         self.call_sites: dict[tuple, list[ci.Cursor]] = {}
+        self.spans: list[tuple[int, int]] | None = None
 
     @staticmethod
     def key(decl: ci.Cursor | None) -> tuple | None:
@@ -125,15 +132,33 @@ class _Walker:
                    if self.in_main(c)]
         for cursor in cursors:
             if cursor.kind == K.CALL_EXPR and cursor.referenced is not None:
-                self.call_sites.setdefault(self.key(cursor.referenced), []).append(cursor)
+                self.call_sites.setdefault(self.key(cursor.referenced.canonical), []).append(cursor)
         for cursor in cursors:
             if cursor.kind == K.CONSTRUCTOR:
                 self.member_inits(cursor)
-        for cursor in cursors:
+        for cursor in self.relevant(cursors):
             if cursor.kind == K.CALL_EXPR:
                 self.call(cursor)
 
+    def relevant(self, cursors: list[ci.Cursor]) -> list[ci.Cursor]:
+        """All cursors, or for a nodelet class only those inside its methods and free functions."""
+        if self.cls is None:
+            return cursors
+        kept: list[ci.Cursor] = []
+        self.spans = []
+        for cursor in cursors:
+            if cursor.kind in (K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_DECL) and cursor.is_definition():
+                owner = cursor.semantic_parent
+                if cursor.kind == K.FUNCTION_DECL or qualified(owner) == self.cls:
+                    kept += list(cursor.walk_preorder())
+                    self.spans.append((cursor.extent.start.line, cursor.extent.end.line))
+        return kept
+
     def handle_ns(self, decl: ci.Cursor) -> Value:
+        getter = next((c.spelling for c in decl.walk_preorder() if c.kind == K.CALL_EXPR
+                       and c.spelling in NODELET_HANDLES), None)
+        if getter:
+            return NODELET_HANDLES[getter]
         ctor = next((c for c in decl.get_children() if c.kind in (K.CALL_EXPR, K.UNEXPOSED_EXPR)), None)
         return self.ctor_ns(ctor) if ctor is not None else ""
 
@@ -176,9 +201,11 @@ class _Walker:
                 if decl is not None and decl.kind == K.PARM_DECL and depth < 4:
                     return self.from_call_sites(decl, expr, lambda arg: self.handle_of(arg, depth + 1), "NodeHandle")
                 break
-            if cursor.kind == K.CALL_EXPR and _is_handle_type(cursor.type) and cursor.spelling in ("NodeHandle",
-                                                                                                  "ImageTransport"):
-                return self.ctor_ns(cursor)
+            if cursor.kind == K.CALL_EXPR and _is_handle_type(cursor.type):
+                if cursor.spelling in NODELET_HANDLES:
+                    return NODELET_HANDLES[cursor.spelling]
+                if cursor.spelling in ("NodeHandle", "ImageTransport"):
+                    return self.ctor_ns(cursor)
         return self.unknown(expr, "NodeHandle of unknown origin")
 
     def from_call_sites(self, param: ci.Cursor, expr: ci.Cursor, evaluate, what: str) -> Value:
@@ -186,7 +213,7 @@ class _Walker:
         function = param.semantic_parent
         params = [p.spelling for p in function.get_arguments()] if function is not None else []
         index = params.index(param.spelling) if param.spelling in params else -1
-        sites = self.call_sites.get(self.key(function), []) if index >= 0 else []
+        sites = self.call_sites.get(self.key(function.canonical), []) if index >= 0 else []
         found = {evaluate(args[index]) for site in sites if len(args := _written_args(site)) > index}
         if len(found) == 1:
             return next(iter(found))
@@ -372,19 +399,35 @@ class _Walker:
         text = Path(self.source).read_text(errors="replace")
         handles = {m.group(1): _unquote(m.group(2)) if m.group(2) else ""
                    for m in re.finditer(r"NodeHandle\s+(\w+)\s*(?:\(\s*(\"[^\"]*\")\s*\))?", text)}
+        objects = {m.group(1) for m in _FALLBACK.finditer(text)}
+        handles.update({m.group(1): m.group(2) for m in re.finditer(r"[:,]\s*(\w+)\s*\(\s*\"(~?[\w/]*)\"\s*\)", text)
+                        if m.group(1) in objects and m.group(1) not in handles})  # member initialisers
+        handles.update({m.group(1): NODELET_HANDLES[m.group(2)] for m in re.finditer(
+            r"NodeHandle\s*&?\s*(\w+)\s*=\s*(get(?:MT)?(?:Private)?NodeHandle)\s*\(\s*\)", text)})
         for match in _FALLBACK.finditer(text):
             line = text.count("\n", 0, match.start()) + 1
-            if line in covered:
+            if line in covered or (self.spans is not None and not any(a <= line <= b for a, b in self.spans)):
                 continue
             obj, method, template, first = match.groups()
             kind = METHODS.get((NODE_HANDLE, method))
             name: Value = _unquote(first) if first.startswith('"') else \
                 Unknown(f"{first} (read from tokens)", self.file, line)
             handle: Value = handles[obj] if obj in handles else Unknown(f"{obj} (read from tokens)", self.file, line)
-            type_: Value = _type_from_spelling(template) if template else \
+            type_: Value = (_type_from_spelling(template) if template else _callback_type(text, match.end())) or \
                 Unknown(f"{obj}.{method} (type not readable without the AST)", self.file, line)
             self.result.ports.append(Port(kind, name, type_, self.file, line, 0, handle))
             self.result.fallback_lines.append(line)
+
+
+def _callback_type(text: str, start: int) -> str | None:
+    """The message type of a callback named in a call's arguments, from the callback's own
+    signature in the file text (for calls the AST lost)."""
+    arguments = text[start: text.find(";", start)]
+    callback = re.search(r"&\s*(?:\w+::)*(\w+)\s*[,)]", arguments)
+    if callback is None:
+        return None
+    signature = re.search(rf"\b{callback.group(1)}\s*\(\s*(?:const\s+)?([\w:]+)", text)
+    return _type_from_spelling(signature.group(1)) if signature else None
 
 
 def _is_handle_type(type_: ci.Type) -> bool:

@@ -9,6 +9,8 @@ would stop with an error, archlog reports a diagnostic at the element and goes o
 
 from __future__ import annotations
 
+import math
+import re
 import shlex
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -18,14 +20,17 @@ from lxml import etree
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.substitution import (SubstContext, SubstitutionError, UnknownArg, Unresolved, auto_value,
-                                          substitute)
+from archlog.extract.substitution import (SubstContext, SubstitutionError, UnknownArg, Unresolved, arithmetic,
+                                          auto_value, substitute)
 from archlog.extract.workspace import Workspace
 from archlog.values import Unknown
 
 MAX_INCLUDE_DEPTH = 32
 NODE_ATTRS = {"pkg", "type", "machine", "name", "args", "output", "respawn", "respawn_delay", "cwd", "ns",
               "clear_params", "launch-prefix", "required", "if", "unless"}
+TEST_ONLY_ATTRS = {"test-name", "time-limit", "retry"}
+NOT_FOR_TESTS = ("respawn", "respawn_delay", "output")
+_LEGAL_NAME = re.compile(r"[~/A-Za-z][\w/]*")
 
 
 class LaunchError(Exception):
@@ -55,6 +60,15 @@ class LaunchNode:
     args: str = ""
     plugin: str | None = None
     manager: str | None = None
+    declared: str = ""  # the name as declared (before __name/__ns in args); roslaunch checks these
+
+    @property
+    def kind(self) -> tuple[str, str]:
+        """What runs: (package, executable), or (package, Type) of a nodelet plugin pkg/Type."""
+        if self.plugin and "/" in self.plugin:
+            pkg, plugin = self.plugin.split("/", 1)
+            return pkg, plugin
+        return self.pkg, self.type
 
 
 @dataclass
@@ -79,16 +93,17 @@ class _Scope:
     depth: int = 0
 
     def child(self, ns: str | None) -> "_Scope":
-        """A group scope: args, declared names and remaps copied, the private-param list shared."""
+        """A group or node scope: args, declared names and remaps copied, the private-param list
+        shared (a group copies it itself); the pass_all_args leniency is not inherited."""
         return replace(self, ns=_child_ns(self.ns, ns), subst=self.subst.child(), declared=list(self.declared),
-                       remaps=list(self.remaps))
+                       remaps=list(self.remaps), pass_all_args=False)
 
     def add_remap(self, src: str, dst: str, elem: Element) -> None:
         src, dst = names.canonical(src), names.canonical(dst)
         if not src or not dst:
             raise LaunchError("remap from/to attributes cannot be empty")
         for value in (src, dst):
-            if not names.is_valid(value):
+            if not _LEGAL_NAME.fullmatch(value):
                 raise LaunchError(f"remap name [{value}] is not a valid ROS name")
         self.remaps = [r for r in self.remaps if r[0] != src] + [(src, dst, elem)]
 
@@ -96,10 +111,8 @@ class _Scope:
 def _child_ns(ns: str, sub: str | None) -> str:
     if not sub:
         return ns
-    if sub.startswith("/"):
-        return names.canonical(sub)
-    if sub == "~":
-        return "~"
+    if sub.startswith("~"):
+        raise LaunchError(f"cannot use the private name [{sub}] as a namespace")
     return names.join(ns, sub)
 
 
@@ -111,14 +124,32 @@ class LaunchInterpreter:
         self.diagnostics = diagnostics
         self.config = LaunchConfig()
         self._count = 0
-        self._anon: dict[str, str] = {}
-        self._node_names: dict[str, Element] = {}
+        self._machines: dict[str, tuple[object, ...]] = {}
+        self._machine_uses: list[tuple[str, Path, etree._Element]] = []
+        self._declared: list[tuple[str, Path, etree._Element, LaunchNode]] = []
+        self._rosparam_yaml = False  # roslaunch imports rosparam (and its YAML angles) at the first load
 
     def load(self, files: list[Path], args: dict[str, str]) -> LaunchConfig:
         for path in files:
-            subst = SubstContext(dict(args), self.workspace.find, path, self._anon)
-            self._file(path, _Scope("/", subst, [], [], []))
+            subst = SubstContext(_command_line(args), self.workspace.find, path)
+            root = args["__ns"] if "__ns" in args else subst.env.get("ROS_NAMESPACE", "/")
+            self._file(path, _Scope(names.join("/", root), subst, [], [], []))
+        for machine, path, el in self._machine_uses:
+            if machine not in self._machines:
+                self._diag(path, el, "launch-invalid", f"<{el.tag}>: unknown machine [{machine}]")
+        self._check_declared_names()
         return self.config
+
+    def _check_declared_names(self) -> None:
+        """roslaunch rejects two <node>s declared with one name. When they keep that name, the
+        duplicate-node rule reports it; here only those that args rename apart."""
+        first: dict[str, LaunchNode] = {}
+        for declared, path, el, node in self._declared:
+            other = first.setdefault(declared, node)
+            if other is not node and other.name != node.name:
+                self._diag(path, el, "launch-invalid",
+                           f"<node>: roslaunch rejects a second node declared as [{declared}], even though "
+                           f"its args rename it to [{node.name}]")
 
     # -- helpers --------------------------------------------------------------------------
     def _element(self, file: Path, el: etree._Element) -> Element:
@@ -178,7 +209,7 @@ class LaunchInterpreter:
                 continue
             handler = getattr(self, f"_tag_{el.tag}", None)
             if handler is None:
-                if el.tag not in ("machine", "env", "master"):
+                if el.tag != "master":
                     self._diag(path, el, "launch-tag", f"unrecognized tag <{el.tag}> ignored", "warning")
                 continue
             try:
@@ -188,45 +219,58 @@ class LaunchInterpreter:
                 if enabled is not True:
                     self._conditional(path, el, enabled)
                 handler(path, el, scope if enabled is True else replace(scope, condition=enabled))
-            except Unresolved as exc:
-                self._diag(path, el, "launch-unresolved",
-                           f"<{el.tag}> skipped: {exc}; pass the value with --arg or set it in the environment",
-                           "warning")
             except (SubstitutionError, LaunchError) as exc:
-                self._diag(path, el, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",
-                           f"<{el.tag}>: {exc}")
+                self._report(path, el, exc)
+
+    def _report(self, path: Path, el: etree._Element, exc: SubstitutionError | LaunchError) -> None:
+        """The diagnostic for an element roslaunch would reject (or that depends on this machine)."""
+        if isinstance(exc, Unresolved):
+            self._diag(path, el, "launch-unresolved",
+                       f"<{el.tag}> skipped: {exc}; pass the value with --arg or set it in the environment",
+                       "warning")
+        else:
+            self._diag(path, el, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",
+                       f"<{el.tag}>: {exc}")
 
     def _conditional(self, path: Path, el: etree._Element, condition: str) -> None:
         self._diag(path, el, "launch-condition",
                    f"condition {condition} cannot be resolved statically; <{el.tag}> kept as conditional", "note")
 
     def _tag_arg(self, path: Path, el: etree._Element, scope: _Scope,
-                 target: dict[str, str | UnknownArg] | None = None) -> None:
+                 target: dict[str, str | UnknownArg] | None = None) -> str:
         """Declare an arg; values resolve in `scope` and are stored in `target` (an include's
-        passed args) or in the scope's own args."""
+        passed args) or in the scope's own args. roslaunch substitutes value, default and doc
+        even when they end up unused."""
         name = self._required(scope, el, "name")
-        if el.get("value") is not None and el.get("default") is not None:
+        values: dict[str, str | UnknownArg] = {}
+        for key in ("value", "default", "doc"):
+            if el.get(key) is None:
+                continue
+            try:
+                values[key] = self._attr(scope, el, key) or ""
+            except Unresolved as exc:
+                values[key] = UnknownArg(str(exc))
+        if "value" in values and "default" in values:
             raise LaunchError("<arg> must have only one of value/default")
         if name in scope.declared and not scope.pass_all_args:
             raise LaunchError(f"arg '{name}' has already been declared")
         if name not in scope.declared:
             scope.declared.append(name)
         args = scope.subst.args if target is None else target
-        for key in ("value", "default"):
-            if el.get(key) is None or (key == "default" and name in args):
-                continue
-            if key == "value" and name in args and not scope.pass_all_args:
-                raise LaunchError(f"cannot override arg '{name}', which has already been set")
-            try:
-                args[name] = self._attr(scope, el, key) or ""
-            except Unresolved as exc:
-                args[name] = UnknownArg(str(exc))
-                self._diag(path, el, "launch-arg-unknown", f"arg '{name}' is not known statically: {exc}", "note")
+        if "value" in values and name in args and not scope.pass_all_args:
+            raise LaunchError(f"cannot override arg '{name}', which has already been set")
+        if "value" in values or ("default" in values and name not in args):
+            value = values.get("value", values.get("default", ""))
+            args[name] = value
+            if isinstance(value, UnknownArg):
+                self._diag(path, el, "launch-arg-unknown", f"arg '{name}' is not known statically: {value.reason}",
+                           "note")
+        return name
 
     def _tag_group(self, path: Path, el: etree._Element, scope: _Scope) -> None:
         child = scope.child(self._ns_attr(scope, el))
         child.private = list(scope.private)
-        self._clear_params(scope, el, child.ns, is_node=False)
+        self._clear_params(scope, el, is_node=False)
         self._children(path, el, child)
 
     def _ns_attr(self, scope: _Scope, el: etree._Element) -> str | None:
@@ -235,48 +279,104 @@ class LaunchInterpreter:
             raise LaunchError(f"<{el.tag}> has an empty 'ns' attribute")
         return ns
 
-    def _clear_params(self, scope: _Scope, el: etree._Element, ns: str, is_node: bool) -> None:
+    def _clear_params(self, scope: _Scope, el: etree._Element, is_node: bool) -> None:
+        """clear_params only clears at launch time; here it is just checked."""
         value = self._attr(scope, el, "clear_params")
-        if value and _bool(value, "clear_params") and not is_node and el.get("ns") is None:
+        if value and _bool_attr(value, "clear_params") and not is_node and el.get("ns") is None:
             raise LaunchError("'ns' attribute must be set in order to use 'clear_params'")
+
+    def _tag_env(self, path: Path, el: etree._Element, scope: _Scope) -> None:
+        """<env> only changes the environment of the processes started; it is checked."""
+        if not self._required(scope, el, "name"):
+            raise LaunchError("'name' attribute must be non-empty")
+        self._required(scope, el, "value")
+
+    def _tag_machine(self, path: Path, el: etree._Element, scope: _Scope) -> None:
+        """Record a machine, checked as roslaunch checks it (nodes may name it, even before)."""
+        if any(el.get(key) is not None and self._attr(scope, el, key)
+               for key in ("ros-root", "ros-package-path", "ros-ip", "ros-hostname")):
+            raise LaunchError("ros-* attributes are not supported since ROS Fuerte")
+        name, address = self._required(scope, el, "name"), self._required(scope, el, "address")
+        loader, port, user, password, default, timeout = (
+            self._attr(scope, el, key) for key in ("env-loader", "ssh-port", "user", "password", "default", "timeout"))
+        try:
+            ssh_port = int(port or "22")
+        except ValueError:
+            raise LaunchError(f"invalid ssh-port: {port}") from None
+        default = (default or "false").lower()
+        if default not in ("true", "false", "never"):
+            raise LaunchError(f"invalid value for 'default': {default}")
+        if timeout is not None:
+            try:
+                seconds = float(timeout)
+            except ValueError:
+                raise LaunchError(f"'timeout' must be a number: [{timeout}]") from None
+            if seconds <= 0:
+                raise LaunchError(f"'timeout' must be a positive number: [{timeout}]")
+        for child in el:
+            if isinstance(child.tag, str) and child.tag == "env":
+                raise LaunchError("<env> inside <machine> is not supported since ROS Fuerte")
+        key = (address, loader, ssh_port, user or "", password or "", timeout and float(timeout), default != "never")
+        if self._machines.setdefault(name, key) != key:
+            raise LaunchError(f"machine [{name}] already added and does not match the duplicate entry")
 
     def _tag_remap(self, path: Path, el: etree._Element, scope: _Scope) -> None:
         scope.add_remap(self._required(scope, el, "from"), self._required(scope, el, "to"), self._element(path, el))
 
     def _tag_include(self, path: Path, el: etree._Element, scope: _Scope) -> None:
         target = Path(self._required(scope, el, "file"))
-        pass_all = _bool(self._attr(scope, el, "pass_all_args") or "false", "pass_all_args")
+        pass_all = _bool_attr(self._attr(scope, el, "pass_all_args") or "false", "pass_all_args")
         if scope.depth >= MAX_INCLUDE_DEPTH:
             raise LaunchError("include nesting too deep (a cycle?)")
-        ns = self._ns_attr(scope, el)
-        self._clear_params(scope, el, _child_ns(scope.ns, ns), is_node=False)
+        ns = _child_ns(scope.ns, self._ns_attr(scope, el))
+        self._clear_params(scope, el, is_node=False)
         passed: dict[str, str | UnknownArg] = dict(scope.subst.args) if pass_all else {}
         declared: list[str] = list(passed)
+        arg_scope = replace(scope, subst=scope.subst.child(), declared=declared, pass_all_args=pass_all)
+        arg_elements: dict[str, etree._Element] = {}
         for child in el:
-            if not isinstance(child.tag, str) or child.tag == "env":
+            if not isinstance(child.tag, str):
                 continue
-            if child.tag != "arg":
+            tag = child.tag.lower()
+            if tag not in ("arg", "env"):
                 self._diag(path, child, "launch-tag", f"<{child.tag}> inside <include> is ignored by roslaunch",
                            "warning")
                 continue
-            if self._enabled(scope, child) is not True:
-                continue
-            self._tag_arg(path, child, replace(scope, declared=declared, pass_all_args=pass_all), passed)
+            try:
+                if self._enabled(arg_scope, child) is not True:
+                    continue
+                if tag == "env":
+                    self._tag_env(path, child, arg_scope)
+                else:
+                    arg_elements[self._tag_arg(path, child, arg_scope, passed)] = child
+            except (SubstitutionError, LaunchError) as exc:
+                self._report(path, child, exc)
+                return
         missing = [a for a in declared if a not in passed]
+        for name in missing:
+            self._diag(path, arg_elements.get(name, el), "launch-invalid",
+                       f"<include>: arg '{name}' is passed without a value or default")
         if missing:
-            raise LaunchError(f"include args must have declared values: {', '.join(missing)}")
+            return
         if not target.is_file():
             self._diag(path, el, "launch-include", f"included file not found: {target}")
             return
-        child_scope = _Scope(_child_ns(scope.ns, ns), scope.subst.child(args=passed, file=target), [],
-                             list(scope.remaps), scope.private, scope.condition, pass_all, scope.depth + 1)
+        # roslaunch hands the ~param list on to the included file, unless it is still empty
+        private = scope.private if scope.private else []
+        child_scope = _Scope(ns, scope.subst.child(args=passed, file=target), [], list(scope.remaps), private,
+                             scope.condition, pass_all, scope.depth + 1)
         if self._file(target, child_scope) and not pass_all:
-            unused = [a for a in passed if a not in child_scope.declared]
-            if unused:
-                raise LaunchError(f"unused args [{', '.join(unused)}] for include of [{target}]")
+            for name in passed:
+                if name not in child_scope.declared:
+                    self._diag(path, arg_elements.get(name, el), "launch-invalid",
+                               f"<include>: unused arg '{name}': {target.name} does not declare it")
 
-    def _tag_param(self, path: Path, el: etree._Element, scope: _Scope, node_ns: str | None = None) -> None:
-        name = self._required(scope, el, "name").strip()
+    def _tag_param(self, path: Path, el: etree._Element, scope: _Scope,
+                   local: list[tuple[str, object, Element]] | None = None) -> None:
+        """A parameter; `~name`s (and every <param> of a node, given `local`) wait for the nodes."""
+        if el.get("name") is None:
+            raise LaunchError("<param> is missing the required attribute 'name'")
+        name = substitute(el.get("name", "").strip(), scope.subst)
         elem = self._element(path, el)
         sources = [k for k in ("value", "textfile", "binfile", "command") if el.get(k) is not None]
         if len(sources) != 1:
@@ -286,98 +386,153 @@ class LaunchInterpreter:
             value = self._param_value(scope, el, sources[0], kind, elem)
         except Unresolved as exc:
             value = Unknown(f"{el.get(sources[0])} ({exc})", elem.file, elem.line)
-        if node_ns is not None or name.startswith("~"):
-            if node_ns is not None:
-                self._set_param(names.canonical(f"{node_ns}/{name.lstrip('~')}"), value, elem)
-            else:
-                scope.private.append((name, value, elem))
+            self._diag(path, el, "launch-unresolved", f"<param> value not known statically: {exc}", "warning")
+        if local is not None:
+            local.append((name, value, elem))
+        elif name.startswith("~"):
+            scope.private.append((name, value, elem))
         else:
-            self._set_param(names.join(scope.ns, name), value, elem)
+            self._put(names.join(scope.ns, name), value, elem)
 
     def _param_value(self, scope: _Scope, el: etree._Element, source: str, kind: str, elem: Element) -> object:
         text = self._attr(scope, el, source) or ""
         if source == "value":
-            return convert(text.strip(), kind)
+            return convert(text.strip(), kind, self._rosparam_yaml)
         if source == "textfile":
-            return convert(_read(Path(text)), kind)
+            return convert(_read(Path(text)), kind, self._rosparam_yaml)
         return Unknown(f"{source}: {text}", elem.file, elem.line)
 
-    def _set_param(self, key: str, value: object, elem: Element) -> None:
-        if isinstance(value, dict):
-            for k, v in value.items():
-                self._set_param(names.join(key, str(k)), v, elem)
-        else:
-            self.config.params[key] = (value, elem)
+    def _put(self, key: str, value: object, elem: Element) -> None:
+        """One parameter (a dict value stays one parameter, as for <param type="yaml">)."""
+        self.config.params[names.canonical(key)] = (value, elem)
+
+    def _put_tree(self, key: str, value: object, elem: Element) -> None:
+        """rosparam's loading: a dict becomes one parameter per leaf."""
+        if not isinstance(value, dict):
+            self._put(key, value, elem)
+            return
+        for k, v in value.items():
+            if not isinstance(k, str):
+                raise LaunchError(f"parameter key {k!r} is not a string")
+            self._put_tree(_ns_join(key, k), v, elem)
+
+    def _put_private(self, node_ns: str, name: str, value: object, elem: Element) -> None:
+        self._put(f"{node_ns}/{name[1:] if name.startswith('~') else name}", value, elem)
 
     def _tag_rosparam(self, path: Path, el: etree._Element, scope: _Scope, node_ns: str | None = None) -> None:
         command = self._attr(scope, el, "command") or "load"
+        ns_attr, param = self._attr(scope, el, "ns") or "", self._attr(scope, el, "param") or ""
+        file = self._attr(scope, el, "file")
+        subst = _bool_attr(self._attr(scope, el, "subst_value") or "false", "subst_value")
         if command not in ("load", "dump", "delete"):
             raise LaunchError("command must be 'load', 'dump', or 'delete'")
-        ns_attr, param = self._attr(scope, el, "ns") or "", self._attr(scope, el, "param") or ""
         joined = _ns_join(ns_attr, param)
         base = node_ns if node_ns is not None else scope.ns
         full = _ns_join(base, joined) if joined else base
         elem = self._element(path, el)
-        file = self._attr(scope, el, "file")
+        if file is not None and command == "load" and not Path(file).is_file():
+            raise Unresolved(f"file does not exist [{file}]")
         if file is not None and command == "delete":
             raise LaunchError("'file' attribute is invalid with 'delete' command")
         if command != "load":
             return
-        text = _read(Path(file)) if file is not None else "".join(el.itertext())
-        if _bool(self._attr(scope, el, "subst_value") or "false", "subst_value"):
+        text = _read(Path(file)) if file is not None else "".join(
+            [el.text or ""] + [child.tail or "" for child in el])
+        if subst:
             text = substitute(text, scope.subst)
-        try:
-            data = yaml.safe_load(text)
-        except yaml.YAMLError as exc:
-            raise LaunchError(f"invalid YAML: {exc}") from None
+        self._rosparam_yaml = True
+        data = _yaml(text, True)
         data = {} if data is None else data
         if not joined and not isinstance(data, dict):
             raise LaunchError("'param' attribute must be set for non-dictionary values")
-        if names.canonical(full) == "/" and not isinstance(data, dict):
+        if full == "/" and not isinstance(data, dict):
             raise LaunchError("cannot load non-dictionary types into the global namespace '/'")
-        self._set_param(names.canonical(full) or "/", data, elem)
+        self._put_tree(full, data, elem)
 
     def _tag_node(self, path: Path, el: etree._Element, scope: _Scope, is_test: bool = False) -> None:
         for attr in el.keys():
-            if attr not in NODE_ATTRS and not (is_test and attr in ("test-name", "time-limit", "retry")):
+            if attr not in NODE_ATTRS and not (is_test and attr in TEST_ONLY_ATTRS):
                 self._diag(path, el, "launch-attr", f"unknown <{el.tag}> attribute '{attr}'", "warning")
         name = self._attr(scope, el, "name") if is_test else self._required(scope, el, "name")
         if is_test:
-            name = name or self._required(scope, el, "test-name")
-        if "/" in (name or ""):
-            raise LaunchError("node name cannot contain a namespace")
+            self._test_attrs(scope, el)
+            name = name or self._attr(scope, el, "test-name")
         child = scope.child(self._ns_attr(scope, el))
+        self._clear_params(scope, el, is_node=True)
         node_ns = names.join(child.ns, name or "")
         pkg, exe = self._required(scope, el, "pkg"), self._required(scope, el, "type")
-        if not pkg or not exe:
-            raise LaunchError("package and type must be non-empty")
-        required = _bool(self._attr(scope, el, "required") or "false", "required")
-        if required and _bool(self._attr(scope, el, "respawn") or "false", "respawn"):
+        machine, output, respawn, delay, cwd, required = (
+            self._attr(scope, el, key) for key in ("machine", "output", "respawn", "respawn_delay", "cwd", "required"))
+        if _bool_attr(required or "false", "required") and _bool_attr(respawn or "false", "respawn"):
             raise LaunchError("respawn and required cannot both be set to true")
-        if (self._attr(scope, el, "output") or "log") not in ("log", "screen"):
+        if delay is not None:
+            try:
+                float(delay)
+            except ValueError:
+                raise LaunchError(f"invalid float value for respawn_delay: {delay}") from None
+        if "/" in (name or ""):
+            raise LaunchError("node name cannot contain a namespace")
+        if not pkg.strip() or not exe.strip():
+            raise LaunchError("package and type must be non-empty")
+        if output is not None and output not in ("log", "screen"):
             raise LaunchError("output must be one of 'log', 'screen'")
-        if (self._attr(scope, el, "cwd") or "ROS_HOME").lower() not in ("ros_home", "node"):
+        if cwd is not None and cwd not in ("ROS_HOME", "ros_home", "node"):
             raise LaunchError("cwd must be one of 'ROS_HOME', 'node'")
         elem = self._element(path, el)
+        local: list[tuple[str, object, Element]] = []
         for child_el in el:
-            if not isinstance(child_el.tag, str) or self._enabled(scope, child_el) is not True:
-                continue
+            if isinstance(child_el.tag, str):
+                self._node_child(path, child_el, scope, child, node_ns, local)
+        # the scope's ~params first, then the node's own <param>s (its <rosparam>s are already set)
+        for pname, value, pelem in scope.private + local:
+            self._put_private(node_ns, pname, value, pelem)
+        if machine:
+            self._machine_uses.append((machine, path, el))
+        node = LaunchNode(elem, pkg, exe, node_ns, child.ns, child.remaps, scope.condition,
+                          self._attr(scope, el, "args") or "", declared="" if is_test else node_ns)
+        if not is_test:
+            self._declared.append((node_ns, path, el, node))
+        self._add_node(path, el, node)
+
+    def _node_child(self, path: Path, el: etree._Element, scope: _Scope, child: _Scope, node_ns: str,
+                    local: list[tuple[str, object, Element]]) -> None:
+        """A tag inside <node>/<test>: remaps resolve in the enclosing scope, the rest in the node's."""
+        tag = el.tag.lower()
+        try:
+            if self._enabled(child, el) is not True:
+                return
+            if tag == "remap":
+                child.add_remap(self._required(scope, el, "from"), self._required(scope, el, "to"),
+                                self._element(path, el))
+            elif tag == "param":
+                self._tag_param(path, el, child, local)
+            elif tag == "rosparam":
+                self._tag_rosparam(path, el, child, node_ns)
+            elif tag == "env":
+                self._tag_env(path, el, child)
+            else:
+                self._diag(path, el, "launch-tag", f"<{el.tag}> inside <node> is ignored", "warning")
+        except (SubstitutionError, LaunchError) as exc:
+            self._report(path, el, exc)
+
+    def _test_attrs(self, scope: _Scope, el: etree._Element) -> None:
+        for attr in NOT_FOR_TESTS:
+            if el.get(attr) is not None:
+                raise LaunchError(f"<test> tags cannot have '{attr}' attribute")
+        self._required(scope, el, "test-name")
+        limit, retry = self._attr(scope, el, "time-limit"), self._attr(scope, el, "retry")
+        if limit:
             try:
-                if child_el.tag == "remap":
-                    self._tag_remap(path, child_el, child)
-                elif child_el.tag == "param":
-                    self._tag_param(path, child_el, child, node_ns)
-                elif child_el.tag == "rosparam":
-                    self._tag_rosparam(path, child_el, child, node_ns)
-                elif child_el.tag != "env":
-                    self._diag(path, child_el, "launch-tag", f"<{child_el.tag}> inside <{el.tag}> is ignored",
-                               "warning")
-            except (SubstitutionError, LaunchError) as exc:
-                self._diag(path, child_el, "launch-invalid", f"<{child_el.tag}>: {exc}")
-        for pname, value, pelem in scope.private:
-            self._set_param(names.canonical(f"{node_ns}/{pname.lstrip('~')}"), value, pelem)
-        self._add_node(path, el, LaunchNode(elem, pkg, exe, node_ns, child.ns, child.remaps, scope.condition,
-                                            self._attr(scope, el, "args") or ""))
+                seconds = float(limit)
+            except ValueError:
+                raise LaunchError(f"'time-limit' must be a number: [{limit}]") from None
+            if seconds <= 0:
+                raise LaunchError("'time-limit' must be a positive number")
+        if retry:
+            try:
+                int(retry)
+            except ValueError:
+                raise LaunchError(f"'retry' must be a number: [{retry}]") from None
 
     def _tag_test(self, path: Path, el: etree._Element, scope: _Scope) -> None:
         self._tag_node(path, el, scope, is_test=True)
@@ -396,7 +551,7 @@ class LaunchInterpreter:
                 node.namespace = names.join("/", value)
                 node.name = names.join(node.namespace, node.name.rsplit("/", 1)[-1])
             elif key.startswith("_") and not key.startswith("__"):
-                self._set_param(names.join(node.name, key[1:]), auto_value(value), node.elem)
+                self._put(names.join(node.name, key[1:]), auto_value(value), node.elem)
             elif not key.startswith("__"):
                 node.remaps = [r for r in node.remaps if r[0] != key] + [(key, value, node.elem)]
         plain = [w for w in words if ":=" not in w]
@@ -406,17 +561,14 @@ class LaunchInterpreter:
         self.config.nodes.append(node)
 
 
-def convert(text: str, kind: str) -> object:
-    """roslaunch's typed parameter conversion."""
+def convert(text: str, kind: str, angles: bool = False) -> object:
+    """roslaunch's typed parameter conversion (`angles`: YAML knows rosparam's rad()/deg())."""
     if kind == "auto":
         return auto_value(text)
     if kind in ("str", "string"):
         return text
     if kind == "yaml":
-        try:
-            return yaml.safe_load(text)
-        except yaml.YAMLError as exc:
-            raise LaunchError(f"invalid YAML: {exc}") from None
+        return _yaml(text, angles)
     try:
         if kind == "int":
             return int(text)
@@ -430,12 +582,66 @@ def convert(text: str, kind: str) -> object:
 
 
 def _bool(text: str, label: str) -> bool:
+    """A bool as if/unless and type="bool" read it: true/false/1/0, any case, stripped."""
     value = text.lower().strip()
     if value in ("true", "1"):
         return True
     if value in ("false", "0"):
         return False
     raise LaunchError(f"invalid bool value for {label}: {text}")
+
+
+def _bool_attr(text: str, label: str) -> bool:
+    """A bool attribute (respawn, required, clear_params, pass_all_args, subst_value): true/false only."""
+    if text.lower() in ("true", "false"):
+        return text.lower() == "true"
+    raise LaunchError(f"invalid bool value for {label}: {text!r}")
+
+
+def _command_line(args: dict[str, str]) -> dict[str, str]:
+    """Command-line args as roslaunch reads name:=value words: stripped, empty ones dropped, and
+    `_name:=value` words left to the parameter server."""
+    kept = {}
+    for key, value in args.items():
+        key, value = key.strip(), value.strip()
+        if key and value and ":=" not in value and not (len(key) > 1 and key[0] == "_" and key[1] != "_"):
+            kept[key] = value
+    return kept
+
+
+class _RosparamLoader(yaml.SafeLoader):
+    """PyYAML's safe loader plus the angle forms rosparam registers: rad(...), deg(...), !radians, !degrees."""
+
+
+def _radians(loader: yaml.SafeLoader, node: yaml.Node) -> float:
+    text = str(loader.construct_scalar(node)).strip()  # type: ignore[arg-type]
+    text = text[4:-1] if text.startswith("rad(") else text
+    try:
+        return float(arithmetic(text))  # type: ignore[arg-type]
+    except (SubstitutionError, TypeError, ValueError, ArithmeticError) as exc:
+        raise LaunchError(f"invalid radian expression: {text} ({exc})") from None
+
+
+def _degrees(loader: yaml.SafeLoader, node: yaml.Node) -> float:
+    text = str(loader.construct_scalar(node))  # type: ignore[arg-type]
+    text = text.strip()[4:-1] if text.startswith("deg(") else text
+    try:
+        return float(text) * math.pi / 180.0
+    except ValueError:
+        raise LaunchError(f"invalid degree value: {text}") from None
+
+
+_RosparamLoader.add_constructor("!radians", _radians)
+_RosparamLoader.add_constructor("!degrees", _degrees)
+_RosparamLoader.add_implicit_resolver("!degrees", re.compile(r"^deg\([^\)]*\)$"), list("deg("))
+_RosparamLoader.add_implicit_resolver("!radians", re.compile(r"^rad\([^\)]*\)$"), list("rad("))
+
+
+def _yaml(text: str, angles: bool) -> object:
+    try:
+        return yaml.load(text, Loader=_RosparamLoader if angles else yaml.SafeLoader)
+    except yaml.YAMLError as exc:
+        raise LaunchError(f"invalid YAML: {exc}") from None
 
 
 def _ns_join(ns: str, name: str) -> str:

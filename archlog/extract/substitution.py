@@ -10,10 +10,12 @@ from the project is ever executed.
 from __future__ import annotations
 
 import ast
+import itertools
 import math
 import operator
 import os
-from collections.abc import Callable
+import re
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -36,13 +38,17 @@ class UnknownArg:
 
 @dataclass
 class SubstContext:
-    """What substitutions can see: the current file's args, package lookup and environment."""
+    """What substitutions can see: the current file's args, package lookup and environment.
+
+    `anon` holds the $(anon) names of this scope (roslaunch keeps them next to the args, so a
+    group or node copies them and an include starts afresh); `serial` numbers them uniquely."""
 
     args: dict[str, str | UnknownArg]
     find: Callable[[str], Path | None]
     file: Path
     anon: dict[str, str] = field(default_factory=dict)
     env: dict[str, str] = field(default_factory=lambda: dict(os.environ))
+    serial: Iterator[int] = field(default_factory=lambda: itertools.count(1))
 
     def arg(self, name: str) -> str:
         if name not in self.args:
@@ -66,10 +72,18 @@ class SubstContext:
         return default
 
     def anonymous(self, name: str) -> str:
-        return self.anon.setdefault(name, f"{name}_anon{len(self.anon) + 1}")
+        if name not in self.anon:
+            self.anon[name] = f"{name}_anon{next(self.serial)}"
+        return self.anon[name]
+
+    def dirname(self) -> str:
+        return os.path.abspath(os.path.dirname(str(self.file)))
 
     def child(self, args: dict[str, str | UnknownArg] | None = None, file: Path | None = None) -> "SubstContext":
-        return SubstContext(dict(self.args) if args is None else args, self.find, file or self.file, self.anon, self.env)
+        """A copy for a group or node scope; with `args`, a fresh scope for an included file."""
+        fresh = args is not None
+        return SubstContext(args if fresh else dict(self.args), self.find, file or self.file,
+                            {} if fresh else dict(self.anon), self.env, self.serial)
 
 
 def substitute(text: str, ctx: SubstContext) -> str:
@@ -86,7 +100,7 @@ _VALID = ("find", "env", "optenv", "dirname", "anon", "arg")
 def _pass(text: str, ctx: SubstContext, commands: tuple[str, ...]) -> str:
     resolved = text
     for inner in _collect(text):
-        words = inner.split()
+        words = [w for w in inner.split(" ") if w]
         if not words or words[0] not in _VALID:
             raise SubstitutionError(f"unknown substitution command $({inner})")
         if words[0] in commands:
@@ -144,18 +158,20 @@ def _one(command: str, words: list[str], ctx: SubstContext) -> str:
         if len(words) != 1:
             raise SubstitutionError("$(anon) takes exactly one name")
         return ctx.anonymous(words[0])
-    return str(ctx.file.resolve().parent)  # dirname
+    return ctx.dirname()
 
 
 def _find(resolved: str, placeholder: str, words: list[str], ctx: SubstContext) -> str:
-    """$(find pkg) joined with the path that follows it (executables and share files alike)."""
+    """$(find pkg) joined with the path that follows it up to a space (executables and share files
+    alike); one leading separator of that path is dropped."""
     if len(words) != 1:
         raise SubstitutionError("$(find) takes exactly one package")
     before, _, after = resolved.partition(placeholder)
-    cut = min([i for i in (after.find(" "), after.find("$(")) if i >= 0], default=len(after))
-    path, rest = after[:cut], after[cut:]
+    path, space, rest = after.partition(" ")
+    path = path.replace("\\", "/")
+    path = path[1:] if path.startswith("/") else path
     base = ctx.find_pkg(words[0])
-    return before + (os.path.join(base, path.lstrip("/\\")) if path else base) + rest
+    return before + (os.path.join(base, path) if path else base) + space + rest
 
 
 # -- restricted $(eval) -------------------------------------------------------------------
@@ -169,9 +185,12 @@ _CMPOPS = {
     ast.Is: operator.is_, ast.IsNot: operator.is_not,
 }
 _STR_METHODS = {"lower", "upper", "strip", "lstrip", "rstrip", "startswith", "endswith", "replace", "split",
-                "join", "find", "count", "capitalize", "title", "isdigit"}
+                "join", "find", "count", "capitalize", "title", "isdigit", "format"}
 _MATH = {k: v for k, v in vars(math).items() if not k.startswith("_")}
-_BUILTINS = {f.__name__: f for f in (int, float, str, bool, list, dict, len, abs, min, max, round, sorted, sum)}
+_BUILTINS = {f.__name__: f for f in (int, float, str, bool, list, dict, tuple, len, abs, min, max, round, sorted,
+                                     sum, map, filter, zip, any, all, reversed, enumerate, chr, ord, hex, oct, bin,
+                                     divmod, repr, isinstance)}
+_HUGE_WIDTH = re.compile(r"\d{5,}")
 
 
 def auto_value(text: str) -> object:
@@ -197,18 +216,40 @@ def _eval(expr: str, ctx: SubstContext) -> str:
     except SyntaxError as exc:
         raise SubstitutionError(f"$(eval) syntax error: {exc.msg}") from None
     functions: dict[str, object] = {
-        **_MATH, **_BUILTINS,
+        **_MATH,
         "arg": lambda name: auto_value(ctx.arg(name)), "find": ctx.find_pkg, "env": ctx.getenv,
-        "optenv": lambda n, d="": ctx.getenv(n, d), "anon": ctx.anonymous,
-        "dirname": lambda: str(ctx.file.resolve().parent),
-        "true": True, "false": False, "True": True, "False": False, "None": None,
+        "optenv": lambda n, d="": ctx.getenv(n, d), "anon": ctx.anonymous, "dirname": ctx.dirname,
+        "true": True, "false": False, "True": True, "False": False,
     }
-    return str(_Evaluator(ctx, functions).visit(tree.body))
+
+    def lookup(name: str) -> object:
+        """roslaunch's order: its functions and math, then the args (auto-typed), then builtins."""
+        if name in functions:
+            return functions[name]
+        if name in ctx.args or name not in _BUILTINS:
+            return auto_value(ctx.arg(name))
+        return _BUILTINS[name]
+
+    return str(_Evaluator(lookup).visit(tree.body))
+
+
+def arithmetic(expr: str) -> object:
+    """A plain arithmetic expression over numbers, pi and the math functions (for rosparam's rad())."""
+    def lookup(name: str) -> object:
+        if name not in _MATH:
+            raise SubstitutionError(f"name '{name}' is not defined")
+        return _MATH[name]
+
+    try:
+        tree = ast.parse(expr.strip(), mode="eval")
+    except SyntaxError as exc:
+        raise SubstitutionError(f"syntax error: {exc.msg}") from None
+    return _Evaluator(lookup).visit(tree.body)
 
 
 class _Evaluator(ast.NodeVisitor):
-    def __init__(self, ctx: SubstContext, names: dict[str, object]) -> None:
-        self.ctx, self.names = ctx, names
+    def __init__(self, lookup: Callable[[str], object]) -> None:
+        self.lookup = lookup
 
     def generic_visit(self, node: ast.AST) -> object:
         raise SubstitutionError(f"$(eval) does not allow {type(node).__name__}")
@@ -217,9 +258,29 @@ class _Evaluator(ast.NodeVisitor):
         return node.value
 
     def visit_Name(self, node: ast.Name) -> object:
-        if node.id in self.names:
-            return self.names[node.id]
-        return auto_value(self.ctx.arg(node.id))
+        return self.lookup(node.id)
+
+    def visit_Dict(self, node: ast.Dict) -> object:
+        if any(k is None for k in node.keys):
+            return self.generic_visit(node)
+        return {self.visit(k): self.visit(v) for k, v in zip(node.keys, node.values)}  # type: ignore[arg-type]
+
+    def visit_Slice(self, node: ast.Slice) -> object:
+        return slice(*(None if part is None else self.visit(part) for part in (node.lower, node.upper, node.step)))
+
+    def visit_JoinedStr(self, node: ast.JoinedStr) -> object:
+        return "".join(str(self.visit(value)) for value in node.values)
+
+    def visit_FormattedValue(self, node: ast.FormattedValue) -> object:
+        value = self.visit(node.value)
+        value = {ord("s"): str, ord("r"): repr, ord("a"): ascii}.get(node.conversion, lambda v: v)(value)
+        spec = str(self.visit(node.format_spec)) if node.format_spec is not None else ""
+        if _HUGE_WIDTH.search(spec):
+            raise SubstitutionError("$(eval) format width too large")
+        try:
+            return format(value, spec)
+        except (TypeError, ValueError) as exc:
+            raise SubstitutionError(f"$(eval) {exc}") from None
 
     def visit_List(self, node: ast.List) -> object:
         return [self.visit(e) for e in node.elts]
@@ -282,19 +343,24 @@ class _Evaluator(ast.NodeVisitor):
         return self.visit(node.body) if self.visit(node.test) else self.visit(node.orelse)
 
     def visit_Call(self, node: ast.Call) -> object:
-        if node.keywords:
+        if any(k.arg is None for k in node.keywords) or any(isinstance(a, ast.Starred) for a in node.args):
             return self.generic_visit(node)
         args = [self.visit(a) for a in node.args]
-        if isinstance(node.func, ast.Name) and callable(self.names.get(node.func.id)):
-            function = self.names[node.func.id]
+        kwargs = {k.arg: self.visit(k.value) for k in node.keywords}
+        if isinstance(node.func, ast.Name):
+            function = self.lookup(node.func.id)
+            if not callable(function):
+                raise SubstitutionError(f"$(eval) {node.func.id} is not callable")
         elif isinstance(node.func, ast.Attribute) and node.func.attr in _STR_METHODS:
             target = self.visit(node.func.value)
             if not isinstance(target, str):
                 raise SubstitutionError(f"$(eval) cannot call {node.func.attr} on {type(target).__name__}")
+            if node.func.attr == "format" and ("__" in target or _HUGE_WIDTH.search(target)):
+                raise SubstitutionError("$(eval) format string not allowed")
             function = getattr(target, node.func.attr)
         else:
             raise SubstitutionError(f"$(eval) cannot call {ast.unparse(node.func)}")
         try:
-            return function(*args)  # type: ignore[operator]
+            return function(*args, **kwargs)  # type: ignore[operator]
         except (TypeError, ValueError, OverflowError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from catkin_pkg.package import InvalidPackage, parse_package
+from lxml import etree
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cmake import commands
@@ -22,11 +23,14 @@ _SHEBANG = re.compile(rb"^#!.*python")
 
 @dataclass
 class Executable:
+    """A node executable, or a nodelet plugin (then `cls` names its C++ class)."""
+
     package: str
     name: str
     lang: str
     sources: list[Path]
     line: int = 0
+    cls: str | None = None
 
 
 @dataclass
@@ -36,6 +40,7 @@ class Package:
     executables: dict[str, Executable] = field(default_factory=dict)
     plugin_xml: list[str] = field(default_factory=list)
     include_dirs: list[Path] = field(default_factory=list)
+    libraries: dict[str, list[Path]] = field(default_factory=dict)
 
 
 def share_dirs() -> list[Path]:
@@ -88,9 +93,7 @@ class Workspace:
         try:
             parsed = parse_package(str(manifest))
             name = parsed.name
-            plugin_xml = [
-                e.attributes[a] for e in parsed.exports for a in ("plugin",) if a in e.attributes
-            ]
+            plugin_xml = [e.attributes["plugin"] for e in parsed.exports if "plugin" in e.attributes]
         except (InvalidPackage, Exception) as exc:  # catkin_pkg raises several error types
             match = re.search(r"<name>\s*([^<\s]+)\s*</name>", manifest.read_text(errors="replace"))
             self.diagnostics.add(self.display(manifest), 1, "package-xml", f"invalid package.xml: {_first_line(exc)}")
@@ -106,6 +109,7 @@ class Workspace:
         self._cmake_executables(package)
         self._entry_points(package)
         self._script_executables(package)
+        self._nodelets(package)
 
     def _cmake_executables(self, package: Package) -> None:
         self._cmake_dir(package, package.path, {"CMAKE_CURRENT_SOURCE_DIR": str(package.path)}, depth=0)
@@ -129,6 +133,9 @@ class Workspace:
                 sources = [_under(folder, s) for s in c.args[1:] if Path(s).suffix in SOURCE_SUFFIXES | {".cu"}]
                 name = output_names.get(target, target)
                 package.executables[name] = Executable(package.name, name, "cpp", sources, c.line)
+            elif c.name in ("add_library", "cuda_add_library") and c.args:
+                package.libraries[c.args[0]] = [_under(folder, a) for a in c.args[1:]
+                                                if Path(a).suffix in SOURCE_SUFFIXES | {".cu"}]
             elif c.name == "include_directories":
                 package.include_dirs += [_under(folder, a) for a in c.args if a not in ("SYSTEM", "BEFORE", "AFTER")
                                          and "$" not in a]
@@ -142,6 +149,27 @@ class Workspace:
                     if path.is_file():
                         lang = "python" if path.suffix == ".py" or _is_python_script(path) else "other"
                         package.executables[path.name] = Executable(package.name, path.name, lang, [path], c.line)
+
+    def _nodelets(self, package: Package) -> None:
+        """Nodelet plugins declared in the plugin XML files that package.xml exports."""
+        for raw in package.plugin_xml:
+            path = Path(raw.replace("${prefix}", str(package.path)))
+            try:
+                root = etree.parse(str(path)).getroot()
+            except (OSError, etree.XMLSyntaxError) as exc:
+                self.diagnostics.add(self.display(package.path / "package.xml"), 1, "plugin-xml",
+                                     f"plugin description {raw} cannot be read: {exc}", "warning")
+                continue
+            for library in root.iter("library"):
+                target = Path(library.get("path", "")).name.removeprefix("lib")
+                for cls in library.iter("class"):
+                    if "nodelet" not in cls.get("base_class_type", "nodelet"):
+                        continue
+                    name, type_ = cls.get("name") or cls.get("type", ""), cls.get("type", "")
+                    sources = package.libraries.get(target) or _exporting(package.path, type_)
+                    plugin = name.split("/", 1)[-1]
+                    package.executables[plugin] = Executable(package.name, plugin, "cpp", sources,
+                                                             cls.sourceline or 0, type_)
 
     def _entry_points(self, package: Package) -> None:
         """console_scripts of setup.py / setup.cfg (catkin and ament_python packages)."""
@@ -185,6 +213,13 @@ def _manifests(root: Path) -> list[Path]:
 def _under(folder: Path, path: str) -> Path:
     """A CMake path argument: absolute as given, otherwise relative to the current folder."""
     return Path(path) if Path(path).is_absolute() else folder / path
+
+
+def _exporting(folder: Path, cls: str) -> list[Path]:
+    """Source files that PLUGINLIB_EXPORT_CLASS the class (when its library is not found)."""
+    pattern = re.compile(r"PLUGINLIB_EXPORT_CLASS\s*\(\s*" + re.escape(cls) + r"\b")
+    return [p for p in sorted(folder.rglob("*")) if p.suffix in SOURCE_SUFFIXES and p.is_file()
+            and pattern.search(p.read_text(errors="replace"))]
 
 
 def _console_scripts(folder: Path, diagnostics: DiagnosticSink, display) -> list[str]:

@@ -41,7 +41,7 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
         store.locate(elem.id, elem.file, elem.line)
     missing: set[tuple[str, str]] = set()
     for node in config.nodes:
-        kind = tuple(node.plugin.split("/", 1)) if node.plugin and "/" in node.plugin else (node.pkg, node.type)
+        kind = node.kind
         summary = summaries.get(kind)
         store.add("node", node.name, node.pkg, node.type, node.elem.id)
         store.locate(node.elem.id, node.elem.file, node.elem.line)
@@ -162,6 +162,8 @@ def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Work
     config = LaunchConfig()
     for index, ((pkg, exe), summary) in enumerate(sorted(summaries.items()), 1):
         executable = workspace.executable(pkg, exe)
+        if executable is not None and executable.cls:
+            continue  # a nodelet runs inside a manager, not on its own
         source = executable.sources[0] if executable and executable.sources else None
         file = summary.name_file or (workspace.display(source) if source else pkg)
         elem = Element(f"x{index:05d}", file, summary.name_line or 1)

@@ -74,7 +74,9 @@ def archlog_view(files: list[Path], args: dict[str, str], package_path: list[Pat
                                    "remaps": {_anon(a): _anon(b) for a, b, _e in node.remaps}}
     params = {_anon(k): _anon(v) for k, (v, _e) in config.params.items() if not isinstance(v, Unknown)}
     errors = [d for d in sink.items if d.severity == "error" or d.code in ("launch-unresolved", "launch-condition")]
-    duplicates = len(config.nodes) != len({n.name for n in config.nodes})
+    # roslaunch rejects nodes declared with one name; when they also keep it, AL301 reports it
+    declared = [n.declared for n in config.nodes if n.declared]
+    duplicates = len(declared) != len(set(declared))
     return View(nodes, params, "duplicate node names" if duplicates and not errors else
                 (errors[0].message if errors else None), sink.items)
 
