@@ -140,3 +140,20 @@ def test_substitution_nesting_and_optenv() -> None:
     assert substitute("$(eval str(n) + 'x' + arg('pkg'))", ctx) == "2xdemo"
     assert substitute("$(dirname)", ctx) == "/ws/demo/launch"
     assert substitute("$(anon a)", ctx) == substitute("$(anon a)", ctx) != substitute("$(anon b)", ctx)
+
+
+@pytest.mark.parametrize("body, ros2_line", [
+    ('<node pkg="demo" type="talker" name="t"/>', None),
+    ('<arg name="ns" default="x"/>\n<node pkg="demo" exec="talker" name="t"/>', 3),
+    ('<let name="a" value="1"/>', 2),
+    ('<node pkg="demo" type="talker" name="$(var who)"/>', 2),
+    ('<group><push-ros-namespace namespace="r"/></group>', 2),
+])
+def test_dialect_is_decided_by_content_not_file_name(tmp_path: Path, body: str, ros2_line: int | None) -> None:
+    (tmp_path / "main.launch.xml").write_text(f"<launch>\n{body}\n</launch>\n")
+    sink = DiagnosticSink()
+    config = LaunchInterpreter(Workspace([tmp_path], sink), sink).load([tmp_path / "main.launch.xml"], {})
+    if ros2_line is None:
+        assert [n.name for n in config.nodes] == ["/t"] and sink.items == []
+    else:
+        assert config.nodes == [] and [(d.line, d.code) for d in sink.items] == [(ros2_line, "launch-ros2")]

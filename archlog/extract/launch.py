@@ -189,6 +189,10 @@ class LaunchInterpreter:
     def _file(self, path: Path, scope: _Scope) -> bool:
         """Load a file into the scope; False when it could not be read at all."""
         shown = self.workspace.display(path)
+        if path.suffix in (".py", ".yaml", ".yml"):
+            self.diagnostics.add(shown, 1, "launch-ros2", "a ROS 2 launch file (Python or YAML): not interpreted "
+                                 "as ROS 1; its nodes are not part of this configuration", "warning")
+            return False
         try:
             root = etree.parse(str(path), etree.XMLParser(remove_comments=True)).getroot()
         except etree.XMLSyntaxError as exc:
@@ -198,7 +202,12 @@ class LaunchInterpreter:
             self.diagnostics.add(shown, 1, "launch-missing", f"cannot read launch file: {exc}", "error")
             return False
         if root.tag != "launch":
-            self._diag(path, root, "launch-xml", f"root element is <{root.tag}>, not <launch> (a ROS 2 file?)")
+            self._diag(path, root, "launch-xml", f"root element is <{root.tag}>, not <launch>")
+            return False
+        marker = ros2_marker(root)
+        if marker is not None:
+            self._diag(path, marker, "launch-ros2", f"a ROS 2 XML launch file (this <{marker.tag}> is ROS 2's "
+                       "dialect): not interpreted as ROS 1; its nodes are not part of this configuration", "warning")
             return False
         self._children(path, root, scope)
         return True
@@ -559,6 +568,23 @@ class LaunchInterpreter:
             node.plugin = plain[1] if len(plain) > 1 else None
             node.manager = plain[2] if plain[0] == "load" and len(plain) > 2 else None
         self.config.nodes.append(node)
+
+
+_ROS2_TAGS = {"let", "push-ros-namespace", "push_ros_namespace", "set_remap", "set_parameter", "set_env",
+              "executable", "node_container", "composable_node", "load_composable_node", "pop-ros-namespace"}
+_ROS2_SUBST = ("$(var ", "$(find-pkg-share ", "$(find-pkg-prefix ", "$(find-exec ", "$(exec-in-pkg ")
+
+
+def ros2_marker(root: etree._Element) -> etree._Element | None:
+    """The first element that shows a <launch> file is ROS 2's dialect (both use .launch.xml):
+    a ROS 2-only tag, a node with `exec`, or a ROS 2 substitution in an attribute."""
+    for el in root.iter():
+        if not isinstance(el.tag, str):
+            continue
+        if el.tag in _ROS2_TAGS or (el.tag == "node" and el.get("exec") is not None) or \
+                any(v.find(marker) >= 0 for v in el.attrib.values() for marker in _ROS2_SUBST):
+            return el
+    return None
 
 
 def convert(text: str, kind: str, angles: bool = False) -> object:
