@@ -107,7 +107,7 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
             else:
                 env = env or CppEnvironment(
                     [d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
-                    generated_headers(workspace, diagnostics))
+                    generated_headers(workspace, diagnostics), workspace.roots)
                 shown = {s: workspace.display(s) for s in exe.sources}
                 cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, env, exe.cls))
     for job, result in _run_isolated(cpp_jobs):

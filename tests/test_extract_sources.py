@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
@@ -172,3 +173,38 @@ def test_handles_and_strings_through_constructor_call_sites(tmp_path: Path) -> N
         '  Part p("arm", nh); ros::spin(); }\n')
     result = analyse([tmp_path], [], {}, [])
     assert sorted(t for _p, _n, t, _ty in result.store.rows("publisher")) == ["/arm/rel", "/chatter", "/talker/status"]
+
+
+def test_newer_python_syntax_is_repaired(tmp_path: Path) -> None:
+    (tmp_path / "new.py").write_text("import rclpy\nfrom std_msgs.msg import String\ntype Alias = list[int]\n"
+                                     "def f[T](x: T) -> T:\n    return x\nclass C[T]:\n    pass\n"
+                                     "node = rclpy.create_node('n')\nnode.create_publisher(String, 'out', 1)\n")
+    sink = DiagnosticSink()
+    s = extract_python(tmp_path / "new.py", "demo", "n", "new.py", sink)
+    assert [(p.kind, p.name) for p in s.ports] == [("publisher", "out")] and s.default_name == "n"
+    assert [(d.line, d.code) for d in sink.items] == [(3, "python2")]
+
+
+def test_python_that_no_repair_can_save_is_a_diagnostic(tmp_path: Path) -> None:
+    (tmp_path / "future.py").write_text("import rclpy\n" + "x = (\n" * 30)
+    sink = DiagnosticSink()
+    s = extract_python(tmp_path / "future.py", "demo", "f", "future.py", sink)
+    assert s.ports == [] and s.incomplete and [d.code for d in sink.items] == ["python-syntax"]
+
+
+def test_compile_commands_flags_are_used(tmp_path: Path) -> None:
+    """A define that only the compile database sets decides which topic the node uses."""
+    (tmp_path / "src").mkdir()
+    source = tmp_path / "src" / "n.cpp"
+    source.write_text('#include <ros/ros.h>\n#include <std_msgs/String.h>\nint main(int c, char** v) {\n'
+                      '  ros::init(c, v, "n"); ros::NodeHandle nh;\n#ifdef USE_FRONT\n'
+                      '  nh.advertise<std_msgs::String>("front", 1);\n#else\n'
+                      '  nh.advertise<std_msgs::String>("rear", 1);\n#endif\n}\n')
+    (tmp_path / "build").mkdir()
+    (tmp_path / "build" / "compile_commands.json").write_text(json.dumps([
+        {"directory": str(tmp_path / "build"), "file": str(source),
+         "command": f"/usr/bin/c++ -DUSE_FRONT -I/nonexistent -o n.o -c {source}"}]))
+    names_of = {source: "src/n.cpp"}
+    with_db = extract_cpp([source], "demo", "n", CppEnvironment([], None, [tmp_path]), names_of, DiagnosticSink())
+    without = extract_cpp([source], "demo", "n", CppEnvironment([]), names_of, DiagnosticSink())
+    assert [p.name for p in with_db.ports] == ["front"] and [p.name for p in without.ports] == ["rear"]

@@ -73,3 +73,17 @@ def test_bad_manifests_are_diagnostics(tmp_path: Path) -> None:
     ws = Workspace([tmp_path], sink)
     assert set(ws.packages) == {"a", "broken"}
     assert sorted(d.code for d in sink.items) == ["duplicate-package", "package-xml"]
+
+
+def test_cmake_loops_lists_and_skipped_function_bodies(tmp_path: Path) -> None:
+    package(tmp_path, "loops", {
+        "CMakeLists.txt": "project(loops)\nset(NODES talker listener)\nlist(APPEND NODES relay)\n"
+                          "foreach(node ${NODES})\n  add_executable(${node}_node src/${node}.cpp)\nendforeach()\n"
+                          "foreach(i RANGE 1 2)\n  add_executable(worker${i} src/worker.cpp)\nendforeach()\n"
+                          "function(helper name)\n  add_executable(${name} src/never.cpp)\nendfunction()\n"
+                          "if(WIN32)\n  add_executable(win_only src/win.cpp)\nendif()\n",
+    })
+    ws = Workspace([tmp_path], DiagnosticSink())
+    assert sorted(ws.packages["loops"].executables) == ["listener_node", "relay_node", "talker_node", "win_only",
+                                                         "worker1", "worker2"]
+    assert ws.packages["loops"].executables["relay_node"].sources[0].name == "relay.cpp"

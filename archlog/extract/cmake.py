@@ -1,4 +1,6 @@
-"""A small CMakeLists.txt reader: commands with arguments, `set()` variables and `${VAR}` expansion."""
+"""A small CMakeLists.txt reader: commands with `${VAR}` expansion, `set()`, `list(APPEND)` and
+`foreach()` loops. Conditions are not evaluated (every branch is read); function and macro
+bodies are skipped."""
 
 from __future__ import annotations
 
@@ -19,14 +21,25 @@ class Command:
     line: int
 
 
+@dataclass(frozen=True)
+class _Raw:
+    name: str
+    args: tuple[tuple[str, bool], ...]  # (text, quoted)
+    line: int
+
+
 def commands(text: str, variables: dict[str, str] | None = None) -> list[Command]:
-    """Parse CMake source into commands; arguments are expanded with the variables set so far
-    (`variables`, if given, seeds them and receives the ones set)."""
+    """Parse and interpret CMake source; `variables`, if given, seeds them and receives the ones set."""
     variables = {} if variables is None else variables
     result: list[Command] = []
+    _run(_parse(text), variables, result)
+    return result
+
+
+def _parse(text: str) -> list[_Raw]:
     tokens = [(m.group(0), text.count("\n", 0, m.start()) + 1) for m in _TOKEN.finditer(text)]
     tokens = [t for t in tokens if not t[0].startswith("#")]
-    i = 0
+    raws, i = [], 0
     while i < len(tokens):
         name, line = tokens[i]
         if i + 1 < len(tokens) and tokens[i + 1][0] == "(" and re.fullmatch(r"\w+", name):
@@ -36,22 +49,75 @@ def commands(text: str, variables: dict[str, str] | None = None) -> list[Command
                 depth += tok == "("
                 depth -= tok == ")"
                 if depth and tok not in "()":
-                    value = _expand(_unquote(tok), variables)
-                    args.extend([value] if tok.startswith('"') else [a for a in value.split(";") if a])
+                    quoted = tok.startswith('"') and tok.endswith('"')
+                    args.append((tok[1:-1] if quoted else tok, quoted))
                 j += 1
-            cmd = Command(name.lower(), tuple(args), line)
-            _track(cmd, variables)
-            result.append(cmd)
+            raws.append(_Raw(name.lower(), tuple(args), line))
             i = j
         else:
             i += 1
-    return result
+    return raws
 
 
-def _unquote(tok: str) -> str:
-    if tok.startswith('"') and tok.endswith('"'):
-        return tok[1:-1]
-    return tok
+def _run(raws: list[_Raw], variables: dict[str, str], out: list[Command]) -> None:
+    i = 0
+    while i < len(raws):
+        raw = raws[i]
+        if raw.name in ("function", "macro", "foreach"):
+            end = _matching_end(raws, i)
+            if raw.name == "foreach":
+                _loop(raw, raws[i + 1:end], variables, out)
+            i = end + 1
+            continue
+        cmd = Command(raw.name, _expand_args(raw.args, variables), raw.line)
+        _track(cmd, variables)
+        out.append(cmd)
+        i += 1
+
+
+def _matching_end(raws: list[_Raw], start: int) -> int:
+    opener = raws[start].name
+    depth = 0
+    for j in range(start, len(raws)):
+        depth += raws[j].name == opener
+        depth -= raws[j].name == f"end{opener}"
+        if depth == 0:
+            return j
+    return len(raws) - 1
+
+
+def _loop(head: _Raw, body: list[_Raw], variables: dict[str, str], out: list[Command]) -> None:
+    args = _expand_args(head.args, variables)
+    if not args:
+        return
+    var, items = args[0], list(args[1:])
+    if items[:1] == ["IN"]:
+        items = items[1:]
+        values: list[str] = []
+        mode = ""
+        for item in items:
+            if item in ("LISTS", "ITEMS"):
+                mode = item
+            elif mode == "LISTS":
+                values += [v for v in variables.get(item, "").split(";") if v]
+            else:
+                values.append(item)
+        items = values
+    elif items[:1] == ["RANGE"]:
+        bounds = [int(b) for b in items[1:] if b.lstrip("-").isdigit()]
+        start, stop = (0, bounds[0]) if len(bounds) == 1 else (bounds[0], bounds[1]) if bounds else (0, -1)
+        items = [str(n) for n in range(start, stop + 1)]
+    for item in items:
+        variables[var] = item
+        _run(body, variables, out)
+
+
+def _expand_args(args: tuple[tuple[str, bool], ...], variables: dict[str, str]) -> tuple[str, ...]:
+    expanded: list[str] = []
+    for text, quoted in args:
+        value = _expand(text, variables)
+        expanded.extend([value] if quoted else [a for a in value.split(";") if a])
+    return tuple(expanded)
 
 
 def _expand(value: str, variables: dict[str, str]) -> str:
@@ -72,3 +138,6 @@ def _track(cmd: Command, variables: dict[str, str]) -> None:
         if "CACHE" in cmd.args:
             values = values[:1]
         variables[cmd.args[0]] = ";".join(values)
+    elif cmd.name == "list" and len(cmd.args) > 1 and cmd.args[0] == "APPEND":
+        current = [v for v in variables.get(cmd.args[1], "").split(";") if v]
+        variables[cmd.args[1]] = ";".join(current + list(cmd.args[2:]))

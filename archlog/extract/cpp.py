@@ -11,6 +11,7 @@ from __future__ import annotations
 import glob
 import json
 import re
+import shlex
 import shutil
 import subprocess
 import tempfile
@@ -49,7 +50,9 @@ class CppEnvironment:
 
     workspace_includes: list[Path]
     generated: Path | None = None
+    roots: list[Path] = field(default_factory=list)
     args: list[str] = field(default_factory=list)
+    per_file: dict[str, list[str]] = field(default_factory=dict)
     pch: Path | None = None
     fingerprint: str = ""
 
@@ -62,10 +65,16 @@ class CppEnvironment:
         if rdir:
             self.args += ["-resource-dir", rdir]
         self.pch = _ros_pch(system, rdir)
+        self.per_file = _compile_commands(self.roots)
         self.fingerprint = key(json.dumps(self.parse_args()), *_tree_stamp(self.workspace_includes))
 
-    def parse_args(self) -> list[str]:
-        return self.args + (["-include-pch", str(self.pch), "-Xclang", "-fno-validate-pch"] if self.pch else [])
+    def parse_args(self, source: Path | None = None) -> list[str]:
+        pch = ["-include-pch", str(self.pch), "-Xclang", "-fno-validate-pch"] if self.pch else []
+        return self.args + self.file_args(source) + pch
+
+    def file_args(self, source: Path | None) -> list[str]:
+        """Flags a compile database gives for this file (include paths, defines, standard)."""
+        return self.per_file.get(str(source.resolve()), []) if source is not None else []
 
 
 def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvironment,
@@ -81,7 +90,7 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             diagnostics.add(name, 1, "cpp-missing", "source file listed in CMakeLists.txt does not exist", "error")
             summary.incomplete = summary.incomplete or f"{name}: missing"
             continue
-        cache_key = key(env.fingerprint, name, cls or "", source.read_bytes())
+        cache_key = key(env.fingerprint, name, cls or "", " ".join(env.file_args(source)), source.read_bytes())
         result = cache.get(cache_key)
         if not isinstance(result, FileResult) or not _still_valid(result, env):
             index = index or ci.Index.create()
@@ -95,11 +104,12 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     try:
         stubs = stub_dir(_unresolved_includes(source, env))
         extra = [f"-I{stubs}"] if stubs else []
-        tu = _load(index, source, env.parse_args() + extra, env.args + extra)
+        own = env.file_args(source)
+        tu = _load(index, source, env.parse_args(source) + extra, env.args + own + extra)
         missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
         more = stub_dir(missing) if missing else None
         if more is not None and not extra:  # found only while parsing (included by a header): again
-            tu = _load(index, source, env.parse_args() + [f"-I{more}"], env.args + [f"-I{more}"])
+            tu = _load(index, source, env.parse_args(source) + [f"-I{more}"], env.args + own + [f"-I{more}"])
     except ci.TranslationUnitLoadError as exc:
         result = FileResult()
         result.diagnostics.append(Diagnostic(shown, 1, "cpp-parse", f"libclang could not parse this file: {exc}",
@@ -119,6 +129,34 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
         if result.fallback_lines:
             result.incomplete = f"{shown}:{first.location.line}: does not compile"
     return result
+
+
+_KEPT_FLAGS = ("-I", "-D", "-U", "-isystem", "-std=", "-include")
+
+
+def _compile_commands(roots: list[Path]) -> dict[str, list[str]]:
+    """Per-file flags from build/compile_commands.json (catkin/colcon with CMAKE_EXPORT_COMPILE_COMMANDS)."""
+    flags: dict[str, list[str]] = {}
+    for root in roots:
+        for database in (root / "build" / "compile_commands.json", root / "compile_commands.json"):
+            try:
+                entries = json.loads(database.read_text())
+            except (OSError, ValueError):
+                continue
+            for entry in entries if isinstance(entries, list) else []:
+                words = entry.get("arguments") or shlex.split(entry.get("command", ""))
+                directory = Path(entry.get("directory", root))
+                kept, take_next = [], False
+                for word in words[1:]:
+                    if take_next:
+                        kept.append(word)
+                        take_next = False
+                    elif word.startswith(_KEPT_FLAGS):
+                        kept.append(word)
+                        take_next = word in ("-I", "-D", "-U", "-isystem", "-include")
+                source = (directory / entry.get("file", "")).resolve()
+                flags[str(source)] = kept
+    return flags
 
 
 @lru_cache(maxsize=1)

@@ -271,6 +271,10 @@ class _Walker:
             return "~"
         if owner == "ros::this_node" and name == "getNamespace":
             return ""
+        if owner in (NODE_HANDLE, "ros::param") and name == "param" and len(args) == 2 and _is_rvalue(args[1]):
+            handle = self.handle_of(next(expr.get_children())) if owner == NODE_HANDLE else ""
+            return ParamRef(self.value(args[0], depth + 1), self.value(args[1], depth + 1), handle, self.file,
+                            expr.location.line)
         if owner == NODE_HANDLE and name in ("resolveName", "getNamespace"):
             return self.handle_of(next(expr.get_children())) if name == "getNamespace" else self.value(args[0], depth + 1)
         if name in ("basic_string", "string", "c_str", "str") or (name == "" and len(args) == 1):
@@ -293,7 +297,8 @@ class _Walker:
             self.constructed(call, owner, args)
         elif owner in ("ros::Rate", "ros::WallRate") and ref.kind == K.CONSTRUCTOR and args:
             hz = self.value(args[0])
-            self.add("timer", call, _period(hz) if isinstance(hz, str) else hz, "", "")
+            self.add("timer", call, _period(hz) if isinstance(hz, str) else self.unknown(call, "rate not constant"),
+                     "", "")
         elif owner == "ros" and name == "init" and len(args) >= 3:
             self.result.default_name = self.value(args[2])
             self.result.name_file, self.result.name_line = self.file, call.location.line
@@ -366,7 +371,9 @@ class _Walker:
                 args = _written_args(cursor)
                 if args:
                     value = self.value(args[0])
-                    return _period(value) if "Rate" in cursor.spelling and isinstance(value, str) else value
+                    if "Rate" not in cursor.spelling:
+                        return value
+                    return _period(value) if isinstance(value, str) else self.unknown(cursor, "rate not constant")
         return self.unknown(expr, "timer period not resolved")
 
     def port_type(self, call: ci.Cursor, args: list[ci.Cursor], name: str) -> Value:
@@ -385,11 +392,20 @@ class _Walker:
                         params = [c for c in cursor.get_children() if c.kind == K.PARM_DECL]
                         if params and (found := _ros_type(params[0].type)):
                             return found
+                    if "function<" in cursor.type.spelling and (found := _type_from_spelling(
+                            cursor.type.spelling.split("function<", 1)[1])):
+                        return found
         return template_arg or self.unknown(call, "message type not resolved")
 
     def add(self, kind: str, call: ci.Cursor, name: Value, type_: Value, handle: Value,
             default: Value | None = None) -> None:
         loc = call.location
+        if isinstance(name, str) and name.startswith("~") and call.referenced is not None and \
+                qualified(call.referenced.semantic_parent) == NODE_HANDLE:
+            self.result.diagnostics.append(Diagnostic(
+                self.file, loc.line, "cpp-private-name",
+                f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
+                "(the node dies at start-up); use a NodeHandle(\"~\") instead", "error", loc.column))
         self.result.ports.append(Port(kind, name, type_, self.file, loc.line, loc.column, handle, default))
 
     # -- when the AST is incomplete -------------------------------------------------------------
@@ -452,6 +468,9 @@ def _ros_type(type_: ci.Type) -> str | None:
 
 
 def _type_from_spelling(spelling: str) -> str | None:
+    match = _MSG_TYPE.search(spelling)
+    if match:
+        return _action_base(f"{match.group(1)}/{match.group(2)}")
     inner = spelling.replace("const ", "")
     if "<" in inner:
         inner = inner[inner.index("<") + 1:]

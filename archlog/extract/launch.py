@@ -73,10 +73,12 @@ class LaunchNode:
 
 @dataclass
 class LaunchConfig:
-    """The system configuration: node instances and parameter values."""
+    """The system configuration: node instances, parameter values, and every scope-level remap
+    (resolved in its scope's namespace) so that one that reaches no node can be reported."""
 
     nodes: list[LaunchNode] = field(default_factory=list)
     params: dict[str, tuple[object, Element]] = field(default_factory=dict)
+    scope_remaps: list[tuple[Element, str, str]] = field(default_factory=list)
 
 
 @dataclass
@@ -330,7 +332,9 @@ class LaunchInterpreter:
             raise LaunchError(f"machine [{name}] already added and does not match the duplicate entry")
 
     def _tag_remap(self, path: Path, el: etree._Element, scope: _Scope) -> None:
-        scope.add_remap(self._required(scope, el, "from"), self._required(scope, el, "to"), self._element(path, el))
+        src, dst, elem = self._required(scope, el, "from"), self._required(scope, el, "to"), self._element(path, el)
+        scope.add_remap(src, dst, elem)
+        self.config.scope_remaps.append((elem, names.join(scope.ns, src), names.join(scope.ns, dst)))
 
     def _tag_include(self, path: Path, el: etree._Element, scope: _Scope) -> None:
         target = Path(self._required(scope, el, "file"))

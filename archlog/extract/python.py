@@ -79,14 +79,15 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
     lines = source.splitlines()
     if tree is not None and len(repaired) * 2 > len([ln for ln in lines if ln.strip()]):
         tree = None  # mostly not Python: do not pretend to have read it
+    if tree is None:
         diagnostics.add(shown, repaired[0] if repaired else 1, "python-syntax",
                         "does not parse as Python 3 or 2; its ROS calls are not recovered", "error")
         summary.incomplete = f"{shown}: does not parse"
         return summary
     if repaired:
         diagnostics.add(shown, repaired[0], "python2",
-                        f"Python 2 source: {len(repaired)} line(s) repaired or skipped to recover its ROS calls",
-                        "note")
+                        f"Python 2 (or newer) syntax: {len(repaired)} line(s) repaired or skipped to recover its ROS "
+                        "calls", "note")
         lost = [n for n in dropped if _ROS_WORDS.search(lines[n - 1])]
         if lost:
             summary.incomplete = f"{shown}:{lost[0]}: a line with ROS calls could not be read"
@@ -119,6 +120,10 @@ _REPAIRS = [
     (re.compile(r"\bur(['\"])"), r"u\1"),
     (re.compile(r"<>"), "!="),
     (re.compile(r"`([^`]*)`"), r"repr(\1)"),
+    # newer than the running Python (3.12 type statements and generic parameter lists)
+    (re.compile(r"^(\s*)type\s+(\w+)\s*(?:\[[^\]]*\])?\s*="), r"\1\2 ="),
+    (re.compile(r"^(\s*(?:async\s+)?def\s+\w+)\[[^\]]*\]\s*\("), r"\1("),
+    (re.compile(r"^(\s*class\s+\w+)\[[^\]]*\]"), r"\1"),
 ]
 
 
@@ -130,12 +135,14 @@ def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]
     repaired: list[int] = []
     dropped: list[int] = []
     grammar = parso.load_grammar()
-    for _attempt in range(200):
+    budget = max(10, len(lines) // 4)  # past this many repairs the file is not Python 2 either
+    while len(repaired) <= budget:
         try:
             return ast.parse("\n".join(lines) + "\n"), repaired, dropped
         except SyntaxError as exc:
             bad = sorted({e.start_pos[0] for e in grammar.iter_errors(grammar.parse("\n".join(lines)))}
                          | {exc.lineno or 1})
+        progress = False
         for number in bad:
             if not 1 <= number <= len(lines):
                 continue
@@ -150,8 +157,11 @@ def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]
                     continue
                 dropped.append(number)
             lines[number - 1] = fixed
+            progress = True
             if number not in repaired:
                 repaired.append(number)
+        if not progress:
+            break
     return None, repaired, dropped
 
 

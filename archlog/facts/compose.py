@@ -36,6 +36,9 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
                       workspace.display(exe.sources[0]) if exe.sources else "")
     for type_name, (kind, path) in sorted(messages.items()):
         store.add("message_type", type_name, kind, workspace.display(str(path)))
+    for elem, src, dst in config.scope_remaps:
+        store.add("remap_declared", elem.id, src, dst)
+        store.locate(elem.id, elem.file, elem.line)
     for name, (value, elem) in config.params.items():
         store.add("param", name, value if isinstance(value, Unknown) else _text(value), elem.id)
         store.locate(elem.id, elem.file, elem.line)

@@ -59,6 +59,9 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("configuration", "remap", "A remapping applied to a node instance, both sides resolved in its namespace.",
          ("elem", "id", "the `<remap>` element (or node args) that declares it"), _NODE,
          ("from", "name", "resolved source name"), ("to", "name", "resolved target name")),
+    _rel("configuration", "remap_declared", "A <remap> outside any <node>, resolved in its scope's namespace "
+         "(whether or not a node follows it).", ("elem", "id", "the <remap> element"),
+         ("from", "name", "resolved source name"), ("to", "name", "resolved target name")),
     _rel("configuration", "param", "A parameter value set by the configuration.",
          ("param", "name", "resolved parameter name"), ("value", "str", "value as text"),
          ("elem", "id", "the element that sets it")),

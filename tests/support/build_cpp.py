@@ -12,7 +12,8 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.workspace import Workspace
 
 LIBS = ["-lroscpp", "-lrosconsole", "-lroscpp_serialization", "-lrostime", "-lboost_system", "-lpthread"]
-OPTIONAL_LIBS = {"image_transport": "-limage_transport", "tf2_ros": "-ltf2_ros", "actionlib": "-lactionlib",
+OPTIONAL_LIBS = {"image_transport": "-limage_transport", "tf2_ros": "-ltf2_ros -ltf2",
+                 "actionlib": "-lactionlib -lboost_thread",
                  "tf/": "-ltf", "diagnostic_updater": "-ldiagnostic_updater", "message_filters": "-lmessage_filters",
                  "nodelet": "-lnodeletlib", "pluginlib": "-lclass_loader"}
 
@@ -32,7 +33,7 @@ def build_workspace(variant: Path, target: Path) -> Path:
 
 def _compile(package, executable) -> str | None:
     text = "".join(s.read_text(errors="replace") for s in executable.sources)
-    extra = [flag for needle, flag in OPTIONAL_LIBS.items() if needle in text]
+    extra = [flag for needle, flags in OPTIONAL_LIBS.items() if needle in text for flag in flags.split()]
     out = package.path / "bin" / executable.name
     out.parent.mkdir(exist_ok=True)
     includes = [f"-I{package.path / 'include'}", *(f"-I{d}" for d in package.include_dirs)]
