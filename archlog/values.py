@@ -35,11 +35,42 @@ class Concat:
     parts: tuple["Value", ...]
 
 
-Value = str | Unknown | ParamRef | Concat
+@dataclass(frozen=True)
+class Alternatives:
+    """Several possible values: one of them at run time (a ternary, if/else assignments), or, with
+    `every`, all of them (a loop over a literal list: each iteration makes its own port)."""
+
+    options: tuple["Value", ...]
+    every: bool = False
+
+
+Value = str | Unknown | ParamRef | Concat | Alternatives
+MAX_ALTERNATIVES = 16
+
+
+def alternatives(options: list["Value"], every: bool, at: Unknown) -> "Value":
+    """Alternatives of distinct values; one value stands alone; too many or unknown ones: `at`."""
+    distinct = list(dict.fromkeys(options))
+    if any(isinstance(o, Unknown) for o in distinct) or not distinct or len(distinct) > MAX_ALTERNATIVES:
+        return at
+    return distinct[0] if len(distinct) == 1 else Alternatives(tuple(distinct), every)
 
 
 def concat(*parts: Value) -> Value:
-    """Join values; literal neighbours fold into one string."""
+    """Join values; literal neighbours fold into one string; alternatives distribute."""
+    for index, part in enumerate(parts):
+        if isinstance(part, Alternatives):
+            every, options = part.every, []
+            for option in part.options:
+                joined = concat(*parts[:index], option, *parts[index + 1:])
+                if isinstance(joined, Alternatives):  # several alternative parts: all combinations
+                    every = every and joined.every
+                    options += joined.options
+                else:
+                    options.append(joined)
+            if len(options) > MAX_ALTERNATIVES:
+                return Unknown("more than 16 alternatives", "", 0)
+            return Alternatives(tuple(dict.fromkeys(options)), every)
     folded: list[Value] = []
     for part in parts:
         pieces = part.parts if isinstance(part, Concat) else (part,)

@@ -208,3 +208,20 @@ def test_compile_commands_flags_are_used(tmp_path: Path) -> None:
     with_db = extract_cpp([source], "demo", "n", CppEnvironment([], None, [tmp_path]), names_of, DiagnosticSink())
     without = extract_cpp([source], "demo", "n", CppEnvironment([]), names_of, DiagnosticSink())
     assert [p.name for p in with_db.ports] == ["front"] and [p.name for p in without.ports] == ["rear"]
+
+
+def test_cpp_alternatives_and_loops(tmp_path: Path) -> None:
+    source = tmp_path / "alt.cpp"
+    source.write_text(
+        '#include <ros/ros.h>\n#include <std_msgs/String.h>\n#include <string>\n#include <vector>\n'
+        'int main(int argc, char** argv) {\n  ros::init(argc, argv, "alt");\n  ros::NodeHandle nh;\n'
+        '  nh.advertise<std_msgs::String>(argc > 1 ? "front/scan" : "rear/scan", 1);\n'
+        '  std::string mode;\n  if (argc > 2) { mode = "fast"; } else { mode = "slow"; }\n'
+        '  nh.advertise<std_msgs::String>("mode_" + mode, 1);\n'
+        '  for (const std::string side : {"left", "right"}) nh.advertise<std_msgs::String>(side + "/image", 1);\n'
+        '  const char* cams[] = {"cam0", "cam1"};\n'
+        '  for (const char* cam : cams) nh.advertise<std_msgs::String>(std::string(cam) + "/info", 1);\n}\n')
+    s = extract_cpp([source], "demo", "alt", CppEnvironment([]), {source: "alt.cpp"}, DiagnosticSink())
+    got = [(p.line, p.name.options if hasattr(p.name, "options") else p.name) for p in s.ports]
+    assert got == [(8, ("front/scan", "rear/scan")), (11, ("mode_fast", "mode_slow")), (12, "left/image"),
+                   (12, "right/image"), (14, "cam0/info"), (14, "cam1/info")]

@@ -17,7 +17,7 @@ import clang.cindex as ci
 from archlog import names
 from archlog.diagnostics import Diagnostic
 from archlog.extract.summary import Port
-from archlog.values import ParamRef, Unknown, Value, concat
+from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
 
 K = ci.CursorKind
 _SKIP = (K.TYPE_REF, K.NAMESPACE_REF, K.TEMPLATE_REF)
@@ -111,6 +111,7 @@ class _Walker:
         self.param_vars: dict[tuple, Value] = {}
         self.call_sites: dict[tuple, list[ci.Cursor]] = {}
         self.spans: list[tuple[int, int]] | None = None
+        self.loops: dict[tuple, ci.Cursor] = {}
 
     @staticmethod
     def key(decl: ci.Cursor | None) -> tuple | None:
@@ -133,6 +134,10 @@ class _Walker:
         for cursor in cursors:
             if cursor.kind == K.CALL_EXPR and cursor.referenced is not None:
                 self.call_sites.setdefault(self.key(cursor.referenced.canonical), []).append(cursor)
+            elif cursor.kind == K.CXX_FOR_RANGE_STMT:
+                children = list(cursor.get_children())
+                if len(children) >= 2 and children[0].kind == K.VAR_DECL:
+                    self.loops[self.key(children[0])] = children[1]
         for cursor in cursors:
             if cursor.kind == K.CONSTRUCTOR:
                 self.member_inits(cursor)
@@ -235,8 +240,8 @@ class _Walker:
             return self.call_value(expr, depth)
         if kind == K.CONDITIONAL_OPERATOR:
             *_cond, then, other = [c for c in expr.get_children()]
-            a, b = self.value(then, depth + 1), self.value(other, depth + 1)
-            return a if a == b else self.unknown(expr, "one of several values")
+            return alternatives([self.value(then, depth + 1), self.value(other, depth + 1)], False,
+                                self.unknown(expr, "one of several values"))
         children = [c for c in expr.get_children() if c.kind not in _SKIP]
         if kind in (K.UNEXPOSED_EXPR, K.PAREN_EXPR, K.CXX_FUNCTIONAL_CAST_EXPR, K.CSTYLE_CAST_EXPR,
                     K.CXX_STATIC_CAST_EXPR) and len(children) == 1:
@@ -252,11 +257,35 @@ class _Walker:
             return self.unknown(expr)
         if decl.kind == K.PARM_DECL:
             return self.from_call_sites(decl, expr, lambda arg: self.value(arg, depth + 1), decl.spelling)
+        if self.key(decl) in self.loops:
+            return self.loop_values(self.loops[self.key(decl)], expr, depth)
         if decl.kind in (K.VAR_DECL, K.FIELD_DECL):
-            init = [c for c in decl.get_children() if c.kind not in _SKIP]
-            if init and (decl.type.is_const_qualified() or _single_assignment(decl)):
+            init = [c for c in decl.get_children() if c.kind not in _SKIP and not _default_constructed(c)]
+            if init and decl.type.is_const_qualified():
                 return self.value(init[-1], depth + 1)
+            assigned = _assignments(decl)
+            if assigned is not None and (init or assigned):
+                return alternatives([self.value(e, depth + 1) for e in init[-1:] + assigned], False,
+                                    self.unknown(expr, "assigned values not all known"))
         return self.unknown(expr)
+
+    def loop_values(self, source: ci.Cursor, expr: ci.Cursor, depth: int) -> Value:
+        """A range-for variable over a literal list (or a variable holding one): every element."""
+        target = source
+        while target.kind in (K.UNEXPOSED_EXPR, K.DECL_REF_EXPR) and target.kind != K.INIT_LIST_EXPR:
+            if target.kind == K.DECL_REF_EXPR and target.referenced is not None:
+                init = [c for c in target.referenced.get_children() if c.kind not in _SKIP]
+                target = init[-1] if init else target
+                if not init:
+                    break
+            else:
+                children = list(target.get_children())
+                if len(children) != 1:
+                    break
+                target = children[0]
+        items = [c for c in target.get_children() if c.kind not in _SKIP] if target.kind == K.INIT_LIST_EXPR else []
+        return alternatives([self.value(i, depth + 1) for i in items], True,
+                            self.unknown(expr, "loop over values not known statically"))
 
     def call_value(self, expr: ci.Cursor, depth: int) -> Value:
         name, owner = expr.spelling, qualified(expr.referenced.semantic_parent) if expr.referenced else ""
@@ -399,6 +428,10 @@ class _Walker:
 
     def add(self, kind: str, call: ci.Cursor, name: Value, type_: Value, handle: Value,
             default: Value | None = None) -> None:
+        if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
+            for option in name.options:
+                self.add(kind, call, option, type_, handle, default)
+            return
         loc = call.location
         if isinstance(name, str) and name.startswith("~") and call.referenced is not None and \
                 qualified(call.referenced.semantic_parent) == NODE_HANDLE:
@@ -513,15 +546,26 @@ def _unquote(literal: str) -> str:
     return body.encode("utf-8").decode("unicode_escape", errors="replace") if "\\" in body else body
 
 
-def _single_assignment(decl: ci.Cursor) -> bool:
-    """A variable that is initialised and never assigned again in its scope."""
+def _default_constructed(init: ci.Cursor) -> bool:
+    """`std::string s;` has a constructor call with no arguments as its 'initialiser'."""
+    return init.kind == K.CALL_EXPR and not _written_args(init)
+
+
+def _assignments(decl: ci.Cursor) -> list[ci.Cursor] | None:
+    """The right-hand sides assigned to a variable in its scope (if/else branches give several),
+    or None when it is also changed otherwise (`+=`, passed by reference)."""
     scope = decl.semantic_parent
     if scope is None:
-        return False
+        return None
+    found: list[ci.Cursor] = []
     for cursor in scope.walk_preorder():
         if cursor.kind in (K.BINARY_OPERATOR, K.CALL_EXPR, K.COMPOUND_ASSIGNMENT_OPERATOR) and \
                 cursor.spelling in ("operator=", "operator+=", "=", "+="):
+            operands = [c for c in cursor.get_children() if not (c.kind == K.UNEXPOSED_EXPR and
+                                                                  c.spelling.startswith("operator"))]
             refs = [c for c in cursor.walk_preorder() if c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)]
             if refs and refs[0].referenced == decl:
-                return False
-    return True
+                if "+=" in cursor.spelling or len(operands) < 2:
+                    return None
+                found.append(operands[-1])
+    return found

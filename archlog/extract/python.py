@@ -18,7 +18,7 @@ import parso
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.summary import NodeSummary, Port
-from archlog.values import ParamRef, Unknown, Value, concat
+from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
 
 # rospy-style constructors: qualified name -> (kind, keyword of the name, keyword of the type)
 _ROSPY = {
@@ -203,7 +203,7 @@ class _Extractor:
             elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
                 for a in node.names:
                     self.aliases[a.asname or a.name] = f"{node.module}.{a.name}"
-        _assigns(self.tree.body, self.module_assigns, nested=False)
+        _assigns(self.tree.body, self.module_assigns, nested=True)
         for node in self.tree.body:
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 self._function(node, None)
@@ -320,6 +320,9 @@ class _Extractor:
             return concat(*parts)
         if isinstance(expr, ast.Call):
             return self.call_value(expr, depth, scope)
+        if isinstance(expr, ast.IfExp):
+            return alternatives([self.value(expr.body, depth + 1, scope), self.value(expr.orelse, depth + 1, scope)],
+                                False, self.unknown(expr, "one of several values"))
         if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Call) and expr.attr in _PARAMETER_VALUES:
             return self.call_value(expr.value, depth + 1, scope)
         return self.unknown(expr)
@@ -334,12 +337,16 @@ class _Extractor:
         return self.single(self.module_assigns.get(expr.id, []), expr, depth, None)
 
     def single(self, exprs: list[ast.expr], at: ast.expr, depth: int, scope: _Function | None) -> Value:
-        """The value of a variable assigned exactly once (several different values: unknown)."""
-        values = {self.value(e, depth + 1, self.attr_scope.get(id(e), scope)) if isinstance(e, ast.expr)
-                  else self.unknown(at, _KIND[type(e)]) for e in exprs}
-        if len(values) == 1:
-            return next(iter(values))
-        return self.unknown(at, "assigned several values" if values else "not assigned in this file")
+        """The value of a variable: one assignment gives its value, several (if/else) give
+        alternatives, a loop over a literal list gives every element."""
+        if len(exprs) == 1 and isinstance(exprs[0], ast.For) and isinstance(exprs[0].iter, (ast.List, ast.Tuple)):
+            return alternatives([self.value(e, depth + 1, scope) for e in exprs[0].iter.elts], True,
+                                self.unknown(at, "loop over values not known statically"))
+        values = [self.value(e, depth + 1, self.attr_scope.get(id(e), scope)) if isinstance(e, ast.expr)
+                  else self.unknown(at, _KIND[type(e)]) for e in exprs]
+        if not values:
+            return self.unknown(at, "not assigned in this file")
+        return alternatives(values, False, self.unknown(at, "assigned values not all known"))
 
     def parameter(self, scope: _Function, name: str, at: ast.expr, depth: int) -> Value:
         """A parameter takes the value all call sites in the file pass (or its default)."""
@@ -558,6 +565,10 @@ class _Extractor:
 
     def add(self, kind: str, call: ast.Call, name: Value, type_: Value, default: Value | None = None,
             qos: tuple[tuple[str, str], ...] = ()) -> None:
+        if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
+            for option in name.options:
+                self.add(kind, call, option, type_, default, qos)
+            return
         self.summary.ports.append(Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, "", default, qos))
 
 
@@ -572,9 +583,22 @@ def _is_self_attr(expr: ast.AST) -> bool:
     return isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and expr.value.id == "self"
 
 
+def _in_scope(body: list[ast.stmt]) -> list[ast.AST]:
+    """The nodes of a block, descending into if/for/while/with/try but not into nested scopes."""
+    found: list[ast.AST] = []
+    pending: list[ast.AST] = list(body)
+    while pending:
+        node = pending.pop(0)
+        found.append(node)
+        if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
+            pending.extend(ast.iter_child_nodes(node))
+    return found
+
+
 def _assigns(body: list[ast.stmt], into: dict[str, list[ast.expr]], nested: bool) -> None:
-    """Record `name = expr` (and `name += ...` as a second, unknown value) in a block."""
-    nodes = [n for stmt in body for n in (ast.walk(stmt) if nested else [stmt])]
+    """Record `name = expr` (and `name += ...`, loop and with targets as further values) in a
+    block; `nested` also reads its if/for/while/with/try bodies (not nested functions)."""
+    nodes = _in_scope(body) if nested else list(body)
     for node in nodes:
         if isinstance(node, ast.Assign):
             for target in node.targets:
@@ -584,7 +608,7 @@ def _assigns(body: list[ast.stmt], into: dict[str, list[ast.expr]], nested: bool
             into.setdefault(node.target.id, []).append(node.value)
         elif isinstance(node, ast.AugAssign) and isinstance(node.target, ast.Name):
             into.setdefault(node.target.id, []).append(node)  # type: ignore[arg-type]
-        elif isinstance(node, (ast.For, ast.With)) and nested:
+        elif isinstance(node, (ast.For, ast.With)):
             targets = [node.target] if isinstance(node, ast.For) else [i.optional_vars for i in node.items]
             for target in targets:
                 if isinstance(target, ast.Name):

@@ -11,7 +11,7 @@ from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace import Workspace
 from archlog.facts.similarity import near_pairs
 from archlog.facts.store import FactStore
-from archlog.values import Concat, ParamRef, Unknown, Value, concat
+from archlog.values import Alternatives, Concat, ParamRef, Unknown, Value, concat
 
 NAMED_PORTS = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 
@@ -82,17 +82,22 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         for policy, value in port.qos:
             store.add("qos", pid, policy, value)
         if port.kind == "timer":
-            store.add("timer", pid, node.name, _bind(port.name, node, config))
+            for period in _options(_bind(port.name, node, config)):
+                store.add("timer", pid, node.name, period)
             continue
-        before = _resolve(port.name, port.handle_ns, node, config, {})
-        after = _resolve(port.name, port.handle_ns, node, config, remaps)
-        if port.kind in ("param_read", "param_write"):
-            default = _bind(port.default, node, config) if port.default is not None else \
-                Unknown("no default" if port.kind == "param_read" else "value", port.file, port.line)
-            store.add(port.kind, pid, node.name, after, default)
-        else:
-            store.add(port.kind, pid, node.name, after, _bind(port.type, node, config))
-        store.add("port_source_name", pid, before)
+        resolved = [(_resolve(option, port.handle_ns, node, config, {}),
+                     _resolve(option, port.handle_ns, node, config, remaps))
+                    for option in _options(_bind(port.name, node, config))]
+        if len(resolved) > 1:
+            store.add("alternative_names", pid, len(resolved))
+        last = _bind(port.default, node, config) if port.default is not None else \
+            Unknown("no default" if port.kind == "param_read" else "value", port.file, port.line)
+        for before, after in resolved:
+            if port.kind in ("param_read", "param_write"):
+                store.add(port.kind, pid, node.name, after, _single(last))
+            else:
+                store.add(port.kind, pid, node.name, after, _single(_bind(port.type, node, config)))
+            store.add("port_source_name", pid, before)
 
 
 # actionlib (ROS 1): the topics under an action's namespace, as seen from the server
@@ -118,39 +123,55 @@ def action_topics(port: Port) -> list[Port]:
     return topics
 
 
-def _resolve(name: Value, handle_ns: Value, node: LaunchNode, config: LaunchConfig,
+def _resolve(name: str | Unknown, handle_ns: Value, node: LaunchNode, config: LaunchConfig,
              remaps: dict[str, str]) -> str | Unknown:
-    """Resolve a port name in the instance's context: handle namespace, `~`, then remaps."""
-    raw = _bind(name, node, config)
-    if isinstance(raw, Unknown):
-        return raw
-    if raw.startswith("~"):
-        resolved = names.join(node.name, raw[1:].lstrip("/"))
-    elif raw.startswith("/"):
-        resolved = names.canonical(raw)
+    """Resolve one bound port name in the instance's context: handle namespace, `~`, then remaps."""
+    if isinstance(name, Unknown):
+        return name
+    if name.startswith("~"):
+        resolved = names.join(node.name, name[1:].lstrip("/"))
+    elif name.startswith("/"):
+        resolved = names.canonical(name)
     else:
-        handle = _bind(handle_ns, node, config)
+        handle = _single(_bind(handle_ns, node, config))
         if isinstance(handle, Unknown):
-            return Unknown(f"{handle.expr}/{raw}", handle.file, handle.line)
-        resolved = names.join(names.resolve(handle, node.namespace, node.name) if handle else node.namespace, raw)
+            return Unknown(f"{handle.expr}/{name}", handle.file, handle.line)
+        resolved = names.join(names.resolve(handle, node.namespace, node.name) if handle else node.namespace, name)
     return names.remap(resolved, remaps)
 
 
-def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
+def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown | Alternatives:
     """Evaluate a recovered value for one instance: parameters come from the configuration."""
     if isinstance(value, (str, Unknown)):
         return value
     if isinstance(value, ParamRef):
-        key = _resolve(value.name, value.handle_ns, node, config, {})
+        key = _resolve(_single(_bind(value.name, node, config)), value.handle_ns, node, config, {})
         if isinstance(key, str) and key in config.params:
             found = config.params[key][0]
             return found if isinstance(found, Unknown) else _text(found)
         return _bind(value.default, node, config)
-    parts = [_bind(p, node, config) for p in value.parts]
-    unknown = next((p for p in parts if isinstance(p, Unknown)), None)
-    if unknown is None:
-        return "".join(parts)  # type: ignore[arg-type]
-    return Unknown(" + ".join(p.expr if isinstance(p, Unknown) else repr(p) for p in parts), unknown.file, unknown.line)
+    if isinstance(value, Alternatives):
+        bound = [_bind(option, node, config) for option in value.options]
+        flat = [o for b in bound for o in _options(b)]
+        unknown = next((o for o in flat if isinstance(o, Unknown)), None)
+        return unknown or (flat[0] if len(set(flat)) == 1 else Alternatives(tuple(dict.fromkeys(flat)), value.every))
+    joined = concat(*[_bind(p, node, config) for p in value.parts])
+    if isinstance(joined, Concat):
+        unknown = next(p for p in joined.parts if isinstance(p, Unknown))
+        return Unknown(" + ".join(p.expr if isinstance(p, Unknown) else repr(p) for p in joined.parts),
+                       unknown.file, unknown.line)
+    return joined
+
+
+def _options(value: str | Unknown | Alternatives) -> list[str | Unknown]:
+    return list(value.options) if isinstance(value, Alternatives) else [value]  # type: ignore[arg-type]
+
+
+def _single(value: str | Unknown | Alternatives) -> str | Unknown:
+    """A value that must be one thing (a type, a default, a handle): alternatives are unknown."""
+    if isinstance(value, Alternatives):
+        return Unknown("one of " + ", ".join(map(str, value.options)), "", 0)
+    return value
 
 
 def _text(value: object) -> str:

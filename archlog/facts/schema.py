@@ -86,6 +86,8 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("ports", "qos", "A QoS policy of a ROS 2 publisher or subscriber.",
          _PORT, ("policy", "str", "history, depth, reliability, durability, deadline, lifespan, liveliness, "
                  "liveliness_lease_duration, or profile"), ("value", "str", "the policy's value")),
+    _rel("ports", "alternative_names", "A port whose name is one of several at run time (a ternary, if/else); "
+         "each alternative is its own row of the port's relation.", _PORT, ("count", "int", "how many alternatives")),
     _rel("ports", "port_source_name", "A port's name resolved in the node's namespace, before remapping.",
          _PORT, ("name", "name", "resolved name before remaps")),
     _rel("provenance", "location", "Where a port, launch element or node comes from.",

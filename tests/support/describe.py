@@ -6,7 +6,7 @@ import json
 
 from archlog.diagnostics import Diagnostic
 from archlog.extract.summary import NodeSummary
-from archlog.values import Concat, ParamRef, Unknown, Value
+from archlog.values import Alternatives, Concat, ParamRef, Unknown, Value
 
 
 def plain(value: Value | None) -> object:
@@ -16,6 +16,8 @@ def plain(value: Value | None) -> object:
         return {"param": value.name, "default": plain(value.default)}
     if isinstance(value, Concat):
         return {"concat": [plain(p) for p in value.parts]}
+    if isinstance(value, Alternatives):
+        return {"every" if value.every else "one_of": [plain(p) for p in value.options]}
     return value
 
 
