@@ -1,23 +1,30 @@
-"""The `archlog` command line: check, facts."""
+"""The `archlog` command line: check, facts, query, repl, test-rules."""
 
 from __future__ import annotations
 
+import csv
+import json
 import os
 import sys
 from pathlib import Path
 
 import click
 from rich.console import Console
+from rich.table import Table
 
 from archlog import __version__
 from archlog.analysis import Analysis, ConfigError, analyse
+from archlog.config import Config
+from archlog.config import ConfigError as ConfigFileError
+from archlog.config import find_config, load_config
 from archlog.diagnostics import SEVERITIES
+from archlog.queries.session import QueryError, Result, Session
 from archlog.reports.json_report import to_json
 from archlog.reports.model import Report
 from archlog.reports.sarif import to_sarif
 from archlog.reports.text import print_text
-from archlog.rules.engine import Engine
-from archlog.rules.ruleset import RuleError, load_rules
+from archlog.rules.engine import render
+from archlog.rules.ruleset import RuleError, RuleSet, load_rules
 
 FAIL_ON = (*SEVERITIES, "never")
 
@@ -40,16 +47,28 @@ def _system_options(func):
         click.option("--arg", "args", multiple=True, metavar="NAME:=VALUE", help="Launch argument (repeatable)."),
         click.option("--model", "models", multiple=True, type=click.Path(path_type=Path),
                      help="YAML node models for nodes without source, or external producers/consumers."),
-        click.option("--near-miss-threshold", default=0.5, show_default=True, type=click.FloatRange(0, 5),
-                     help="Normalised name distance below which two names are a near miss."),
+        click.option("--rules", "rule_paths", multiple=True, type=click.Path(exists=True, path_type=Path),
+                     help="Extra rule file or folder of .lp files (repeatable)."),
+        click.option("--config", "config_path", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+                     help="archlog.toml or pyproject.toml (default: found next to the first PATH or above)."),
+        click.option("--profile", help="Configuration profile, e.g. ci (precision) or audit (recall)."),
+        click.option("--near-miss-threshold", type=click.FloatRange(0, 5),
+                     help="Normalised name distance below which two names are a near miss [default: 0.5]."),
     ]
     for option in reversed(options):
         func = option(func)
     return func
 
 
-def _analyse(paths, launches, args, models, threshold) -> Analysis:
-    return analyse(list(paths), list(launches), _arg_pairs(args), list(models), threshold)
+def _load(paths, launches, args, models, rule_paths, config_path, profile,
+          threshold) -> tuple[Analysis, RuleSet, Config]:
+    """Configuration, rules (checked before the slow part), then the analysis."""
+    config = load_config(config_path or find_config(list(paths)), profile)
+    if threshold is not None:
+        config.near_miss_threshold = threshold
+    ruleset = load_rules([*config.rule_paths, *rule_paths])
+    analysis = analyse(list(paths), list(launches), _arg_pairs(args), list(models), config.near_miss_threshold)
+    return analysis, ruleset, config
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -60,19 +79,17 @@ def main() -> None:
 
 @main.command()
 @_system_options
-@click.option("--rules", "rule_paths", multiple=True, type=click.Path(exists=True, path_type=Path),
-              help="Extra rule file or folder of .lp files (repeatable).")
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "sarif"]), default="text", show_default=True)
 @click.option("--output", type=click.Path(path_type=Path), help="Write the report here instead of stdout.")
 @click.option("--fail-on", type=click.Choice(FAIL_ON), default="error", show_default=True,
               help="Exit 1 when a finding of this severity or worse exists.")
-def check(paths, launches, args, models, near_miss_threshold, rule_paths, fmt, output, fail_on) -> None:
+def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, fmt, output,
+          fail_on) -> None:
     """Check a ROS system configuration and report findings."""
-    ruleset = load_rules(list(rule_paths))
-    engine = Engine(ruleset)
-    analysis = _analyse(paths, launches, args, models, near_miss_threshold)
-    _ctl, findings = engine.run(analysis.store)
-    report = Report(findings, analysis.diagnostics.items, ruleset.rules, analysis.workspace.roots[0])
+    analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
+                                      near_miss_threshold)
+    findings = Session(analysis.store, ruleset, config).findings()
+    report = Report(findings, analysis.diagnostics.items, config.adjust(ruleset.rules), analysis.workspace.roots[0])
     if fmt == "text" and output:
         with output.open("w", encoding="utf-8") as fh:
             print_text(report, Console(file=fh, no_color=True, soft_wrap=True))
@@ -93,13 +110,67 @@ def check(paths, launches, args, models, near_miss_threshold, rule_paths, fmt, o
 @_system_options
 @click.option("--format", "fmt", type=click.Choice(["csv", "json"]), default="csv", show_default=True)
 @click.argument("directory", type=click.Path(file_okay=False, path_type=Path))
-def facts(paths, launches, args, models, near_miss_threshold, fmt, directory) -> None:
+def facts(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, fmt,
+          directory) -> None:
     """Export the recovered facts, one file per relation, into DIRECTORY (the last argument)."""
-    analysis = _analyse(paths, launches, args, models, near_miss_threshold)
+    analysis, _ruleset, _config = _load(paths, launches, args, models, rule_paths, config_path, profile,
+                                        near_miss_threshold)
     written = analysis.store.export(directory, fmt)
     for diag in analysis.diagnostics.items:
         click.echo(str(diag), err=True)
     click.echo(f"wrote {len(written)} relations to {directory}", err=True)
+
+
+@main.command()
+@_system_options
+@click.option("--format", "fmt", type=click.Choice(["table", "json", "csv"]), default="table", show_default=True)
+@click.argument("goal")
+def query(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, goal, fmt) -> None:
+    """Print every binding of the variables of GOAL (the last argument: a conjunction of literals such
+    as 'publisher(P, N, T, _), not subscribed(T)') over the facts and derived relations."""
+    analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
+                                      near_miss_threshold)
+    try:
+        result = Session(analysis.store, ruleset, config).query(goal)
+    except QueryError as exc:
+        raise click.UsageError(str(exc)) from None
+    print_result(result, fmt, Console(soft_wrap=True))
+
+
+@main.command()
+@_system_options
+def repl(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold) -> None:
+    """Interactive queries over the system: extraction runs once."""
+    from archlog.queries.repl import run_repl
+
+    analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
+                                      near_miss_threshold)
+    run_repl(Session(analysis.store, ruleset, config), analysis)
+
+
+@main.command("test-rules")
+@click.argument("folders", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False, path_type=Path))
+@click.option("--update", is_flag=True, help="Write the .expected files from the current results.")
+def test_rules(folders, update) -> None:
+    """Run each rule's fixtures and compare with their .expected files (exit 1 on a difference)."""
+    from archlog.queries.rule_tests import run_rule_tests
+
+    sys.exit(0 if run_rule_tests(list(folders), update, Console(soft_wrap=True)) else 1)
+
+
+def print_result(result: Result, fmt: str, console: Console) -> None:
+    """A query result as a table, JSON or CSV."""
+    if fmt == "json":
+        console.print_json(json.dumps([dict(zip(result.columns, map(render, row))) for row in result.rows]))
+    elif fmt == "csv":
+        writer = csv.writer(sys.stdout)
+        writer.writerow(result.columns)
+        writer.writerows([list(map(render, row)) for row in result.rows])
+    else:
+        table = Table(*result.columns, title=f"{len(result.rows)} result{'s' if len(result.rows) != 1 else ''}")
+        for row in result.rows:
+            table.add_row(*map(render, row))
+        console.print(table)
 
 
 def run() -> None:
@@ -111,7 +182,7 @@ def run() -> None:
     except click.ClickException as exc:
         exc.show()
         sys.exit(2)
-    except (ConfigError, RuleError) as exc:
+    except (ConfigError, ConfigFileError, RuleError) as exc:
         click.echo(f"archlog: error: {exc}", err=True)
         sys.exit(2)
     except SystemExit:

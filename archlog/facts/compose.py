@@ -63,11 +63,16 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
         if summary.incomplete:
             store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config)
+    add_near_names(store, near_threshold)
+    return store
+
+
+def add_near_names(store: FactStore, threshold: float) -> None:
+    """near_name facts for the names the ports use (both directions)."""
     used = {row[2] for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)}
-    for a, b, score in near_pairs(used, near_threshold):
+    for a, b, score in near_pairs(used, threshold):
         store.add("near_name", a, b, round(score * 1000))
         store.add("near_name", b, a, round(score * 1000))
-    return store
 
 
 def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig) -> None:

@@ -40,6 +40,8 @@ class FactStore:
             return
         self._seen.add(key)
         self._rows[relation].append(row)
+        if relation == "location":
+            self._locations.setdefault(str(row[0]), (str(row[1]), int(row[2]), int(row[3])))
         for cell in row:
             if isinstance(cell, Unknown) and cell not in self._unknowns:
                 self._unknowns[cell] = len(self._unknowns) + 1
@@ -51,7 +53,6 @@ class FactStore:
 
     def locate(self, ident: str, file: str, line: int, column: int = 0) -> None:
         if ident not in self._locations:
-            self._locations[ident] = (file, line, column)
             self.add("location", ident, file, line, column)
 
     def location(self, ident: str) -> tuple[str, int, int] | None:

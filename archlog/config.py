@@ -1,0 +1,106 @@
+"""Configuration: `archlog.toml`, or `[tool.archlog]` in pyproject.toml, with profiles.
+
+    rules = ["team_rules/"]           # extra rule files or folders
+    select = ["AL1", "topics"]        # rule ids (or id prefixes) and tags to run; default: all
+    ignore = ["AL104"]                # ids, prefixes or tags to leave out
+    near-miss-threshold = 0.5
+    [severity]
+    AL401 = "error"
+    [profiles.ci]                     # --profile ci: overrides the keys above
+    ignore = ["AL104"]
+
+Built-in profiles: `ci` (precision: only high- and medium-precision rules, threshold 0.4) and
+`audit` (recall: every rule, threshold 0.6); a configuration file may redefine them.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from archlog.diagnostics import SEVERITIES
+from archlog.rules.ruleset import Rule
+
+BUILTIN_PROFILES = {
+    "ci": {"precision": ["high", "medium"], "near-miss-threshold": 0.4},
+    "audit": {"near-miss-threshold": 0.6},
+}
+KEYS = {"rules", "select", "ignore", "severity", "near-miss-threshold", "precision", "profiles"}
+
+
+class ConfigError(Exception):
+    """A configuration file that cannot be used."""
+
+
+@dataclass
+class Config:
+    rule_paths: list[Path] = field(default_factory=list)
+    select: list[str] = field(default_factory=list)
+    ignore: list[str] = field(default_factory=list)
+    severity: dict[str, str] = field(default_factory=dict)
+    precision: list[str] = field(default_factory=list)
+    near_miss_threshold: float = 0.5
+    source: Path | None = None
+
+    def applies(self, rule: Rule) -> bool:
+        """Whether a rule runs under this configuration (select, ignore, precision)."""
+        keys = {rule.id, rule.name, *rule.tags}
+        def matches(patterns: list[str]) -> bool:
+            return any(p in keys or rule.id.startswith(p) for p in patterns)
+        return (not self.select or matches(self.select)) and not matches(self.ignore) and \
+            (not self.precision or rule.precision in self.precision)
+
+    def adjust(self, rules: list[Rule]) -> list[Rule]:
+        """The rules that apply, with severity overrides."""
+        return [replace(r, severity=self.severity.get(r.id, r.severity)) for r in rules if self.applies(r)]
+
+
+def find_config(paths: list[Path]) -> Path | None:
+    """archlog.toml, or a pyproject.toml with [tool.archlog], in the first path or above it, or in
+    the current folder."""
+    starts = [p.resolve() for p in paths[:1]] + [Path.cwd()]
+    for start in starts:
+        for folder in [start, *start.parents] if start.is_dir() else start.parents:
+            if (folder / "archlog.toml").is_file():
+                return folder / "archlog.toml"
+            pyproject = folder / "pyproject.toml"
+            if pyproject.is_file() and "tool" in (data := _read(pyproject)) and "archlog" in data["tool"]:
+                return pyproject
+    return None
+
+
+def load_config(path: Path | None, profile: str | None) -> Config:
+    data: dict = {}
+    if path is not None:
+        raw = _read(path)
+        data = raw.get("tool", {}).get("archlog", {}) if path.name == "pyproject.toml" else raw
+        unknown = set(data) - KEYS
+        if unknown:
+            raise ConfigError(f"{path}: unknown key(s) {', '.join(sorted(unknown))}")
+    profiles = {**BUILTIN_PROFILES, **data.get("profiles", {})}
+    if profile is not None:
+        if profile not in profiles:
+            raise ConfigError(f"unknown profile '{profile}' (known: {', '.join(sorted(profiles))})")
+        data = {**data, **profiles[profile]}
+    base = path.parent if path is not None else Path.cwd()
+    config = Config(
+        rule_paths=[(base / p) for p in data.get("rules", [])],
+        select=list(data.get("select", [])), ignore=list(data.get("ignore", [])),
+        severity=dict(data.get("severity", {})), precision=list(data.get("precision", [])),
+        near_miss_threshold=float(data.get("near-miss-threshold", 0.5)), source=path,
+    )
+    for rule_id, level in config.severity.items():
+        if level not in SEVERITIES:
+            raise ConfigError(f"{path}: severity of {rule_id} must be one of {', '.join(SEVERITIES)}")
+    for rule_path in config.rule_paths:
+        if not rule_path.exists():
+            raise ConfigError(f"{path}: rule path {rule_path} does not exist")
+    return config
+
+
+def _read(path: Path) -> dict:
+    try:
+        return tomllib.loads(path.read_text(encoding="utf-8"))
+    except (OSError, tomllib.TOMLDecodeError) as exc:
+        raise ConfigError(f"{path}: {exc}") from None
