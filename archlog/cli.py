@@ -11,6 +11,7 @@ from pathlib import Path
 import click
 from rich.console import Console
 from rich.table import Table
+from rich.text import Text
 
 from archlog import __version__
 from archlog.analysis import Analysis, ConfigError, analyse
@@ -169,7 +170,7 @@ def print_result(result: Result, fmt: str, console: Console) -> None:
     else:
         table = Table(*result.columns, title=f"{len(result.rows)} result{'s' if len(result.rows) != 1 else ''}")
         for row in result.rows:
-            table.add_row(*map(render, row))
+            table.add_row(*(Text(render(cell)) for cell in row))
         console.print(table)
 
 

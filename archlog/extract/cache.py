@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+from functools import lru_cache
 import pickle
 import sqlite3
 from pathlib import Path
@@ -20,9 +21,19 @@ def cache_dir() -> Path:
     return path
 
 
-def key(*parts: bytes | str) -> str:
-    """A cache key over the tool version and every input that changes a result."""
+@lru_cache(maxsize=1)
+def code_digest() -> str:
+    """Changes whenever archlog's extraction code changes, so cached results never outlive it."""
     digest = hashlib.sha256(__version__.encode())
+    package = Path(__file__).resolve().parent.parent
+    for path in sorted([*package.glob("extract/*.py"), package / "values.py", package / "names.py"]):
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def key(*parts: bytes | str) -> str:
+    """A cache key over the extraction code and every input that changes a result."""
+    digest = hashlib.sha256(code_digest().encode())
     for part in parts:
         digest.update(b"\0" + (part.encode() if isinstance(part, str) else part))
     return digest.hexdigest()

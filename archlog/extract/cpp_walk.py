@@ -361,7 +361,9 @@ class _Walker:
             if name.endswith("Camera"):
                 self.add(kind, call, _camera_info(topic), "sensor_msgs/CameraInfo", handle)
             return
-        self.add(kind, call, topic, self.port_type(call, args, name), handle)
+        queue = self.value(args[1]) if len(args) > 1 and name in ("advertise", "subscribe") else None
+        self.add(kind, call, topic, self.port_type(call, args, name), handle,
+                 queue=("unbounded" if queue == "0" else queue))
 
     def constructed(self, call: ci.Cursor, owner: str, args: list[ci.Cursor]) -> None:
         """Library objects whose construction creates ports (tf, actionlib, message_filters...)."""
@@ -427,10 +429,10 @@ class _Walker:
         return template_arg or self.unknown(call, "message type not resolved")
 
     def add(self, kind: str, call: ci.Cursor, name: Value, type_: Value, handle: Value,
-            default: Value | None = None) -> None:
+            default: Value | None = None, queue: Value | None = None) -> None:
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
-                self.add(kind, call, option, type_, handle, default)
+                self.add(kind, call, option, type_, handle, default, queue)
             return
         loc = call.location
         if isinstance(name, str) and name.startswith("~") and call.referenced is not None and \
@@ -439,7 +441,8 @@ class _Walker:
                 self.file, loc.line, "cpp-private-name",
                 f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
                 "(the node dies at start-up); use a NodeHandle(\"~\") instead", "error", loc.column))
-        self.result.ports.append(Port(kind, name, type_, self.file, loc.line, loc.column, handle, default))
+        self.result.ports.append(Port(kind, name, type_, self.file, loc.line, loc.column, handle, default,
+                                      queue=queue))
 
     # -- when the AST is incomplete -------------------------------------------------------------
     def token_fallback(self, tu: ci.TranslationUnit) -> None:

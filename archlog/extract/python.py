@@ -453,7 +453,8 @@ class _Extractor:
             self.summary.anonymous = isinstance(anon, ast.Constant) and anon.value is True
         elif func in _ROSPY:
             kind, name_kw, type_kw = _ROSPY[func]
-            self.add(kind, call, self.value(_arg(call, 0, name_kw)), self.message_type(_arg(call, 1, type_kw), False))
+            self.add(kind, call, self.value(_arg(call, 0, name_kw)), self.message_type(_arg(call, 1, type_kw), False),
+                     queue=self.queue(call, func))
         elif func in _TF:
             for kind, topic in _TF[func]:
                 self.add(kind, call, topic, _TF_MESSAGE[topic])
@@ -542,6 +543,18 @@ class _Extractor:
             return tuple(found + implied + [d for d in _QOS_DEFAULTS if d[0] not in given])
         return (("profile", f"?({ast.unparse(expr)})"),)
 
+    def queue(self, call: ast.Call, func: str) -> Value | None:
+        """A rospy queue_size: a number, 'unbounded' (None; a Subscriber's default), or 'unset'."""
+        if func not in ("rospy.Publisher", "rospy.Subscriber"):
+            return None
+        size = next((kw.value for kw in call.keywords if kw.arg == "queue_size"), None)
+        if size is None:
+            return "unset" if func == "rospy.Publisher" else "unbounded"
+        if isinstance(size, ast.Constant) and size.value is None:
+            return "unbounded"
+        value = self.value(size)
+        return "unbounded" if value == "0" and func == "rospy.Subscriber" else value
+
     def period(self, expr: ast.expr | None, func: str) -> Value:
         """A timer's period in seconds: Duration(x) / Duration.from_sec(x), or 1/hz for a Rate."""
         if expr is None:
@@ -564,12 +577,13 @@ class _Extractor:
         self.summary.name_file, self.summary.name_line = self.file, call.lineno
 
     def add(self, kind: str, call: ast.Call, name: Value, type_: Value, default: Value | None = None,
-            qos: tuple[tuple[str, str], ...] = ()) -> None:
+            qos: tuple[tuple[str, str], ...] = (), queue: Value | None = None) -> None:
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
-                self.add(kind, call, option, type_, default, qos)
+                self.add(kind, call, option, type_, default, qos, queue)
             return
-        self.summary.ports.append(Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, "", default, qos))
+        self.summary.ports.append(Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, "", default, qos,
+                                       queue))
 
 
 def _arg(call: ast.Call, index: int, keyword: str) -> ast.expr | None:

@@ -25,6 +25,7 @@ class Port:
     handle_ns: Value = ""
     default: Value | None = None
     qos: tuple[tuple[str, str], ...] = ()
+    queue: Value | None = None
 
 
 @dataclass

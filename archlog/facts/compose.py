@@ -86,6 +86,8 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         store.locate(pid, port.file, port.line, port.column)
         for policy, value in port.qos:
             store.add("qos", pid, policy, value)
+        if port.queue is not None:
+            store.add("queue_size", pid, _single(_bind(port.queue, node, config)))
         if port.kind == "timer":
             for period in _options(_bind(port.name, node, config)):
                 store.add("timer", pid, node.name, period)

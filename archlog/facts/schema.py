@@ -83,6 +83,9 @@ RELATIONS: tuple[Relation, ...] = (
          _PORT, _NODE, ("param", "name", "resolved parameter name"), ("value", "str", "value set, or 'delete'")),
     _rel("ports", "timer", "A periodic trigger in a node: a timer or a loop rate (for behavioral rules).",
          _PORT, _NODE, ("period", "str", "period in seconds as written or folded, or unknown")),
+    _rel("ports", "queue_size", "The message queue of a ROS 1 publisher or subscriber.",
+         _PORT, ("size", "str", "a number; 'unbounded' (0 in roscpp, None in rospy, a rospy Subscriber's default); "
+                 "'unset' (a rospy Publisher without queue_size publishes synchronously)")),
     _rel("ports", "qos", "A QoS policy of a ROS 2 publisher or subscriber.",
          _PORT, ("policy", "str", "history, depth, reliability, durability, deadline, lifespan, liveliness, "
                  "liveliness_lease_duration, or profile"), ("value", "str", "the policy's value")),

@@ -19,6 +19,10 @@ SUBJECT_KINDS = {"node": "nodes", "topic": "topics", "service": "services", "act
 _SPAN = re.compile(r"<(?:block|string)>:(\d+):(\d+)(?:-\d+(?::\d+)?)?:\s*")
 
 Signature = tuple[str, int]
+_HINTS = {
+    "unsafe": "every variable must occur in a positive body literal (not only under `not` or in a comparison)",
+    "syntax error": "check parentheses and commas, and end each rule with a period",
+}
 Position = tuple[int, int]
 
 
@@ -76,7 +80,8 @@ class Engine:
                 name = atom.symbol.name
                 program = next((p for p in self.ruleset.programs if name in {s[0] for s in _parse(p)[0]}), None)
                 raise RuleError(program.file if program else "<rules>", program.first_line if program else 0,
-                                f"rules are not stratified: {name} depends on itself through `not`")
+                                f"rules are not stratified: {name} depends on itself through `not` (hint: define "
+                                "the negated relation without the one that negates it)")
         return ctl
 
     def findings(self, ctl: clingo.Control, store: FactStore) -> list[Finding]:
@@ -115,7 +120,8 @@ def check(ruleset: RuleSet) -> str:
         for (name, arity), pos in program_heads.items():
             if name in facts and facts[name] != arity:
                 raise RuleError(program.file, program.first_line + pos[0] - 1,
-                                f"{name} is a fact relation with {facts[name]} columns", pos[1])
+                                f"{name} is a fact relation with {facts[name]} columns (hint: rules may not add "
+                                "facts; derive a relation of your own)", pos[1])
     known = set(facts.items()) | heads
     names = {name for name, _a in known}
     for program, (_heads, body) in parsed:
@@ -125,14 +131,18 @@ def check(ruleset: RuleSet) -> str:
             line = program.first_line + pos[0] - 1
             if name in names:
                 arities = sorted(a for n, a in known if n == name)
-                raise RuleError(program.file, line, f"{name} takes {arities[0]} columns, not {arity}", pos[1])
-            raise RuleError(program.file, line, f"unknown relation {name}/{arity} (see docs/facts.md)", pos[1])
+                raise RuleError(program.file, line, f"{name} takes {arities[0]} columns, not {arity} (hint: use _ "
+                                "for the columns you do not need)", pos[1])
+            raise RuleError(program.file, line, f"unknown relation {name}/{arity} (hint: docs/facts.md lists the "
+                            "relations; a typo?)", pos[1])
     declared = "".join(f"#defined {n}/{a}. " for n, a in sorted(known)) + "\n"
     for program in ruleset.programs:
         _safety(program, declared)
     for rule in ruleset.rules:
         if (rule.predicate, len(rule.columns)) not in heads:
-            raise RuleError(rule.file, rule.line, f"no rule derives the finding {rule.predicate}/{len(rule.columns)}")
+            raise RuleError(rule.file, rule.line, f"no rule derives the finding {rule.predicate}/{len(rule.columns)} "
+                            "(hint: the `finding:` header must name the head of a rule below it, with as many "
+                            "columns)")
     return declared
 
 
@@ -184,4 +194,6 @@ def _error(program: Program, messages: list[str], line_offset: int = 0) -> RuleE
     if not match:
         return RuleError(program.file, program.first_line, text)
     line = program.first_line + int(match.group(1)) - 1 + line_offset
-    return RuleError(program.file, line, _SPAN.sub("", text), int(match.group(2)))
+    detail = _SPAN.sub("", text)
+    hint = next((h for needle, h in _HINTS.items() if needle in detail), "")
+    return RuleError(program.file, line, detail + (f" (hint: {hint})" if hint else ""), int(match.group(2)))
