@@ -23,6 +23,8 @@ from archlog.queries.session import QueryError, Result, Session
 from archlog.reports.json_report import to_json
 from archlog.reports.model import Report
 from archlog.reports.sarif import to_sarif
+from archlog.reports.suppress import apply_suppressions, read_baseline
+from archlog.reports.suppress import write_baseline as write_baseline_file
 from archlog.reports.text import print_text
 from archlog.rules.engine import render
 from archlog.rules.ruleset import RuleError, RuleSet, load_rules
@@ -83,19 +85,35 @@ def main() -> None:
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "sarif"]), default="text", show_default=True)
 @click.option("--output", type=click.Path(path_type=Path), help="Write the report here instead of stdout.")
 @click.option("--fail-on", type=click.Choice(FAIL_ON), default="error", show_default=True,
-              help="Exit 1 when a finding of this severity or worse exists.")
+              help="Exit 1 when a finding of this severity or worse exists (suppressed ones do not count).")
+@click.option("--baseline", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="Report only findings that are not in this baseline (matched by fingerprint).")
+@click.option("--write-baseline", type=click.Path(dir_okay=False, path_type=Path),
+              help="Record the current findings as the baseline.")
+@click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, fmt, output,
-          fail_on) -> None:
+          fail_on, baseline, write_baseline, quiet) -> None:
     """Check a ROS system configuration and report findings."""
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold)
+    root = analysis.workspace.roots[0]
     findings = Session(analysis.store, ruleset, config).findings()
-    report = Report(findings, analysis.diagnostics.items, config.adjust(ruleset.rules), analysis.workspace.roots[0])
+    files = {str(row[1]) for row in analysis.store.rows("location")}
+    unused = apply_suppressions(findings, files, root if root.is_dir() else root.parent, config.suppress)
+    if baseline:
+        try:
+            known = read_baseline(baseline)
+        except ValueError as exc:
+            raise click.UsageError(str(exc)) from None
+        findings = [f for f in findings if f.fingerprint not in known]
+    if write_baseline:
+        write_baseline_file(findings, write_baseline)
+    report = Report(findings, analysis.diagnostics.items + unused, config.adjust(ruleset.rules), root)
     if fmt == "text" and output:
         with output.open("w", encoding="utf-8") as fh:
-            print_text(report, Console(file=fh, no_color=True, soft_wrap=True))
+            print_text(report, Console(file=fh, no_color=True, soft_wrap=True), quiet)
     elif fmt == "text":
-        print_text(report, Console(no_color=bool(os.environ.get("NO_COLOR")), soft_wrap=True))
+        print_text(report, Console(no_color=bool(os.environ.get("NO_COLOR")), soft_wrap=True), quiet)
     else:
         text = to_json(report) if fmt == "json" else to_sarif(report)
         if output:
@@ -104,7 +122,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
             sys.stdout.write(text)
     if fail_on != "never":
         worst = SEVERITIES[: SEVERITIES.index(fail_on) + 1]
-        sys.exit(1 if any(f.severity in worst for f in findings) else 0)
+        sys.exit(1 if any(f.severity in worst and f.suppression is None for f in findings) else 0)
 
 
 @main.command()

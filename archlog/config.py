@@ -6,6 +6,10 @@
     near-miss-threshold = 0.5
     [severity]
     AL401 = "error"
+    [[suppress]]                      # accepted findings: rule, node, topic, service globs
+    rule = "AL102"
+    topic = "/debug/*"
+    reason = "debug topics are read by hand"
     [profiles.ci]                     # --profile ci: overrides the keys above
     ignore = ["AL104"]
 
@@ -26,7 +30,7 @@ BUILTIN_PROFILES = {
     "ci": {"precision": ["high", "medium"], "near-miss-threshold": 0.4},
     "audit": {"near-miss-threshold": 0.6},
 }
-KEYS = {"rules", "select", "ignore", "severity", "near-miss-threshold", "precision", "profiles"}
+KEYS = {"rules", "select", "ignore", "severity", "near-miss-threshold", "precision", "profiles", "suppress"}
 
 
 class ConfigError(Exception):
@@ -41,6 +45,7 @@ class Config:
     severity: dict[str, str] = field(default_factory=dict)
     precision: list[str] = field(default_factory=list)
     near_miss_threshold: float = 0.5
+    suppress: list[dict] = field(default_factory=list)
     source: Path | None = None
 
     def applies(self, rule: Rule) -> bool:
@@ -88,7 +93,8 @@ def load_config(path: Path | None, profile: str | None) -> Config:
         rule_paths=[(base / p) for p in data.get("rules", [])],
         select=list(data.get("select", [])), ignore=list(data.get("ignore", [])),
         severity=dict(data.get("severity", {})), precision=list(data.get("precision", [])),
-        near_miss_threshold=float(data.get("near-miss-threshold", 0.5)), source=path,
+        near_miss_threshold=float(data.get("near-miss-threshold", 0.5)), suppress=list(data.get("suppress", [])),
+        source=path,
     )
     for rule_id, level in config.severity.items():
         if level not in SEVERITIES:

@@ -25,6 +25,8 @@ def to_json(report: Report) -> str:
             "locations": [_location(f.location, "primary")] + [_location(r, "related") for r in f.related],
             "subjects": f.subjects,
             "fingerprint": f.fingerprint,
+            **({"suppressed": {"kind": f.suppression[0], "justification": f.suppression[1]}}
+               if f.suppression else {}),
         }
         for f in report.findings
     ]

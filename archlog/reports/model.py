@@ -18,7 +18,12 @@ class Report:
     root: Path
 
     def counts(self) -> dict[str, int]:
-        return {s: sum(f.severity == s for f in self.findings) for s in SEVERITIES}
+        """Findings per severity, not counting suppressed ones."""
+        return {s: sum(f.severity == s and f.suppression is None for f in self.findings) for s in SEVERITIES}
+
+    @property
+    def suppressed(self) -> int:
+        return sum(f.suppression is not None for f in self.findings)
 
     def source_line(self, file: str, line: int) -> str | None:
         path = Path(file) if Path(file).is_absolute() else self.root / file

@@ -52,6 +52,8 @@ def to_sarif(report: Report) -> str:
             "locations": [{"physicalLocation": _physical(f.location, report.root)}],
             "partialFingerprints": {"archlogFingerprint/v1": f.fingerprint},
         }
+        if f.suppression:
+            result["suppressions"] = [{"kind": f.suppression[0], "justification": f.suppression[1]}]
         if f.related:
             result["relatedLocations"] = [
                 {"id": i, "physicalLocation": _physical(r, report.root), "message": {"text": "counterpart"}}

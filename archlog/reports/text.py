@@ -12,19 +12,24 @@ from archlog.reports.model import Report
 STYLE = {"error": "bold red", "warning": "yellow", "note": "cyan"}
 
 
-def print_text(report: Report, console: Console) -> None:
-    for file, findings in groupby(report.findings, key=lambda f: f.location.file):
+def print_text(report: Report, console: Console, quiet: bool = False) -> None:
+    """Findings grouped by file with their source lines; `quiet`: one line each and the summary."""
+    active = [f for f in report.findings if f.suppression is None]
+    for file, findings in groupby(active, key=lambda f: f.location.file):
         console.print(f"[bold underline]{escape(file)}[/]")
         for f in findings:
             loc = f.location
             console.print(f"  {loc.line}:{loc.column} [{STYLE[f.severity]}]{f.severity}[/] "
                           f"{escape(f.message)} [dim]{f.rule.id} {f.rule.name}[/]")
+            if quiet:
+                continue
             _source(report, console, loc.file, loc.line, loc.column)
             for rel in f.related:
                 console.print(f"    [dim]other side:[/] {escape(rel.file)}:{rel.line}")
                 _source(report, console, rel.file, rel.line, rel.column)
-        console.print()
-    if report.diagnostics:
+        if not quiet:
+            console.print()
+    if report.diagnostics and not quiet:
         console.print("[bold]diagnostics[/] (problems reading the input)")
         for d in report.diagnostics:
             console.print(f"  {escape(d.file)}:{d.line}: [{STYLE[d.severity]}]{d.severity}[/] "
@@ -33,7 +38,8 @@ def print_text(report: Report, console: Console) -> None:
     counts = report.counts()
     summary = ", ".join(f"{n} {s}{'s' if n != 1 else ''}" for s, n in counts.items())
     total = sum(counts.values())
-    console.print(f"[bold]{total} finding{'s' if total != 1 else ''}[/] ({summary}); "
+    suppressed = f"; {report.suppressed} suppressed" if report.suppressed else ""
+    console.print(f"[bold]{total} finding{'s' if total != 1 else ''}[/] ({summary}){suppressed}; "
                   f"{len(report.diagnostics)} diagnostic{'s' if len(report.diagnostics) != 1 else ''}")
 
 

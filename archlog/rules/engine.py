@@ -41,6 +41,7 @@ class Finding:
     location: Location
     related: list[Location]
     subjects: dict[str, list[str]] = field(default_factory=dict)
+    suppression: tuple[str, str] | None = None  # (kind: inSource | external, justification)
 
     @property
     def severity(self) -> str:
