@@ -6,6 +6,7 @@ import os
 import time
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -36,8 +37,11 @@ class Analysis:
     timings: dict[str, float] = field(default_factory=dict)
 
 
+Progress = Callable[[int, int], None]
+
+
 def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models: list[Path],
-            near_threshold: float = 0.5) -> Analysis:
+            near_threshold: float = 0.5, progress: Progress | None = None) -> Analysis:
     """Recover the architecture of one system configuration into facts."""
     timings: dict[str, float] = {}
     clock = time.perf_counter()
@@ -57,7 +61,7 @@ def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models
     builtin, user, externals = _models(models, workspace, diagnostics)
     wanted = {n.kind for n in config.nodes} if config else None
     summaries = dict(builtin)
-    summaries.update(_extract(workspace, wanted, diagnostics))
+    summaries.update(_extract(workspace, wanted, diagnostics, progress or (lambda _done, _total: None)))
     summaries.update(user)
     if config is None:
         config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
@@ -90,8 +94,10 @@ def resolve_launch(spec: str, workspace: Workspace) -> Path:
     raise ConfigError(f"launch file not found: {spec} (give a path, or PKG/path inside the package)")
 
 
-def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
-             diagnostics: DiagnosticSink) -> dict[tuple[str, str], NodeSummary]:
+def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnostics: DiagnosticSink,
+             progress: Progress) -> dict[tuple[str, str], NodeSummary]:
+    """Summaries of the executables the configuration runs (all of them without a launch file);
+    `progress(done, total)` is called as they finish."""
     summaries = {}
     cpp_jobs = []
     env: CppEnvironment | None = None
@@ -102,6 +108,7 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
             if exe.lang == "other":
                 continue
             if exe.lang == "python":
+                progress(len(summaries), -1)
                 summaries[(package.name, exe.name)] = extract_python(
                     exe.sources[0], package.name, exe.name, workspace.display(exe.sources[0]), diagnostics)
             else:
@@ -110,7 +117,8 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None,
                     generated_headers(workspace, diagnostics), workspace.roots)
                 shown = {s: workspace.display(s) for s in exe.sources}
                 cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, env, exe.cls))
-    for job, result in _run_isolated(cpp_jobs):
+    done = len(summaries)
+    for job, result in _run_isolated(cpp_jobs, lambda n: progress(done + n, done + len(cpp_jobs))):
         if result is None:
             diagnostics.add(next(iter(job.shown.values()), job.package), 1, "cpp-crash",
                             f"the C++ parser crashed on {job.package}/{job.executable}; its ROS calls are not "
@@ -138,7 +146,8 @@ class _CppJob:
         return summary, sink.items
 
 
-def _run_isolated(jobs: list[_CppJob]) -> list[tuple[_CppJob, tuple[NodeSummary, list] | None]]:
+def _run_isolated(jobs: list[_CppJob], finished: Callable[[int], None]
+                  ) -> list[tuple[_CppJob, tuple[NodeSummary, list] | None]]:
     """Run jobs in worker processes so that a crash in libclang costs one executable, not the run.
     Jobs lost when a worker dies are retried one per process to find the one that crashes."""
     if not jobs:
@@ -149,6 +158,7 @@ def _run_isolated(jobs: list[_CppJob]) -> list[tuple[_CppJob, tuple[NodeSummary,
         for k, future in futures.items():
             try:
                 results[k] = future.result()
+                finished(len(results))
             except BrokenProcessPool:
                 continue  # retried below, one job per process
     for k in [k for k in range(len(jobs)) if k not in results]:

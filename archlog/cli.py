@@ -10,6 +10,7 @@ from pathlib import Path
 
 import click
 from rich.console import Console
+from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 from rich.text import Text
 
@@ -20,6 +21,7 @@ from archlog.config import ConfigError as ConfigFileError
 from archlog.config import find_config, load_config
 from archlog.diagnostics import SEVERITIES
 from archlog.queries.session import QueryError, Result, Session
+from archlog.reports.codequality import to_codequality
 from archlog.reports.json_report import to_json
 from archlog.reports.model import Report
 from archlog.reports.sarif import to_sarif
@@ -63,14 +65,27 @@ def _system_options(func):
     return func
 
 
-def _load(paths, launches, args, models, rule_paths, config_path, profile,
-          threshold) -> tuple[Analysis, RuleSet, Config]:
-    """Configuration, rules (checked before the slow part), then the analysis."""
+def _load(paths, launches, args, models, rule_paths, config_path, profile, threshold,
+          quiet: bool = False) -> tuple[Analysis, RuleSet, Config]:
+    """Configuration, rules (checked before the slow part), then the analysis, with a progress bar
+    on a terminal."""
     config = load_config(config_path or find_config(list(paths)), profile)
     if threshold is not None:
         config.near_miss_threshold = threshold
     ruleset = load_rules([*config.rule_paths, *rule_paths])
-    analysis = analyse(list(paths), list(launches), _arg_pairs(args), list(models), config.near_miss_threshold)
+    stderr = Console(stderr=True)
+    if quiet or not stderr.is_terminal:
+        return analyse(list(paths), list(launches), _arg_pairs(args), list(models), config.near_miss_threshold), \
+            ruleset, config
+    with Progress(SpinnerColumn(), TextColumn("reading nodes"), BarColumn(), MofNCompleteColumn(),
+                  TimeElapsedColumn(), console=stderr, transient=True) as bar:
+        task = bar.add_task("nodes", total=None)
+
+        def advance(done: int, total: int) -> None:
+            bar.update(task, completed=done, total=total if total > 0 else None)
+
+        analysis = analyse(list(paths), list(launches), _arg_pairs(args), list(models), config.near_miss_threshold,
+                           advance)
     return analysis, ruleset, config
 
 
@@ -82,7 +97,8 @@ def main() -> None:
 
 @main.command()
 @_system_options
-@click.option("--format", "fmt", type=click.Choice(["text", "json", "sarif"]), default="text", show_default=True)
+@click.option("--format", "fmt", type=click.Choice(["text", "json", "sarif", "codequality"]), default="text",
+              show_default=True, help="codequality: GitLab's Code Quality report.")
 @click.option("--output", type=click.Path(path_type=Path), help="Write the report here instead of stdout.")
 @click.option("--fail-on", type=click.Choice(FAIL_ON), default="error", show_default=True,
               help="Exit 1 when a finding of this severity or worse exists (suppressed ones do not count).")
@@ -95,7 +111,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
           fail_on, baseline, write_baseline, quiet) -> None:
     """Check a ROS system configuration and report findings."""
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                      near_miss_threshold)
+                                      near_miss_threshold, quiet or fmt != "text" and output is None)
     root = analysis.workspace.roots[0]
     findings = Session(analysis.store, ruleset, config).findings()
     files = {str(row[1]) for row in analysis.store.rows("location")}
@@ -108,14 +124,15 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
         findings = [f for f in findings if f.fingerprint not in known]
     if write_baseline:
         write_baseline_file(findings, write_baseline)
-    report = Report(findings, analysis.diagnostics.items + unused, config.adjust(ruleset.rules), root)
+    report = Report(findings, analysis.diagnostics.items + unused, config.adjust(ruleset.rules), root,
+                    Report.node_origins(analysis.store))
     if fmt == "text" and output:
         with output.open("w", encoding="utf-8") as fh:
             print_text(report, Console(file=fh, no_color=True, soft_wrap=True), quiet)
     elif fmt == "text":
         print_text(report, Console(no_color=bool(os.environ.get("NO_COLOR")), soft_wrap=True), quiet)
     else:
-        text = to_json(report) if fmt == "json" else to_sarif(report)
+        text = {"json": to_json, "sarif": to_sarif, "codequality": to_codequality}[fmt](report)
         if output:
             output.write_text(text, encoding="utf-8")
         else:

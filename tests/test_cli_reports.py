@@ -139,3 +139,13 @@ def test_rosrun_configuration_without_launch() -> None:
     result = archlog("check", CLEAN, "--format", "json", "--fail-on", "never")
     document = json.loads(result.stdout)
     assert result.returncode == 0 and isinstance(document["findings"], list)
+
+
+def test_sarif_names_the_launch_include_chain_of_each_node(sarif_schema: dict) -> None:
+    variant = CORPUS / "include_missing_remap" / "buggy"
+    sarif = json.loads(archlog("check", variant, *launch_of(variant), "--format", "sarif", "--fail-on", "never").stdout)
+    jsonschema.validate(sarif, sarif_schema)
+    related = [(r["message"]["text"], r["physicalLocation"]["artifactLocation"]["uri"])
+               for r in sarif["runs"][0]["results"][0]["relatedLocations"]]
+    assert ("node /laser_driver is declared here", "src/laser_bringup/launch/laser.launch") in related
+    assert ("included from here (level 1)", "src/safety_monitor/launch/robot.launch") in related

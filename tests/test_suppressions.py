@@ -75,3 +75,25 @@ def test_baseline_survives_unrelated_line_moves(tmp_path: Path) -> None:
     result = check(ws, "--baseline", baseline, "--format", "json")
     assert result.returncode == 0 and json.loads(result.stdout)["findings"] == []
     assert check(ws, "--baseline", tmp_path / "missing.json").returncode == 2
+
+
+def test_codequality_report_and_ci_files(tmp_path: Path) -> None:
+    import yaml
+
+    ws = copy_case(tmp_path)
+    [issue] = json.loads(check(ws, "--format", "codequality").stdout)
+    assert issue["location"] == {"path": str(CPP), "lines": {"begin": 45}} and issue["severity"] == "major"
+    for name in ("docs/ci/github-actions.yml", "docs/ci/gitlab-ci.yml", ".pre-commit-hooks.yaml"):
+        assert yaml.safe_load((ROOT / name).read_text())
+
+
+def test_inline_suppression_in_launch_xml(tmp_path: Path) -> None:
+    ws = tmp_path / "ws"
+    shutil.copytree(CORPUS / "unused_remap_duplicate" / "buggy", ws)
+    launch = ws / "src" / "scout_bringup" / "launch" / "sensors.launch"
+    insert_line(launch, 13, "    <!-- archlog: ignore[unused-remap] kept for the old driver -->")
+    spec = json.loads((ws / "case.json").read_text())["launch"]
+    result = subprocess.run([sys.executable, "-m", "archlog", "check", str(ws), "--launch", spec[0], "--format",
+                             "json", "--fail-on", "never"], capture_output=True, text=True, cwd=ROOT, timeout=300)
+    suppressed = [f for f in json.loads(result.stdout)["findings"] if "suppressed" in f]
+    assert [(f["rule"], f["suppressed"]["justification"]) for f in suppressed] == [("AL401", "kept for the old driver")]

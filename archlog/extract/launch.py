@@ -61,6 +61,7 @@ class LaunchNode:
     plugin: str | None = None
     manager: str | None = None
     declared: str = ""  # the name as declared (before __name/__ns in args); roslaunch checks these
+    chain: tuple[Element, ...] = ()  # the <include> elements it was loaded through, outermost first
 
     @property
     def kind(self) -> tuple[str, str]:
@@ -93,6 +94,7 @@ class _Scope:
     condition: str | None = None
     pass_all_args: bool = False
     depth: int = 0
+    chain: tuple[Element, ...] = ()  # the <include> elements that led here, outermost first
 
     def child(self, ns: str | None) -> "_Scope":
         """A group or node scope: args, declared names and remaps copied, the private-param list
@@ -377,7 +379,7 @@ class LaunchInterpreter:
         # roslaunch hands the ~param list on to the included file, unless it is still empty
         private = scope.private if scope.private else []
         child_scope = _Scope(ns, scope.subst.child(args=passed, file=target), [], list(scope.remaps), private,
-                             scope.condition, pass_all, scope.depth + 1)
+                             scope.condition, pass_all, scope.depth + 1, (*scope.chain, self._element(path, el)))
         if self._file(target, child_scope) and not pass_all:
             for name in passed:
                 if name not in child_scope.declared:
@@ -502,7 +504,8 @@ class LaunchInterpreter:
         if machine:
             self._machine_uses.append((machine, path, el))
         node = LaunchNode(elem, pkg, exe, node_ns, child.ns, child.remaps, scope.condition,
-                          self._attr(scope, el, "args") or "", declared="" if is_test else node_ns)
+                          self._attr(scope, el, "args") or "", declared="" if is_test else node_ns,
+                          chain=scope.chain)
         if not is_test:
             self._declared.append((node_ns, path, el, node))
         self._add_node(path, el, node)

@@ -50,6 +50,9 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
         store.locate(node.elem.id, node.elem.file, node.elem.line)
         if node.condition:
             store.add("conditional", node.elem.id, node.condition)
+        for depth, include in enumerate(node.chain, 1):
+            store.add("included_through", node.elem.id, include.id, depth)
+            store.locate(include.id, include.file, include.line)
         if node.plugin:
             store.add("nodelet", node.name, node.plugin, node.manager or "")
         if summary is None:

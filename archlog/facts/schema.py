@@ -52,6 +52,9 @@ RELATIONS: tuple[Relation, ...] = (
          "resolved statically.", ("elem", "id", "the node's element"), ("condition", "str", "the condition and why")),
     _rel("configuration", "nodelet", "A node instance that loads a nodelet plugin (nodelet load/standalone).",
          _NODE, ("plugin", "str", "plugin type pkg/Name"), ("manager", "str", "manager node as written, or empty")),
+    _rel("configuration", "included_through", "An <include> a node's element was loaded through.",
+         ("elem", "id", "the node's element"), ("include", "id", "an <include> element"),
+         ("depth", "int", "1 for the outermost include")),
     _rel("configuration", "node_source", "Where a node instance's ports were recovered from.",
          _NODE, ("origin", "str", "cpp, python or model")),
     _rel("configuration", "node_incomplete", "A node instance whose source could not be fully read (it does not "

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from archlog.diagnostics import SEVERITIES, Diagnostic
-from archlog.rules.engine import Finding
+from archlog.rules.engine import Finding, Location
 from archlog.rules.ruleset import Rule
 
 
@@ -16,6 +16,21 @@ class Report:
     diagnostics: list[Diagnostic]
     rules: list[Rule]
     root: Path
+    origins: dict[str, list[tuple[Location, str]]] = field(default_factory=dict)
+
+    @staticmethod
+    def node_origins(store) -> dict[str, list[tuple[Location, str]]]:
+        """For each node instance: its launch element, then the includes it was loaded through."""
+        includes: dict[str, list[tuple[int, str]]] = {}
+        for elem, include, depth in store.rows("included_through"):
+            includes.setdefault(elem, []).append((depth, include))
+        origins = {}
+        for name, _pkg, _exe, elem in store.rows("node"):
+            chain = [(Location(*store.location(elem)), f"node {name} is declared here")]
+            for depth, include in sorted(includes.get(elem, []), reverse=True):
+                chain.append((Location(*store.location(include)), f"included from here (level {depth})"))
+            origins[str(name)] = chain
+        return origins
 
     def counts(self) -> dict[str, int]:
         """Findings per severity, not counting suppressed ones."""

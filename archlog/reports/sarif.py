@@ -54,10 +54,13 @@ def to_sarif(report: Report) -> str:
         }
         if f.suppression:
             result["suppressions"] = [{"kind": f.suppression[0], "justification": f.suppression[1]}]
-        if f.related:
+        related = [(r, "the other side") for r in f.related]
+        for node in f.subjects.get("nodes", []):
+            related += report.origins.get(node, [])
+        if related:
             result["relatedLocations"] = [
-                {"id": i, "physicalLocation": _physical(r, report.root), "message": {"text": "counterpart"}}
-                for i, r in enumerate(f.related, 1)
+                {"id": i, "physicalLocation": _physical(loc, report.root), "message": {"text": text}}
+                for i, (loc, text) in enumerate(related, 1) if loc.file
             ]
         results.append(result)
     notifications = [
