@@ -184,6 +184,38 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
     run_repl(Session(analysis.store, ruleset, config), analysis)
 
 
+@main.command()
+@_system_options
+@click.option("--format", "fmt", type=click.Choice(["dot", "svg", "html"]), default="html", show_default=True)
+@click.option("--focus", help="Keep what is near this node, topic or service (its resolved name).")
+@click.option("--depth", type=click.IntRange(0, 20), default=2, show_default=True, help="Edges around --focus.")
+@click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write here instead of stdout.")
+def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, fmt, focus, depth,
+          output) -> None:
+    """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
+    from archlog.reports import graph as views
+
+    analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
+                                      near_miss_threshold, quiet=output is None)
+    drawn = views.build(analysis.store, Session(analysis.store, ruleset, config).findings())
+    if focus:
+        try:
+            drawn = views.focus(drawn, focus, depth)
+        except ValueError as exc:
+            raise click.UsageError(str(exc)) from None
+    dot = views.to_dot(drawn)
+    try:
+        text = dot if fmt == "dot" else views.to_svg(dot)
+        if fmt == "html":
+            text = views.to_html(drawn, text, f"archlog: {' '.join(map(str, paths))}")
+    except RuntimeError as exc:
+        raise click.ClickException(str(exc)) from None
+    if output:
+        output.write_text(text, encoding="utf-8")
+    else:
+        sys.stdout.write(text)
+
+
 @main.command("test-rules")
 @click.argument("folders", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False, path_type=Path))
 @click.option("--update", is_flag=True, help="Write the .expected files from the current results.")

@@ -1,0 +1,137 @@
+"""Graph views of the recovered architecture: DOT, SVG (Graphviz) and one self-contained HTML page.
+
+Elements are node instances, topics, services and actions; namespaces are clusters; elements a
+finding names are coloured by severity, and a near miss is drawn as a dashed edge between the
+two names. `focus` keeps what is within N edges of one element.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import shutil
+import subprocess
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import networkx as nx
+
+from archlog import names
+from archlog.facts.store import FactStore
+from archlog.rules.engine import Finding, render
+
+KINDS = {"n": "node", "t": "topic", "s": "service", "a": "action"}
+SHAPES = {"n": "box", "t": "ellipse", "s": "diamond", "a": "hexagon"}
+COLOURS = {"error": "#d62728", "warning": "#ff7f0e", "note": "#1f77b4"}
+PORTS = {  # relation -> (element kind, edge direction: node->element or element->node, style)
+    "publisher": ("t", "out", "solid"), "subscriber": ("t", "in", "solid"),
+    "service_server": ("s", "in", "solid"), "service_client": ("s", "out", "dashed"),
+    "action_server": ("a", "in", "solid"), "action_client": ("a", "out", "dashed"),
+}
+
+
+@dataclass
+class Graph:
+    graph: nx.MultiDiGraph = field(default_factory=nx.MultiDiGraph)
+
+    def element(self, ident: str, label: str, where: str | None = None) -> None:
+        if ident not in self.graph:
+            namespace = names.namespace_of(label) if label.startswith("/") else "?"
+            self.graph.add_node(ident, label=label, kind=KINDS[ident[0]], namespace=namespace, places=[],
+                                severity=None, findings=[])
+        if where and where not in self.graph.nodes[ident]["places"]:
+            self.graph.nodes[ident]["places"].append(where)
+
+
+def build(store: FactStore, findings: list[Finding]) -> Graph:
+    g = Graph()
+    for name, pkg, exe, elem in store.rows("node"):
+        g.element(f"n:{name}", str(name), _where(store, elem, f"{pkg}/{exe}"))
+    for relation, (kind, direction, style) in PORTS.items():
+        for port, node, name, type_ in store.rows(relation):
+            target = f"{kind}:{render(name)}"
+            g.element(f"n:{node}", str(node))
+            g.element(target, render(name), _where(store, port, f"{relation.replace('_', ' ')} {render(type_)}"))
+            ends = (f"n:{node}", target) if direction == "out" else (target, f"n:{node}")
+            g.graph.add_edge(*ends, style=style, label="")
+    for finding in findings:
+        if finding.suppression is not None:
+            continue
+        for kind, key in (("n", "nodes"), ("t", "topics"), ("s", "services"), ("a", "actions")):
+            for name in finding.subjects.get(key, []):
+                ident = f"{kind}:{name}"
+                if ident in g.graph:
+                    data = g.graph.nodes[ident]
+                    data["findings"].append(f"{finding.rule.id} {finding.message}")
+                    if data["severity"] is None or finding.severity == "error":
+                        data["severity"] = finding.severity
+        if finding.rule.id == "AL102":
+            a, b = f"t:{finding.values['topic']}", f"t:{finding.values['other_topic']}"
+            if a in g.graph and b in g.graph:
+                g.graph.add_edge(a, b, style="dashed", label="near miss?", colour=COLOURS[finding.severity])
+    return g
+
+
+def focus(g: Graph, element: str, depth: int) -> Graph:
+    """What is within `depth` edges of a node or topic (given by resolved name)."""
+    matches = [n for n, d in g.graph.nodes(data=True) if d["label"] == element]
+    if not matches:
+        raise ValueError(f"no node, topic, service or action named {element}")
+    keep: set[str] = set()
+    undirected = nx.Graph(g.graph)
+    for start in matches:
+        keep |= set(nx.single_source_shortest_path_length(undirected, start, cutoff=depth))
+    return Graph(g.graph.subgraph(keep).copy())
+
+
+def to_dot(g: Graph) -> str:
+    lines = ["digraph archlog {", '  graph [rankdir=LR, fontname="Helvetica", fontsize=10];',
+             '  node [fontname="Helvetica", fontsize=10]; edge [fontname="Helvetica", fontsize=9];']
+    by_namespace: dict[str, list[str]] = {}
+    for ident, data in g.graph.nodes(data=True):
+        by_namespace.setdefault(data["namespace"], []).append(ident)
+    for index, (namespace, members) in enumerate(sorted(by_namespace.items())):
+        cluster = namespace not in ("/", "?")
+        if cluster:
+            lines.append(f'  subgraph cluster_{index} {{ label={_q(namespace)}; style=rounded; color="#999999";')
+        for ident in sorted(members):
+            data = g.graph.nodes[ident]
+            colour = COLOURS.get(data["severity"], "#444444")
+            width = 2.5 if data["severity"] else 1
+            tooltip = "\n".join(data["places"] + data["findings"])
+            lines.append(f'    {_q(ident)} [label={_q(data["label"])}, shape={SHAPES[ident[0]]}, color={_q(colour)}, '
+                         f'penwidth={width}, tooltip={_q(tooltip)}, id={_q(ident)}];')
+        if cluster:
+            lines.append("  }")
+    for a, b, data in g.graph.edges(data=True):
+        colour = data.get("colour", "#666666")
+        lines.append(f'  {_q(a)} -> {_q(b)} [style={data["style"]}, color={_q(colour)}, label={_q(data["label"])}];')
+    lines.append("}")
+    return "\n".join(lines) + "\n"
+
+
+def to_svg(dot: str) -> str:
+    executable = shutil.which("dot")
+    if executable is None:
+        raise RuntimeError("Graphviz is not installed (the `dot` command): install it for svg and html output")
+    result = subprocess.run([executable, "-Tsvg"], input=dot, capture_output=True, text=True, timeout=300, check=False)
+    if result.returncode != 0:
+        raise RuntimeError(f"Graphviz failed: {result.stderr.strip()[:300]}")
+    return result.stdout[result.stdout.find("<svg"):]
+
+
+def to_html(g: Graph, svg: str, title: str) -> str:
+    elements = {ident: {"label": d["label"], "kind": d["kind"], "places": d["places"], "findings": d["findings"]}
+                for ident, d in g.graph.nodes(data=True)}
+    template = (Path(__file__).with_name("graph.html")).read_text(encoding="utf-8")
+    return (template.replace("__TITLE__", html.escape(title)).replace("__SVG__", svg)
+            .replace("__ELEMENTS__", json.dumps(elements).replace("</", "<\\/")))
+
+
+def _where(store: FactStore, ident: str, what: str) -> str:
+    place = store.location(str(ident))
+    return f"{place[0]}:{place[1]} {what}" if place else what
+
+
+def _q(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'

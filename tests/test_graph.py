@@ -1,0 +1,71 @@
+"""Graph views: DOT with clusters and findings, focus, SVG, and the HTML page in a real browser."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+from xml.etree import ElementTree
+
+import pytest
+
+from conftest import CORPUS, ROOT
+
+CASE = ["graph", str(CORPUS / "topic_typo" / "buggy"), "--launch", "waypoint_nav/launch/follow_waypoints.launch"]
+CHROMIUM = shutil.which("chromium")
+needs = pytest.mark.skipif((CHROMIUM is None or shutil.which("dot") is None) and not os.environ.get("CI"),
+                           reason="needs Debian's chromium and graphviz (bash .ci/run installs them)")
+
+
+def archlog(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "archlog", *args], capture_output=True, text=True, cwd=ROOT,
+                          timeout=300)
+
+
+def test_dot_has_namespaces_findings_and_near_misses() -> None:
+    dot = archlog(*CASE, "--format", "dot").stdout
+    assert 'subgraph cluster_0 { label="/rover"' in dot
+    assert '"t:/rover/base_waypoint" [label="/rover/base_waypoint", shape=ellipse, color="#d62728"' in dot
+    assert '"t:/rover/base_waypoint" -> "t:/rover/base_waypoints" [style=dashed' in dot
+    assert "src/waypoint_nav/src/pure_pursuit.cpp:45 subscriber nav_msgs/Path" in dot
+
+
+def test_focus_keeps_the_neighbourhood() -> None:
+    dot = archlog(*CASE, "--format", "dot", "--focus", "/rover/odom", "--depth", "1").stdout
+    labels = {line.split('label="')[1].split('"')[0] for line in dot.splitlines() if "shape=" in line}
+    assert labels == {"/rover/odom", "/rover/sim", "/rover/pure_pursuit"}
+    assert archlog(*CASE, "--focus", "/nowhere").returncode == 2
+
+
+@needs
+def test_svg_is_xml_with_one_group_per_element() -> None:
+    svg = ElementTree.fromstring(archlog(*CASE, "--format", "svg").stdout)
+    ids = {g.get("id") for g in svg.iter("{http://www.w3.org/2000/svg}g") if g.get("class") == "node"}
+    assert {"n:/rover/pure_pursuit", "t:/rover/base_waypoint", "t:/rover/cmd_vel"} <= ids
+
+
+def chromium(*args: str) -> subprocess.CompletedProcess:
+    with tempfile.TemporaryDirectory() as profile:
+        return subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+                               "--no-first-run", "--disable-background-networking", "--disable-component-update",
+                               "--disable-sync", f"--user-data-dir={profile}", "--virtual-time-budget=3000", *args],
+                              capture_output=True, text=True, timeout=120)
+
+
+@needs
+def test_html_page_renders_searches_and_shows_locations_in_chromium(tmp_path: Path) -> None:
+    page = tmp_path / "graph.html"
+    assert archlog(*CASE, "--output", str(page)).returncode == 0
+    text = page.read_text()
+    assert "http://" not in text.replace("http://www.w3.org", "") and "<script src" not in text  # offline
+    url = f"{page.as_uri()}#search=waypoint&show=t:/rover/base_waypoint"
+    dom = chromium("--dump-dom", url).stdout
+    assert dom.count('class="node match"') == 3 and dom.count('class="node dim"') == 4
+    assert '<span id="count">3 matches</span>' in dom
+    assert "<h3>topic /rover/base_waypoint</h3>" in dom and "pure_pursuit.cpp:45" in dom
+    shot = tmp_path / "graph.png"
+    chromium("--window-size=1400,800", f"--screenshot={shot}", url)
+    assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 10_000
