@@ -1,6 +1,7 @@
 """Graph views of the recovered architecture: DOT, SVG (Graphviz) and one self-contained HTML page.
 
-Elements are node instances, topics, services and actions; namespaces are clusters; elements a
+Elements are node instances, topics, services, actions and the parameters nodes read (with
+where the configuration sets them); namespaces are clusters; elements a
 finding names are coloured by severity, and a near miss is drawn as a dashed edge between the
 two names. `focus` keeps what is within N edges of one element.
 """
@@ -20,8 +21,8 @@ from archlog import names
 from archlog.facts.store import FactStore
 from archlog.rules.engine import Finding, render
 
-KINDS = {"n": "node", "t": "topic", "s": "service", "a": "action"}
-SHAPES = {"n": "box", "t": "ellipse", "s": "diamond", "a": "hexagon"}
+KINDS = {"n": "node", "t": "topic", "s": "service", "a": "action", "p": "parameter"}
+SHAPES = {"n": "box", "t": "ellipse", "s": "diamond", "a": "hexagon", "p": "note"}
 COLOURS = {"error": "#d62728", "warning": "#ff7f0e", "note": "#1f77b4"}
 PORTS = {  # relation -> (element kind, edge direction: node->element or element->node, style)
     "publisher": ("t", "out", "solid"), "subscriber": ("t", "in", "solid"),
@@ -54,10 +55,17 @@ def build(store: FactStore, findings: list[Finding]) -> Graph:
             g.element(target, render(name), _where(store, port, f"{relation.replace('_', ' ')} {render(type_)}"))
             ends = (f"n:{node}", target) if direction == "out" else (target, f"n:{node}")
             g.graph.add_edge(*ends, style=style, label="")
+    for port, node, name, default in store.rows("param_read"):
+        target = f"p:{render(name)}"
+        g.element(target, render(name), _where(store, port, f"read by {node} (default {render(default)})"))
+        g.graph.add_edge(target, f"n:{node}", style="dotted", label="")
+    for name, value, elem in store.rows("param"):
+        if f"p:{name}" in g.graph:
+            g.element(f"p:{name}", str(name), _where(store, elem, f"set to {render(value)}"))
     for finding in findings:
         if finding.suppression is not None:
             continue
-        for kind, key in (("n", "nodes"), ("t", "topics"), ("s", "services"), ("a", "actions")):
+        for kind, key in (("n", "nodes"), ("t", "topics"), ("s", "services"), ("a", "actions"), ("p", "parameters")):
             for name in finding.subjects.get(key, []):
                 ident = f"{kind}:{name}"
                 if ident in g.graph:
