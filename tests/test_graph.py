@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
 import sys
-import tempfile
 from pathlib import Path
 from xml.etree import ElementTree
 
@@ -16,8 +16,9 @@ from conftest import CORPUS, ROOT
 
 CASE = ["graph", str(CORPUS / "topic_typo" / "buggy"), "--launch", "waypoint_nav/launch/follow_waypoints.launch"]
 CHROMIUM = shutil.which("chromium")
-needs = pytest.mark.skipif((CHROMIUM is None or shutil.which("dot") is None) and not os.environ.get("CI"),
-                           reason="needs Debian's chromium and graphviz (bash .ci/run installs them)")
+needs = pytest.mark.skipif((CHROMIUM is None or shutil.which("dot") is None or
+                            not (ROOT / "tests" / "browser" / "node_modules").is_dir()) and not os.environ.get("CI"),
+                           reason="needs Debian's chromium, graphviz and tests/browser's npm packages (bash .ci/run)")
 
 
 def archlog(*args: str) -> subprocess.CompletedProcess:
@@ -49,25 +50,23 @@ def test_svg_is_xml_with_one_group_per_element() -> None:
     assert {"n:/rover/pure_pursuit", "t:/rover/base_waypoint", "t:/rover/cmd_vel"} <= ids
 
 
-def chromium(*args: str) -> subprocess.CompletedProcess:
-    with tempfile.TemporaryDirectory() as profile:
-        return subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
-                               "--no-first-run", "--disable-background-networking", "--disable-component-update",
-                               "--disable-sync", f"--user-data-dir={profile}", "--virtual-time-budget=3000", *args],
-                              capture_output=True, text=True, timeout=120)
+DRIVER = ROOT / "tests" / "browser" / "check_graph.mjs"
 
 
 @needs
-def test_html_page_renders_searches_and_shows_locations_in_chromium(tmp_path: Path) -> None:
+def test_html_page_in_chromium_as_a_person_uses_it(tmp_path: Path) -> None:
+    """Playwright drives Debian's Chromium: type a search, click an element, zoom, screenshot."""
     page = tmp_path / "graph.html"
     assert archlog(*CASE, "--output", str(page)).returncode == 0
     text = page.read_text()
     assert "http://" not in text.replace("http://www.w3.org", "") and "<script src" not in text  # offline
-    url = f"{page.as_uri()}#search=base_waypoint&show=t:/rover/base_waypoint"
-    dom = chromium("--dump-dom", url).stdout
-    assert dom.count('class="node match"') == 2 and dom.count('class="node dim"') >= 5
-    assert '<span id="count">2 matches</span>' in dom
-    assert "<h3>topic /rover/base_waypoint</h3>" in dom and "pure_pursuit.cpp:45" in dom
     shot = tmp_path / "graph.png"
-    chromium("--window-size=1400,800", f"--screenshot={shot}", url)
+    run = subprocess.run(["node", str(DRIVER), str(page), str(shot), "base_waypoint", "t:/rover/base_waypoint"],
+                         capture_output=True, text=True, timeout=120, cwd=DRIVER.parent)
+    assert run.returncode == 0, run.stderr
+    seen = json.loads(run.stdout)
+    assert seen["elements"] >= 7 and seen["matches"] == 2 and seen["count"] == "2 matches"
+    assert seen["panel"].startswith("topic /rover/base_waypoint")
+    assert "src/waypoint_nav/src/pure_pursuit.cpp:45" in seen["panel"] and "AL102" in seen["panel"]
+    assert seen["zoomed"]
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 10_000
