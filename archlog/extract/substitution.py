@@ -195,17 +195,22 @@ _HUGE_WIDTH = re.compile(r"\d{5,}")
 
 def auto_value(text: str) -> object:
     """roslaunch's 'auto' conversion: float with a '.', int without '_', true/false, else text."""
-    try:
-        if "." in text:
-            return float(text)
-        if "_" not in text:
-            return int(text)
-    except ValueError:
-        pass
+    number = _number(text)
+    if number is not None:
+        return number
     lowered = text.lower()
     if lowered in ("true", "false"):
         return lowered == "true"
     return text
+
+
+def _number(text: str) -> int | float | None:
+    try:
+        if "." in text:
+            return float(text)
+        return None if "_" in text else int(text)
+    except ValueError:
+        return None
 
 
 def _eval(expr: str, ctx: SubstContext) -> str:
