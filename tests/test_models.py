@@ -78,7 +78,28 @@ def test_invalid_model_files_are_diagnostics(tmp_path: Path) -> None:
     incomplete.write_text("package: x\nexecutable: y\npublishers:\n  - {name: a}\n")
     sink = DiagnosticSink()
     assert load_models(broken, "broken.yaml", sink) == []
-    [(summary, instance)] = load_models(incomplete, "incomplete.yaml", sink)
-    assert summary.ports == [] and instance is None
+    assert load_models(incomplete, "incomplete.yaml", sink) == []
     assert [(d.file, d.line, d.code) for d in sink.items] == [("broken.yaml", 5, "model-yaml"),
                                                              ("incomplete.yaml", 4, "model-schema")]
+    assert "publishers/0: 'type' is a required property" in sink.items[1].message
+
+
+def test_model_ports_that_exist_only_under_a_parameter(tmp_path: Path) -> None:
+    launch = workspace(tmp_path, "<launch><node pkg='odom_vendor' type='fuser' name='fuser'>"
+                                 "<param name='publish_tf' value='false'/></node>"
+                                 "<node pkg='odom_vendor' type='fuser' name='fuser2'/></launch>")
+    model = tmp_path / "fuser.yaml"
+    model.write_text("package: odom_vendor\nexecutable: fuser\npublishers:\n"
+                     "  - {name: odom, type: nav_msgs/Odometry}\n"
+                     "  - {name: /tf, type: tf2_msgs/TFMessage, if: {param: ~publish_tf, default: true}}\n")
+    result = analyse([tmp_path], [str(launch)], {}, [model])
+    pubs = sorted((n, t) for _p, n, t, _ty in result.store.rows("publisher"))
+    assert pubs == [("/fuser", "/odom"), ("/fuser2", "/odom"), ("/fuser2", "/tf")]
+
+
+def test_shipped_models_are_valid() -> None:
+    from archlog.extract.models import BUILTIN_DIR
+
+    for path in sorted(BUILTIN_DIR.glob("*.yaml")):
+        sink = DiagnosticSink()
+        assert load_models(path, path.name, sink) and sink.items == [], path.name

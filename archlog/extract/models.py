@@ -2,13 +2,19 @@
 
 A model file holds one model or a list under `models:`. Each model names `package` and
 `executable` (or `instance`, the resolved name of an external node that is always part of the
-configuration) and lists its ports. A name may be a string or `{param: NAME, default: VALUE}`.
+configuration) and lists its ports. A name may be a string or `{param: NAME, default: VALUE}`;
+a port with `if: {param: NAME, default: VALUE}` exists only when that parameter is true (or
+equals `equals`). The format's JSON Schema is archlog/models/model.schema.json; a file that breaks
+it is reported at the offending entry's line and its valid models are still used.
 """
 
 from __future__ import annotations
 
+import json
+from functools import lru_cache
 from pathlib import Path
 
+import jsonschema
 import yaml
 
 from archlog.diagnostics import DiagnosticSink
@@ -48,8 +54,9 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink) -> list[tup
     result = []
     for item in items:
         line = item.get("__line__", 1) if isinstance(item, dict) else 1
-        if not isinstance(item, dict) or not (item.get("instance") or (item.get("package") and item.get("executable"))):
-            diagnostics.add(shown, line, "model-schema", "a model needs `package` and `executable`, or `instance`", "error")
+        problem = _schema_problem(item)
+        if problem is not None:
+            diagnostics.add(shown, problem[0] or line, "model-schema", f"invalid model: {problem[1]}", "error")
             continue
         instance = item.get("instance")
         summary = NodeSummary(str(item.get("package", "external")), str(item.get("executable", instance)), "model",
@@ -61,14 +68,47 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink) -> list[tup
     return result
 
 
-def _port(summary: NodeSummary, kind: str, port: object, shown: str, diagnostics: DiagnosticSink) -> None:
-    if not isinstance(port, dict) or "name" not in port or (kind != "param_read" and "type" not in port):
-        line = port.get("__line__", 1) if isinstance(port, dict) else 1
-        diagnostics.add(shown, line, "model-schema", f"each entry of a {kind} list needs `name` and `type`", "error")
-        return
+def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: DiagnosticSink) -> None:
     default = port.get("default")
+    condition = port.get("if")
     summary.ports.append(Port(kind, _name(port["name"], shown, port["__line__"]), str(port.get("type", "")),
-                              shown, port["__line__"], 0, "", None if default is None else str(default)))
+                              shown, port["__line__"], 0, "", None if default is None else str(default),
+                              condition=None if condition is None else (
+                                  ParamRef(str(condition["param"]), _text(condition.get("default", False)), "",
+                                           shown, condition["__line__"]), _text(condition.get("equals", True)))))
+
+
+def _text(value: object) -> str:
+    return str(value).lower() if isinstance(value, bool) else str(value)
+
+
+@lru_cache(maxsize=1)
+def _validator() -> jsonschema.protocols.Validator:
+    schema = json.loads((BUILTIN_DIR / "model.schema.json").read_text())
+    return jsonschema.Draft202012Validator(schema["$defs"]["model"] | {"$defs": schema["$defs"]})
+
+
+def _schema_problem(item: object) -> tuple[int, str] | None:
+    """(line, message) of the first place a model breaks the schema, or None."""
+    errors = sorted(_validator().iter_errors(_without_lines(item)), key=lambda e: list(e.absolute_path))
+    if not errors:
+        return None
+    error = errors[0]
+    node, line = item, item.get("__line__", 0) if isinstance(item, dict) else 0
+    for step in error.absolute_path:
+        node = node[step] if isinstance(node, (dict, list)) else None
+        if isinstance(node, dict):
+            line = node.get("__line__", line)
+    where = "/".join(map(str, error.absolute_path))
+    return line, (f"{where}: " if where else "") + error.message
+
+
+def _without_lines(data: object) -> object:
+    if isinstance(data, dict):
+        return {k: _without_lines(v) for k, v in data.items() if k != "__line__"}
+    if isinstance(data, list):
+        return [_without_lines(v) for v in data]
+    return data
 
 
 def _name(raw: object, shown: str, line: int) -> Value:

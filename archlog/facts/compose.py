@@ -59,8 +59,10 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
             if kind not in missing:
                 missing.add(kind)
                 diagnostics.add(node.elem.file, node.elem.line, "no-model",
-                                f"no source or model for {'/'.join(kind)}: the ports of {node.name} are unknown "
-                                "(write a model with --model)", "warning")
+                                f"no source or model for {'/'.join(kind)}: the ports of {node.name} are unknown; "
+                                f"describe it in a YAML file passed with --model, starting from {{package: {kind[0]}, "
+                                f"executable: {kind[1]}, publishers: [{{name: TOPIC, type: PKG/TYPE}}], "
+                                "subscribers: [], services: [], params: [{name: ~PARAM, default: VALUE}]}", "warning")
             continue
         store.add("node_source", node.name, summary.origin)
         if summary.incomplete:
@@ -84,7 +86,7 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         store.add("remap", elem.id, node.name, names.resolve(src, node.namespace, node.name),
                   names.resolve(dst, node.namespace, node.name))
         store.locate(elem.id, elem.file, elem.line)
-    for port in [q for p in summary.ports for q in [p, *action_topics(p)]]:
+    for port in [q for p in summary.ports for q in [p, *action_topics(p)] if _present(p, node, config)]:
         pid = store.new_id("p")
         store.locate(pid, port.file, port.line, port.column)
         for policy, value in port.qos:
@@ -171,6 +173,15 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
         return Unknown(" + ".join(p.expr if isinstance(p, Unknown) else repr(p) for p in joined.parts),
                        unknown.file, unknown.line)
     return joined
+
+
+def _present(port: Port, node: LaunchNode, config: LaunchConfig) -> bool:
+    """A port with a condition exists when the condition's value (bound for this instance) matches;
+    an unknown value keeps the port."""
+    if port.condition is None:
+        return True
+    value = _single(_bind(port.condition[0], node, config))
+    return isinstance(value, Unknown) or value.lower() == port.condition[1].lower()
 
 
 def _options(value: str | Unknown | Alternatives) -> list[str | Unknown]:
