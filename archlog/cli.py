@@ -216,6 +216,62 @@ def graph(paths, launches, args, models, rule_paths, config_path, profile, near_
         sys.stdout.write(text)
 
 
+@main.command("observe")
+@click.option("--master", "master_uri", default=lambda: os.environ.get("ROS_MASTER_URI", "http://127.0.0.1:11311"),
+              show_default="$ROS_MASTER_URI", help="The running ROS 1 master to read.")
+@click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write JSON here instead of stdout.")
+@click.option("--write-models", type=click.Path(file_okay=False, path_type=Path),
+              help="Also write an instance model per observed node into this folder.")
+def observe_command(master_uri, output, write_models) -> None:
+    """Read the live architecture (nodes, topics with types, services) from a running master."""
+    from archlog import observe
+
+    try:
+        observed = observe.read_master(observe.master(master_uri))
+    except (OSError, RuntimeError) as exc:
+        raise click.ClickException(f"cannot read the master at {master_uri}: {exc}") from None
+    if write_models:
+        for path in observe.write_models(observed, write_models):
+            click.echo(f"wrote {path}", err=True)
+    if output:
+        output.write_text(observed.to_json(), encoding="utf-8")
+    else:
+        sys.stdout.write(observed.to_json())
+
+
+@main.command()
+@_system_options
+@click.option("--observed", required=True, type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="A JSON file written by `archlog observe`.")
+@click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
+def diff(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, observed, fmt) -> None:
+    """Compare the recovered architecture with an observed one (exit 1 when they differ)."""
+    from archlog import observe
+
+    analysis, _ruleset, _config = _load(paths, launches, args, models, rule_paths, config_path, profile,
+                                        near_miss_threshold, quiet=True)
+    try:
+        seen = observe.Architecture.from_json(observed.read_text(encoding="utf-8"))
+    except (ValueError, KeyError, TypeError) as exc:
+        raise click.UsageError(f"{observed}: not an observed architecture ({exc})") from None
+    result = observe.compare(observe.from_facts(analysis.store), seen)
+    if fmt == "json":
+        sys.stdout.write(json.dumps(result, indent=1) + "\n")
+    else:
+        table = Table("kind", "recovered", "observed", "over-approx. %", "under-approx. %")
+        for kind, row in result.items():
+            table.add_row(kind, str(row["recovered"]), str(row["observed"]), str(row["over_approximation"]),
+                          str(row["under_approximation"]))
+        console = Console(soft_wrap=True)
+        console.print(table)
+        for kind, row in result.items():
+            for item in row["only_recovered"]:
+                console.print(f"only recovered {kind}: {item}", markup=False)
+            for item in row["only_observed"]:
+                console.print(f"only observed {kind}: {item}", markup=False)
+    sys.exit(1 if any(r["only_recovered"] or r["only_observed"] for r in result.values()) else 0)
+
+
 @main.command("test-rules")
 @click.argument("folders", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False, path_type=Path))
 @click.option("--update", is_flag=True, help="Write the .expected files from the current results.")

@@ -15,30 +15,22 @@ import subprocess
 import tempfile
 import time
 import xmlrpc.client
-from dataclasses import dataclass
+from contextlib import contextmanager
+from collections.abc import Iterator
 from pathlib import Path
+
+from archlog import observe
 
 ROSCORE = Path("/usr/bin/roscore")
 ROSLAUNCH = Path("/usr/bin/roslaunch")
 
-_CALLER_ID = "/archlog_test_probe"
 _POLL = 0.2  # seconds between master polls
 _LAUNCH_GRACE = 3.0  # SIGINT -> SIGKILL grace for roslaunch (and its nodes)
 _CORE_GRACE = 2.0  # same for roscore
-_INFRA_NODES = frozenset({"/rosout"})
-_INFRA_TOPICS = frozenset({"/rosout", "/rosout_agg", "/clock"})
-_LOGGER_SERVICES = ("get_loggers", "set_logger_level")
 _ANSI = re.compile(r"\x1b(\[[0-9;]*[A-Za-z]|\][^\x07]*\x07)")  # colours, terminal titles
 
 
-@dataclass(frozen=True)
-class LiveGraph:
-    """The computation graph as registered on the master, minus infrastructure."""
-
-    nodes: frozenset[str]
-    publishers: frozenset[tuple[str, str, str]]  # (node, topic, type)
-    subscribers: frozenset[tuple[str, str, str]]  # (node, topic, type)
-    services: frozenset[tuple[str, str]]  # (node, service)
+LiveGraph = observe.Architecture  # the live graph, as archlog's observer reads it
 
 
 def ros_available() -> bool:
@@ -54,6 +46,20 @@ def launch_graph(
     settle: float = 3.0,
     timeout: float = 30.0,
 ) -> LiveGraph:
+    """Start a private master on 127.0.0.1, roslaunch the files, read the graph, stop everything."""
+    with running_system(workspace_src, launch_files, args, expect_nodes, settle, timeout) as (_uri, graph):
+        return graph
+
+
+@contextmanager
+def running_system(
+    workspace_src: Path,
+    launch_files: list[Path],
+    args: dict[str, str] | None = None,
+    expect_nodes: int | None = None,
+    settle: float = 3.0,
+    timeout: float = 30.0,
+) -> Iterator[tuple[str, LiveGraph]]:
     """Start a private master on 127.0.0.1, roslaunch the files, read the graph, stop everything.
 
     Returns once the graph has been unchanged for ``settle`` seconds (counted
@@ -77,8 +83,7 @@ def launch_graph(
         cmd += [str(f) for f in launch_files]
         cmd += [f"{k}:={v}" for k, v in (args or {}).items()]
         launch = _spawn(cmd, env, launch_log)
-        return _wait_for_graph(master, launch, launch_log, known_launchers,
-                               expect_nodes, settle, deadline)
+        yield uri, _wait_for_graph(master, launch, launch_log, known_launchers, expect_nodes, settle, deadline)
     finally:
         _stop(launch, _LAUNCH_GRACE)
         _stop(core, _CORE_GRACE)
@@ -189,22 +194,12 @@ def _tail(log: Path, lines: int = 40) -> str:
 # -- master ------------------------------------------------------------------
 
 
-class _Transport(xmlrpc.client.Transport):
-    def make_connection(self, host):
-        conn = super().make_connection(host)
-        conn.timeout = 2.0
-        return conn
-
-
-def _master(uri: str) -> xmlrpc.client.ServerProxy:
-    return xmlrpc.client.ServerProxy(uri, transport=_Transport())
+def _master(uri: str):
+    return observe.master(uri)
 
 
 def _call(method, *args):
-    code, msg, value = method(_CALLER_ID, *args)
-    if code != 1:
-        raise RuntimeError(f"master call failed: {msg}")
-    return value
+    return observe.call(method, *args)
 
 
 def _wait_for_master(uri: str, core: subprocess.Popen, log: Path,
@@ -228,19 +223,8 @@ def _roslaunch_uris(master: xmlrpc.client.ServerProxy) -> set[str]:
     return {p for p in _call(master.getParamNames) if p.startswith("/roslaunch/uris/")}
 
 
-def _read_graph(master: xmlrpc.client.ServerProxy) -> LiveGraph:
-    pubs, subs, srvs = _call(master.getSystemState)
-    types = dict(_call(master.getTopicTypes))
-    nodes = {n for _, ns in pubs + subs + srvs for n in ns} - _INFRA_NODES
-
-    def topic_edges(entries):
-        return frozenset((n, t, types.get(t, "")) for t, ns in entries
-                         if t not in _INFRA_TOPICS for n in ns if n in nodes)
-
-    services = frozenset(
-        (n, s) for s, ns in srvs for n in ns
-        if n in nodes and s not in {f"{n}/{x}" for x in _LOGGER_SERVICES})
-    return LiveGraph(frozenset(nodes), topic_edges(pubs), topic_edges(subs), services)
+def _read_graph(master) -> LiveGraph:
+    return observe.read_master(master)
 
 
 def _wait_for_graph(master: xmlrpc.client.ServerProxy, launch: subprocess.Popen, log: Path,

@@ -1,0 +1,127 @@
+"""The observed architecture: read a running ROS 1 master, compare it with the recovered one.
+
+Both sides have one shape, `Architecture`: nodes, publishers and subscribers (node, topic, type),
+and services (node, service). The master keeps one type per topic (the first registration), so
+subscribers are compared by node and topic only. Infrastructure (/rosout, logger services) is left
+out.
+"""
+
+from __future__ import annotations
+
+import json
+import xmlrpc.client
+from dataclasses import dataclass
+from pathlib import Path
+
+import yaml
+
+from archlog.facts.store import FactStore
+from archlog.values import Unknown
+
+CALLER_ID = "/archlog_observer"
+INFRA_NODES = frozenset({"/rosout"})
+INFRA_TOPICS = frozenset({"/rosout", "/rosout_agg", "/clock"})
+LOGGER_SERVICES = ("get_loggers", "set_logger_level")
+KINDS = ("nodes", "publishers", "subscribers", "services")
+
+
+@dataclass(frozen=True)
+class Architecture:
+    nodes: frozenset[str]
+    publishers: frozenset[tuple[str, str, str]]
+    subscribers: frozenset[tuple[str, str, str]]
+    services: frozenset[tuple[str, str]]
+
+    def to_json(self) -> str:
+        return json.dumps({k: sorted(map(list, v)) if k != "nodes" else sorted(v)
+                           for k, v in self.__dict__.items()}, indent=1) + "\n"
+
+    @classmethod
+    def from_json(cls, text: str) -> "Architecture":
+        data = json.loads(text)
+        return cls(frozenset(data["nodes"]), *(frozenset(map(tuple, data[k])) for k in KINDS[1:]))
+
+    def compared(self) -> dict[str, frozenset]:
+        """What a comparison looks at: subscribers without their (master-side ambiguous) type."""
+        return {"nodes": self.nodes, "publishers": self.publishers,
+                "subscribers": frozenset((n, t) for n, t, _ty in self.subscribers), "services": self.services}
+
+
+class _Transport(xmlrpc.client.Transport):
+    def make_connection(self, host):  # noqa: ANN001, ANN202 - xmlrpc's signature
+        connection = super().make_connection(host)
+        connection.timeout = 5.0
+        return connection
+
+
+def master(uri: str) -> xmlrpc.client.ServerProxy:
+    return xmlrpc.client.ServerProxy(uri, transport=_Transport())
+
+
+def call(method, *args):  # noqa: ANN001, ANN201 - any master API method
+    code, message, value = method(CALLER_ID, *args)
+    if code != 1:
+        raise RuntimeError(f"master call failed: {message}")
+    return value
+
+
+def read_master(proxy: xmlrpc.client.ServerProxy) -> Architecture:
+    """The computation graph registered on the master, minus infrastructure."""
+    pubs, subs, srvs = call(proxy.getSystemState)
+    types = dict(call(proxy.getTopicTypes))
+    nodes = {n for _, members in pubs + subs + srvs for n in members} - INFRA_NODES
+
+    def edges(entries: list) -> frozenset[tuple[str, str, str]]:
+        return frozenset((n, t, types.get(t, "")) for t, members in entries if t not in INFRA_TOPICS
+                         for n in members if n in nodes)
+
+    services = frozenset((n, s) for s, members in srvs for n in members
+                         if n in nodes and s not in {f"{n}/{x}" for x in LOGGER_SERVICES})
+    return Architecture(frozenset(nodes), edges(pubs), edges(subs), services)
+
+
+def from_facts(store: FactStore) -> Architecture:
+    """The recovered architecture in the same shape (ports with unknown names left out)."""
+    def rows(relation: str) -> frozenset:
+        return frozenset((str(n), t, ty if isinstance(ty, str) else "") for _p, n, t, ty in store.rows(relation)
+                         if not isinstance(t, Unknown))
+
+    services = frozenset((str(n), s) for _p, n, s, _ty in store.rows("service_server") if not isinstance(s, Unknown))
+    return Architecture(frozenset(str(r[0]) for r in store.rows("node")), rows("publisher"), rows("subscriber"),
+                        services)
+
+
+def compare(recovered: Architecture, observed: Architecture) -> dict[str, dict]:
+    """Per kind: counts, over- and under-approximation (as in the ROSDiscover paper's Table IV),
+    and the differences."""
+    result = {}
+    ours, theirs = recovered.compared(), observed.compared()
+    for kind in KINDS:
+        extra, missing = sorted(ours[kind] - theirs[kind]), sorted(theirs[kind] - ours[kind])
+        result[kind] = {
+            "recovered": len(ours[kind]), "observed": len(theirs[kind]),
+            "over_approximation": round(100 * len(extra) / len(ours[kind]), 1) if ours[kind] else 0.0,
+            "under_approximation": round(100 * len(missing) / len(theirs[kind]), 1) if theirs[kind] else 0.0,
+            "only_recovered": [list(x) if isinstance(x, tuple) else x for x in extra],
+            "only_observed": [list(x) if isinstance(x, tuple) else x for x in missing],
+        }
+    return result
+
+
+def write_models(observed: Architecture, folder: Path, skip: frozenset[str] = frozenset()) -> list[Path]:
+    """One instance model per observed node (except `skip`): its topics as the master saw them.
+    Service types are not on the master, so services are listed in a comment."""
+    folder.mkdir(parents=True, exist_ok=True)
+    written = []
+    for node in sorted(observed.nodes - skip):
+        model = {"instance": node,
+                 "publishers": [{"name": t, "type": ty} for n, t, ty in sorted(observed.publishers) if n == node],
+                 "subscribers": [{"name": t, "type": ty} for n, t, ty in sorted(observed.subscribers) if n == node]}
+        services = [s for n, s in sorted(observed.services) if n == node]
+        path = folder / (node.strip("/").replace("/", "__") + ".yaml")
+        header = "# observed by archlog from a running master; check it before use\n"
+        if services:
+            header += "# services (types unknown to the master): " + ", ".join(services) + "\n"
+        path.write_text(header + yaml.safe_dump(model, sort_keys=False), encoding="utf-8")
+        written.append(path)
+    return written

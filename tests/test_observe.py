@@ -1,0 +1,58 @@
+"""`archlog observe` and `archlog diff` end to end: a corpus system runs on a loopback master."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import yaml
+
+from archlog.analysis import resolve_launch
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.workspace import Workspace
+from conftest import CORPUS, ROOT, load_case, requires_ros
+from support.build_cpp import build_workspace
+from support.live_graph import running_system
+
+pytestmark = requires_ros()
+
+
+def archlog(*args: str | Path) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "archlog", *map(str, args)], capture_output=True, text=True,
+                          cwd=ROOT, timeout=300)
+
+
+def test_observe_then_diff_is_empty_where_recovery_is_complete(tmp_path: Path) -> None:
+    variant = CORPUS / "wrong_remap" / "buggy"
+    case = load_case(variant)
+    observed, models = tmp_path / "observed.json", tmp_path / "models"
+    with tempfile.TemporaryDirectory() as work:
+        src = build_workspace(variant, Path(work) / "ws")
+        files = [resolve_launch(spec, Workspace([src.parent], DiagnosticSink())) for spec in case["launch"]]
+        with running_system(src, files, expect_nodes=3, timeout=45) as (uri, graph):
+            result = archlog("observe", "--master", uri, "--output", observed, "--write-models", models)
+            assert result.returncode == 0, result.stderr
+    seen = json.loads(observed.read_text())
+    assert set(seen["nodes"]) == set(graph.nodes)
+    launches = [w for spec in case["launch"] for w in ("--launch", spec)]
+    same = archlog("diff", variant, *launches, "--observed", observed, "--format", "json")
+    assert same.returncode == 0, same.stdout
+    table = json.loads(same.stdout)
+    assert all(row["over_approximation"] == row["under_approximation"] == 0 for row in table.values())
+    assert table["publishers"]["recovered"] == table["publishers"]["observed"] > 0
+    # a model written from the observation describes the node as the master saw it
+    model = yaml.safe_load((models / "camera__camera_driver.yaml").read_text())
+    assert model["instance"] == "/camera/camera_driver"
+    assert {"name": "/camera/image", "type": "sensor_msgs/Image"} in model["publishers"]
+    # the clean twin's configuration differs from what ran: the diff says where
+    other = CORPUS / "wrong_remap" / "clean"
+    changed = archlog("diff", other, *launches, "--observed", observed)
+    assert changed.returncode == 1 and "only recovered subscribers" in changed.stdout
+
+
+def test_observe_without_a_master_is_a_clear_error() -> None:
+    result = archlog("observe", "--master", "http://127.0.0.1:9")
+    assert result.returncode == 2 and "cannot read the master" in result.stderr and "Traceback" not in result.stderr
