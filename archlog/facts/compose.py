@@ -6,6 +6,7 @@ from dataclasses import dataclass, replace
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.configured import configured_ports
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace import Workspace
@@ -46,6 +47,10 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
     for node in config.nodes:
         kind = node.kind
         summary = summaries.get(kind)
+        extra = configured_ports(node, diagnostics)
+        if extra:
+            summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
+                NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")
         store.add("node", node.name, node.pkg, node.type, node.elem.id)
         store.locate(node.elem.id, node.elem.file, node.elem.line)
         if node.condition:

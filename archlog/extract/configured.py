@@ -1,0 +1,104 @@
+"""Ports that come from a node's command line and the files it names, not from its code:
+`rosbag record` subscribes to the topics it is given, rviz to what its displays (`-d FILE`) name
+and publishes from its tools."""
+
+from __future__ import annotations
+
+import shlex
+from pathlib import Path
+
+import yaml
+
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.launch import LaunchNode
+from archlog.extract.models import _LineLoader
+from archlog.extract.summary import Port
+from archlog.values import Unknown
+
+# rosbag record options that take a value (the next word is not a topic)
+_RECORD_VALUED = {"-O", "-o", "--output-name", "--output-prefix", "-x", "--exclude", "--size", "--duration", "-b",
+                  "--buffsize", "--chunksize", "-l", "--limit", "--node", "--max-splits"}
+RVIZ_TYPES = {
+    "rviz/LaserScan": "sensor_msgs/LaserScan", "rviz/Image": "sensor_msgs/Image", "rviz/Camera": "sensor_msgs/Image",
+    "rviz/Map": "nav_msgs/OccupancyGrid", "rviz/Path": "nav_msgs/Path", "rviz/Odometry": "nav_msgs/Odometry",
+    "rviz/PointCloud2": "sensor_msgs/PointCloud2", "rviz/PointCloud": "sensor_msgs/PointCloud",
+    "rviz/Marker": "visualization_msgs/Marker", "rviz/MarkerArray": "visualization_msgs/MarkerArray",
+    "rviz/Pose": "geometry_msgs/PoseStamped", "rviz/PoseArray": "geometry_msgs/PoseArray",
+    "rviz/PoseWithCovariance": "geometry_msgs/PoseWithCovarianceStamped", "rviz/Polygon": "geometry_msgs/PolygonStamped",
+    "rviz/Range": "sensor_msgs/Range", "rviz/Temperature": "sensor_msgs/Temperature",
+    "rviz/Illuminance": "sensor_msgs/Illuminance", "rviz/Wrench": "geometry_msgs/WrenchStamped",
+    "rviz/Imu": "sensor_msgs/Imu", "rviz_imu_plugin/Imu": "sensor_msgs/Imu",
+    "rviz/SetGoal": "geometry_msgs/PoseStamped", "rviz/SetInitialPose": "geometry_msgs/PoseWithCovarianceStamped",
+    "rviz/PublishPoint": "geometry_msgs/PointStamped",
+}
+RVIZ_TOOL_TOPICS = {"rviz/SetGoal": "/move_base_simple/goal", "rviz/SetInitialPose": "/initialpose",
+                    "rviz/PublishPoint": "/clicked_point"}
+
+
+def configured_ports(node: LaunchNode, diagnostics: DiagnosticSink) -> list[Port]:
+    words = shlex.split(node.args) if node.args else []
+    if (node.pkg, node.type) == ("rosbag", "record"):
+        return _recorded(node, words)
+    if (node.pkg, node.type) == ("rviz", "rviz"):
+        config = next((words[i + 1] for i, w in enumerate(words[:-1]) if w in ("-d", "--display-config")), None)
+        return _rviz(node, Path(config), diagnostics) if config else []
+    return []
+
+
+def _recorded(node: LaunchNode, words: list[str]) -> list[Port]:
+    """The topics `rosbag record` is given (none are known with -a or with -e regexes)."""
+    if {"-a", "--all", "-e", "--regex"} & set(words):
+        return []
+    topics, skip = [], False
+    for word in words:
+        if skip:
+            skip = False
+        elif word in _RECORD_VALUED:
+            skip = True
+        elif not word.startswith("-") and ":=" not in word:
+            topics.append(word)
+    return [Port("subscriber", topic, Unknown(f"rosbag records {topic} whatever its type", node.elem.file,
+                                              node.elem.line), node.elem.file, node.elem.line) for topic in topics]
+
+
+def _rviz(node: LaunchNode, config: Path, diagnostics: DiagnosticSink) -> list[Port]:
+    try:
+        data = yaml.load(config.read_text(encoding="utf-8"), Loader=_LineLoader)
+    except (OSError, yaml.YAMLError) as exc:
+        diagnostics.add(node.elem.file, node.elem.line, "rviz-config",
+                        f"rviz configuration {config} cannot be read ({exc}); its displays' topics are unknown",
+                        "warning")
+        return []
+    manager = data.get("Visualization Manager", {}) if isinstance(data, dict) else {}
+    shown = str(config)
+    ports = [port for display in _displays(manager.get("Displays", []))
+             if (port := _display_port(display, shown)) is not None]
+    for tool in manager.get("Tools", []) or []:
+        kind = tool.get("Class") if isinstance(tool, dict) else None
+        if kind in RVIZ_TOOL_TOPICS:
+            topic = tool.get("Topic", RVIZ_TOOL_TOPICS[kind])
+            ports.append(Port("publisher", str(topic), RVIZ_TYPES[kind], shown, tool.get("__line__", 1)))
+    return ports
+
+
+def _displays(displays: object) -> list[dict]:
+    """Enabled displays, with those inside display groups."""
+    found = []
+    for display in displays if isinstance(displays, list) else []:
+        if not isinstance(display, dict) or display.get("Enabled") is False:
+            continue
+        found.append(display)
+        found += _displays(display.get("Displays", []))
+    return found
+
+
+def _display_port(display: dict, shown: str) -> Port | None:
+    topic = display.get("Topic") or display.get("Image Topic") or display.get("Marker Topic")
+    if isinstance(topic, dict):
+        topic = topic.get("Value")
+    if not topic:
+        return None
+    kind = display.get("Class", "")
+    line = display.get("__line__", 1)
+    type_ = RVIZ_TYPES.get(kind) or Unknown(f"rviz display {kind}", shown, line)
+    return Port("subscriber", str(topic), type_, shown, line)
