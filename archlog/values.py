@@ -29,6 +29,17 @@ class ParamRef:
 
 
 @dataclass(frozen=True)
+class ParamList:
+    """Names taken from a list parameter, one per element (the element itself, or its `field`):
+    twist_mux's `~topics: [{name: joy, topic: joy_vel}, ...]`."""
+
+    name: str
+    field: str = ""
+    file: str = ""
+    line: int = 0
+
+
+@dataclass(frozen=True)
 class Concat:
     """A string built from parts at least one of which is not a literal."""
 
@@ -44,7 +55,7 @@ class Alternatives:
     every: bool = False
 
 
-Value = str | Unknown | ParamRef | Concat | Alternatives
+Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives
 MAX_ALTERNATIVES = 16
 
 

@@ -103,3 +103,23 @@ def test_shipped_models_are_valid() -> None:
     for path in sorted(BUILTIN_DIR.glob("*.yaml")):
         sink = DiagnosticSink()
         assert load_models(path, path.name, sink) and sink.items == [], path.name
+
+
+def test_twist_mux_inputs_come_from_its_topic_list(tmp_path: Path) -> None:
+    launch = workspace(tmp_path, """<launch>
+  <node pkg="twist_mux" type="twist_mux" name="twist_mux">
+    <rosparam>
+      topics:
+        - {name: joystick, topic: joy_vel, timeout: 0.5, priority: 100}
+        - {name: navigation, topic: nav_vel, timeout: 0.5, priority: 10}
+      locks:
+        - {name: e_stop, topic: e_stop, timeout: 0.0, priority: 255}
+    </rosparam>
+  </node>
+  <node pkg="twist_mux" type="twist_mux" name="bare_mux"/>
+</launch>""")
+    result = analyse([tmp_path], [str(launch)], {}, [])
+    subs = sorted((n, t if isinstance(t, str) else "?", ty) for _p, n, t, ty in result.store.rows("subscriber"))
+    assert subs == [("/bare_mux", "?", "geometry_msgs/Twist"), ("/bare_mux", "?", "std_msgs/Bool"),
+                    ("/twist_mux", "/e_stop", "std_msgs/Bool"), ("/twist_mux", "/joy_vel", "geometry_msgs/Twist"),
+                    ("/twist_mux", "/nav_vel", "geometry_msgs/Twist")]

@@ -3,7 +3,8 @@
 A model file holds one model or a list under `models:`. Each model names `package` and
 `executable` (or `instance`, the resolved name of an external node that is always part of the
 configuration) and lists its ports. A name may be a string or `{param: NAME, default: VALUE}`;
-a port with `if: {param: NAME, default: VALUE}` exists only when that parameter is true (or
+`{each: LIST_PARAM, field: KEY}` makes one port per element of a list parameter (twist_mux's
+inputs); a port with `if: {param: NAME, default: VALUE}` exists only when that parameter is true (or
 equals `equals`). The format's JSON Schema is archlog/models/model.schema.json; a file that breaks
 it is reported at the offending entry's line and its valid models are still used.
 """
@@ -19,7 +20,7 @@ import yaml
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.summary import NodeSummary, Port
-from archlog.values import ParamRef, Value
+from archlog.values import ParamList, ParamRef, Value
 
 SECTIONS = {
     "publishers": "publisher", "subscribers": "subscriber",
@@ -112,6 +113,8 @@ def _without_lines(data: object) -> object:
 
 
 def _name(raw: object, shown: str, line: int) -> Value:
+    if isinstance(raw, dict) and "each" in raw:
+        return ParamList(str(raw["each"]), str(raw.get("field", "")), shown, line)
     if isinstance(raw, dict) and "param" in raw:
         return ParamRef(str(raw["param"]), str(raw.get("default", "")), "", shown, line)
     return str(raw)

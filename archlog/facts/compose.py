@@ -12,7 +12,7 @@ from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace import Workspace
 from archlog.facts.similarity import near_pairs
 from archlog.facts.store import FactStore
-from archlog.values import Alternatives, Concat, ParamRef, Unknown, Value, concat
+from archlog.values import Alternatives, Concat, ParamList, ParamRef, Unknown, Value, concat
 
 NAMED_PORTS = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 
@@ -91,7 +91,8 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         store.add("remap", elem.id, node.name, names.resolve(src, node.namespace, node.name),
                   names.resolve(dst, node.namespace, node.name))
         store.locate(elem.id, elem.file, elem.line)
-    for port in [q for p in summary.ports for q in [p, *action_topics(p)] if _present(p, node, config)]:
+    ports = [e for p in summary.ports if _present(p, node, config) for e in _each(p, node, config)]
+    for port in [q for p in ports for q in [p, *action_topics(p)]]:
         pid = store.new_id("p")
         store.locate(pid, port.file, port.line, port.column)
         for policy, value in port.qos:
@@ -178,6 +179,19 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
         return Unknown(" + ".join(p.expr if isinstance(p, Unknown) else repr(p) for p in joined.parts),
                        unknown.file, unknown.line)
     return joined
+
+
+def _each(port: Port, node: LaunchNode, config: LaunchConfig) -> list[Port]:
+    """A port named from a list parameter becomes one port per element of that list."""
+    if not isinstance(port.name, ParamList):
+        return [port]
+    key = _resolve(port.name.name, port.handle_ns, node, config, {})
+    items = config.params.get(key, (None,))[0] if isinstance(key, str) else None
+    if not isinstance(items, list):
+        return [replace(port, name=Unknown(f"each element of {port.name.name} (not set by the configuration)",
+                                           port.name.file, port.name.line))]
+    names = [item.get(port.name.field) if isinstance(item, dict) and port.name.field else item for item in items]
+    return [replace(port, name=str(name)) for name in names if name is not None]
 
 
 def _present(port: Port, node: LaunchNode, config: LaunchConfig) -> bool:
