@@ -7,6 +7,7 @@ from pathlib import Path
 from archlog.analysis import analyse
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.models import load_models
+from archlog.queries.session import Session
 from archlog.rules.engine import Engine
 from archlog.rules.ruleset import load_rules
 
@@ -123,3 +124,21 @@ def test_twist_mux_inputs_come_from_its_topic_list(tmp_path: Path) -> None:
     assert subs == [("/bare_mux", "?", "geometry_msgs/Twist"), ("/bare_mux", "?", "std_msgs/Bool"),
                     ("/twist_mux", "/e_stop", "std_msgs/Bool"), ("/twist_mux", "/joy_vel", "geometry_msgs/Twist"),
                     ("/twist_mux", "/nav_vel", "geometry_msgs/Twist")]
+
+
+def test_robot_localization_inputs_exist_only_when_configured(tmp_path: Path) -> None:
+    launch = workspace(tmp_path, "<launch><node pkg='robot_localization' type='ekf_localization_node' name='ekf'>"
+                                 "<param name='odom0' value='wheel/odom'/><param name='imu0' value='imu/data'/>"
+                                 "</node></launch>")
+    result = analyse([tmp_path], [str(launch)], {}, [])
+    subs = sorted(t for _p, _n, t, _ty in result.store.rows("subscriber"))
+    assert subs == ["/imu/data", "/set_pose", "/tf", "/tf_static", "/wheel/odom"]
+    dangling = Session(result.store, load_rules([])).query("dangling_sub(_, _, T, _)")
+    assert sorted(row[0] for row in dangling.rows) == ["/imu/data", "/set_pose", "/wheel/odom"]
+
+
+def test_model_marked_incomplete_makes_its_node_opaque(tmp_path: Path) -> None:
+    launch = workspace(tmp_path, "<launch><node pkg='topic_tools' type='relay' name='relay' args='scan scan_out'/>"
+                                 "<node pkg='demo' type='planner.py' name='planner'/></launch>")
+    result = analyse([tmp_path], [str(launch)], {}, [])
+    assert [n for n, _reason in result.store.rows("node_incomplete")] == ["/relay"]

@@ -5,8 +5,10 @@ A model file holds one model or a list under `models:`. Each model names `packag
 configuration) and lists its ports. A name may be a string or `{param: NAME, default: VALUE}`;
 `{each: LIST_PARAM, field: KEY}` makes one port per element of a list parameter (twist_mux's
 inputs); a port with `if: {param: NAME, default: VALUE}` exists only when that parameter is true (or
-equals `equals`). The format's JSON Schema is archlog/models/model.schema.json; a file that breaks
-it is reported at the offending entry's line and its valid models are still used.
+equals `equals`), and with `if: {param: NAME, set: true}` only when the configuration sets it. A
+model with `incomplete: REASON` lists only some ports, so its nodes count as opaque. The format's
+JSON Schema is archlog/models/model.schema.json; a file that breaks it is reported at the offending
+entry's line and its valid models are still used.
 """
 
 from __future__ import annotations
@@ -29,6 +31,7 @@ SECTIONS = {
     "params": "param_read",
 }
 BUILTIN_DIR = Path(__file__).resolve().parent.parent / "models"
+UNSET = "<not set>"  # the value of a `set: true` condition's parameter when the configuration lacks it
 
 
 class _LineLoader(yaml.SafeLoader):
@@ -61,7 +64,8 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink) -> list[tup
             continue
         instance = item.get("instance")
         summary = NodeSummary(str(item.get("package", "external")), str(item.get("executable", instance)), "model",
-                              default_name=str(item.get("name", instance or item["executable"])))
+                              default_name=str(item.get("name", instance or item["executable"])),
+                              incomplete=item.get("incomplete"))
         for section, kind in SECTIONS.items():
             for port in item.get(section) or []:
                 _port(summary, kind, port, shown, diagnostics)
@@ -74,9 +78,15 @@ def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: 
     condition = port.get("if")
     summary.ports.append(Port(kind, _name(port["name"], shown, port["__line__"]), str(port.get("type", "")),
                               shown, port["__line__"], 0, "", None if default is None else str(default),
-                              condition=None if condition is None else (
-                                  ParamRef(str(condition["param"]), _text(condition.get("default", False)), "",
-                                           shown, condition["__line__"]), _text(condition.get("equals", True)))))
+                              condition=None if condition is None else _condition(condition, shown)))
+
+
+def _condition(condition: dict, shown: str) -> tuple[Value, str | None]:
+    """(parameter read, value it must equal), or (parameter read, None) for `set: true`."""
+    if condition.get("set"):
+        return ParamRef(str(condition["param"]), UNSET, "", shown, condition["__line__"]), None
+    return (ParamRef(str(condition["param"]), _text(condition.get("default", False)), "", shown,
+                     condition["__line__"]), _text(condition.get("equals", True)))
 
 
 def _text(value: object) -> str:

@@ -26,7 +26,7 @@ class Port:
     default: Value | None = None
     qos: tuple[tuple[str, str], ...] = ()
     queue: Value | None = None
-    condition: tuple[Value, str] | None = None  # the port exists only when this value equals that text
+    condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
 
 
 @dataclass

@@ -8,6 +8,7 @@ from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.configured import configured_ports
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
+from archlog.extract.models import UNSET
 from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace import Workspace
 from archlog.facts.similarity import near_pairs
@@ -200,6 +201,8 @@ def _present(port: Port, node: LaunchNode, config: LaunchConfig) -> bool:
     if port.condition is None:
         return True
     value = _single(_bind(port.condition[0], node, config))
+    if port.condition[1] is None:  # `set: true`
+        return value != UNSET
     return isinstance(value, Unknown) or value.lower() == port.condition[1].lower()
 
 
