@@ -56,3 +56,19 @@ def test_observe_then_diff_is_empty_where_recovery_is_complete(tmp_path: Path) -
 def test_observe_without_a_master_is_a_clear_error() -> None:
     result = archlog("observe", "--master", "http://127.0.0.1:9")
     assert result.returncode == 2 and "cannot read the master" in result.stderr and "Traceback" not in result.stderr
+
+
+def test_shipped_models_match_the_real_debian_nodes(tmp_path: Path) -> None:
+    """robot_state_publisher, joint_state_publisher (with ~source_list) and the diagnostic aggregator,
+    run from Debian's packages: their models recover exactly the ports the master sees."""
+    system = CORPUS.parent / "models" / "debian_nodes"
+    observed = tmp_path / "observed.json"
+    launch = system / "realnodes" / "launch" / "real.launch"
+    with running_system(system, [launch], expect_nodes=5, timeout=45) as (uri, _graph):
+        result = archlog("observe", "--master", uri, "--output", observed)
+        assert result.returncode == 0, result.stderr
+    diff = archlog("diff", system, "--launch", "realnodes/real.launch", "--observed", observed, "--format", "json")
+    assert diff.returncode == 0, diff.stdout
+    table = json.loads(diff.stdout)
+    assert {kind: row["observed"] for kind, row in table.items()} == {
+        "nodes": 5, "publishers": 8, "subscribers": 5, "services": 1}
