@@ -222,14 +222,23 @@ def graph(paths, launches, args, models, rule_paths, config_path, profile, near_
 @click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write JSON here instead of stdout.")
 @click.option("--write-models", type=click.Path(file_okay=False, path_type=Path),
               help="Also write an instance model per observed node into this folder.")
-def observe_command(master_uri, output, write_models) -> None:
+@click.option("--ros2-node-info", "node_info", multiple=True, type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="Read saved `ros2 node info NODE` output (repeatable) instead of a ROS 1 master.")
+def observe_command(master_uri, output, write_models, node_info) -> None:
     """Read the live architecture (nodes, topics with types, services) from a running master."""
     from archlog import observe
 
-    try:
-        observed = observe.read_master(observe.master(master_uri))
-    except (OSError, RuntimeError) as exc:
-        raise click.ClickException(f"cannot read the master at {master_uri}: {exc}") from None
+    if node_info:
+        try:
+            parts = [observe.read_ros2_node_info(p.read_text(encoding="utf-8"), str(p)) for p in node_info]
+        except observe.NodeInfoError as exc:
+            raise click.ClickException(str(exc)) from None
+        observed = observe.Architecture.merged(parts)
+    else:
+        try:
+            observed = observe.read_master(observe.master(master_uri))
+        except (OSError, RuntimeError) as exc:
+            raise click.ClickException(f"cannot read the master at {master_uri}: {exc}") from None
     if write_models:
         for path in observe.write_models(observed, write_models):
             click.echo(f"wrote {path}", err=True)

@@ -1,4 +1,5 @@
-"""The observed architecture: read a running ROS 1 master, compare it with the recovered one.
+"""The observed architecture: read a running ROS 1 master (or saved `ros2 node info` output),
+compare it with the recovered one.
 
 Both sides have one shape, `Architecture`: nodes, publishers and subscribers (node, topic, type),
 and services (node, service). The master keeps one type per topic (the first registration), so
@@ -23,6 +24,11 @@ INFRA_NODES = frozenset({"/rosout"})
 INFRA_TOPICS = frozenset({"/rosout", "/rosout_agg", "/clock"})
 LOGGER_SERVICES = ("get_loggers", "set_logger_level")
 KINDS = ("nodes", "publishers", "subscribers", "services")
+ROS2_INFRA_TOPICS = frozenset({"/rosout", "/parameter_events"})
+ROS2_PARAMETER_SERVICES = ("describe_parameters", "get_parameter_types", "get_parameters", "list_parameters",
+                           "set_parameters", "set_parameters_atomically", "get_type_description")
+ROS2_SECTIONS = {"Subscribers:": "subscribers", "Publishers:": "publishers", "Service Servers:": "services",
+                 "Service Clients:": None, "Action Servers:": None, "Action Clients:": None}
 
 
 @dataclass(frozen=True)
@@ -35,6 +41,10 @@ class Architecture:
     def to_json(self) -> str:
         return json.dumps({k: sorted(map(list, v)) if k != "nodes" else sorted(v)
                            for k, v in self.__dict__.items()}, indent=1) + "\n"
+
+    @classmethod
+    def merged(cls, parts: list["Architecture"]) -> "Architecture":
+        return cls(*(frozenset().union(*(getattr(a, k) for a in parts)) for k in KINDS))
 
     @classmethod
     def from_json(cls, text: str) -> "Architecture":
@@ -78,6 +88,40 @@ def read_master(proxy: xmlrpc.client.ServerProxy) -> Architecture:
     services = frozenset((n, s) for s, members in srvs for n in members
                          if n in nodes and s not in {f"{n}/{x}" for x in LOGGER_SERVICES})
     return Architecture(frozenset(nodes), edges(pubs), edges(subs), services)
+
+
+class NodeInfoError(ValueError):
+    """A line of saved `ros2 node info` output that does not fit its format."""
+
+
+def read_ros2_node_info(text: str, file: str) -> Architecture:
+    """The nodes in saved `ros2 node info NODE` outputs (several may be concatenated), minus
+    infrastructure (/rosout, /parameter_events, parameter services). Clients and actions are skipped:
+    the shape has no place for them."""
+    nodes: set[str] = set()
+    found: dict[str, set] = {"publishers": set(), "subscribers": set(), "services": set()}
+    node = section = None
+    for number, line in enumerate(text.splitlines(), 1):
+        stripped = line.strip()
+        if not stripped:
+            continue
+        if not line[0].isspace():
+            if not stripped.startswith("/"):
+                raise NodeInfoError(f"{file}:{number}: expected a node name such as /talker, got {stripped!r}")
+            node, section = stripped, None
+            nodes.add(node)
+        elif stripped in ROS2_SECTIONS:
+            section = ROS2_SECTIONS[stripped] or ""
+        elif node is None or section is None or ": " not in stripped:
+            raise NodeInfoError(f"{file}:{number}: expected 'NAME: TYPE' under a section, got {stripped!r}")
+        elif section:
+            name, type_ = stripped.split(": ", 1)
+            if section == "services":
+                if name not in {f"{node}/{x}" for x in ROS2_PARAMETER_SERVICES}:
+                    found["services"].add((node, name))
+            elif name not in ROS2_INFRA_TOPICS:
+                found[section].add((node, name, type_))
+    return Architecture(frozenset(nodes), *(frozenset(found[k]) for k in KINDS[1:]))
 
 
 def from_facts(store: FactStore) -> Architecture:

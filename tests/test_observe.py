@@ -72,3 +72,19 @@ def test_shipped_models_match_the_real_debian_nodes(tmp_path: Path) -> None:
     table = json.loads(diff.stdout)
     assert {kind: row["observed"] for kind, row in table.items()} == {
         "nodes": 5, "publishers": 8, "subscribers": 5, "services": 1}
+
+
+def test_observe_reads_saved_ros2_node_info(tmp_path: Path) -> None:
+    saved = ROOT / "corpus" / "observed" / "talker_listener.node_info.txt"
+    result = archlog("observe", "--ros2-node-info", saved, "--write-models", tmp_path / "models")
+    assert result.returncode == 0, result.stderr
+    seen = json.loads(result.stdout)
+    assert seen == {"nodes": ["/listener", "/talker"], "publishers": [["/talker", "/chatter", "std_msgs/msg/String"]],
+                    "subscribers": [["/listener", "/chatter", "std_msgs/msg/String"]],
+                    "services": [["/listener", "/listener/reset"]]}
+    assert yaml.safe_load((tmp_path / "models" / "talker.yaml").read_text())["publishers"] == [
+        {"name": "/chatter", "type": "std_msgs/msg/String"}]
+    broken = tmp_path / "broken.txt"
+    broken.write_text("/a\n  Publishers:\n    chatter\n")
+    bad = archlog("observe", "--ros2-node-info", broken)
+    assert bad.returncode == 2 and f"{broken}:3:" in bad.stderr and "Traceback" not in bad.stderr
