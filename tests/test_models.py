@@ -143,15 +143,3 @@ def test_model_marked_incomplete_makes_its_node_opaque(tmp_path: Path) -> None:
     result = analyse([tmp_path], [str(launch)], {}, [])
     assert [n for n, _reason in result.store.rows("node_incomplete")] == ["/relay"]
 
-
-def test_rosbag_record_subscribes_to_its_command_line_topics(tmp_path: Path) -> None:
-    launch = workspace(tmp_path, "<launch><group ns='bags'>"
-                                 "<node pkg='rosbag' type='record' name='rec' args='-O run.bag --split --size 1024 "
-                                 "scan /odom __name:=rec'/>"
-                                 "<node pkg='rosbag' type='record' name='all' args='-a -x /camera/.*'/></group>"
-                                 "<node pkg='demo' type='planner.py' name='planner'/></launch>")
-    result = analyse([tmp_path], [str(launch)], {}, [])
-    subs = sorted((n, t if isinstance(t, str) else "?", ty if isinstance(ty, str) else "?")
-                  for _p, n, t, ty in result.store.rows("subscriber"))
-    assert subs == [("/bags/all", "?", "?"), ("/bags/rec", "/bags/scan", "?"), ("/bags/rec", "/odom", "?"),
-                    ("/planner", "/scan", "sensor_msgs/LaserScan")]

@@ -1,6 +1,6 @@
 """Ports that come from a node's command line and the files it names, not from its code:
 `rosbag record` subscribes to the topics it is given, rviz to what its displays (`-d FILE`) name
-and publishes from its tools."""
+and publishes from its tools, and `spawn_model` brings the gazebo plugins of the robot description."""
 
 from __future__ import annotations
 
@@ -10,9 +10,11 @@ from pathlib import Path
 import yaml
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchNode
+from archlog.extract.launch import LaunchConfig, LaunchNode
 from archlog.extract.models import _LineLoader
+from archlog.extract.robot_description import spawned_ports
 from archlog.extract.summary import Port
+from archlog.extract.workspace import Workspace
 from archlog.values import Unknown
 
 # rosbag record options that take a value (the next word is not a topic)
@@ -35,8 +37,11 @@ RVIZ_TOOL_TOPICS = {"rviz/SetGoal": "/move_base_simple/goal", "rviz/SetInitialPo
                     "rviz/PublishPoint": "/clicked_point"}
 
 
-def configured_ports(node: LaunchNode, diagnostics: DiagnosticSink) -> list[Port]:
+def configured_ports(node: LaunchNode, config: LaunchConfig, workspace: Workspace,
+                     diagnostics: DiagnosticSink) -> list[Port]:
     words = shlex.split(node.args) if node.args else []
+    if (node.pkg, node.type) == ("gazebo_ros", "spawn_model"):
+        return spawned_ports(node, words, config, workspace, diagnostics)
     if (node.pkg, node.type) == ("rosbag", "record"):
         return _recorded(node, words)
     if (node.pkg, node.type) == ("rviz", "rviz"):

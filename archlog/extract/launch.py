@@ -410,6 +410,10 @@ class LaunchInterpreter:
             self._put(names.join(scope.ns, name), value, elem)
 
     def _param_value(self, scope: _Scope, el: etree._Element, source: str, kind: str, elem: Element) -> object:
+        if source == "command":  # never run: its words are kept, and xacro need not be installed to read them
+            find = scope.subst.find
+            subst = replace(scope.subst, find=lambda pkg: find(pkg) or (Path(pkg) if pkg == "xacro" else None))
+            return Unknown(f"command: {substitute(el.get(source) or '', subst)}", elem.file, elem.line)
         text = self._attr(scope, el, source) or ""
         if source == "value":
             return convert(text.strip(), kind, self._rosparam_yaml)

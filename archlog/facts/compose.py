@@ -48,7 +48,7 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
     for node in config.nodes:
         kind = node.kind
         summary = summaries.get(kind)
-        extra = configured_ports(node, diagnostics)
+        extra = configured_ports(node, config, workspace, diagnostics)
         if extra:
             summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
                 NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")

@@ -1,0 +1,75 @@
+"""Gazebo plugins in the robot description become the ports of the spawn_model instance."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+from archlog.analysis import analyse
+from archlog.rules.engine import Engine
+from archlog.rules.ruleset import load_rules
+from conftest import ROOT
+
+CASES = ROOT / "corpus" / "robot_description"
+CAMERA_URDF = """<robot name="cam">
+  <link name="base_link"/>
+  <gazebo reference="base_link">
+    <sensor type="camera" name="front">
+      <plugin name="front_camera" filename="libgazebo_ros_camera.so">
+        <robotNamespace>rover</robotNamespace>
+        <cameraName>front</cameraName>
+      </plugin>
+    </sensor>
+    <plugin name="laser" filename="libgazebo_ros_laser.so"/>
+  </gazebo>
+</robot>
+"""
+
+
+def ports(analysis, relation: str) -> list[tuple[str, str, str]]:
+    return sorted((n, t if isinstance(t, str) else "?", ty) for _p, n, t, ty in analysis.store.rows(relation))
+
+
+def test_an_imu_topic_set_in_xacro_is_checked_against_its_subscriber() -> None:
+    buggy = analyse([CASES / "buggy"], ["bot/sim.launch"], {}, [])
+    assert buggy.diagnostics.items == []
+    assert [p for p in ports(buggy, "publisher") if p[0] == "/spawn_bot"] == [
+        ("/spawn_bot", "/imu_raw", "sensor_msgs/Imu"), ("/spawn_bot", "/odom", "nav_msgs/Odometry")]
+    assert ("/spawn_bot", "/cmd_vel", "geometry_msgs/Twist") in ports(buggy, "subscriber")
+    found = Engine(load_rules([])).run(buggy.store)[1]
+    assert [(f.rule.id, f.values["topic"], str(f.location.file), f.location.line) for f in found] == [
+        ("AL103", "/imu_raw", "bot/urdf/sensors.xacro", 6)]
+    clean = analyse([CASES / "clean"], ["bot/sim.launch"], {}, [])  # imu_topic:=imu/data on the xacro command
+    assert ("/spawn_bot", "/imu/data", "sensor_msgs/Imu") in ports(clean, "publisher")
+    assert Engine(load_rules([])).run(clean.store)[1] == []
+
+
+def test_urdf_textfile_plugins_namespaces_and_unknown_topics(tmp_path: Path) -> None:
+    pkg = tmp_path / "cam"
+    shutil.copytree(CASES / "clean" / "bot", pkg)
+    (pkg / "package.xml").write_text((pkg / "package.xml").read_text().replace("<name>bot</name>", "<name>cam</name>"))
+    (pkg / "urdf" / "cam.urdf").write_text(CAMERA_URDF)
+    (pkg / "launch" / "cam.launch").write_text(
+        "<launch><param name='robot_description' textfile='$(find cam)/urdf/cam.urdf'/>"
+        "<node pkg='gazebo_ros' type='spawn_model' name='spawn' args='-urdf -param robot_description -model cam'/>"
+        "<group ns='two'><param name='robot_description' textfile='$(find cam)/urdf/cam.urdf'/>"
+        "<node pkg='gazebo_ros' type='spawn_model' name='spawn' "
+        "args='-urdf -param robot_description -model cam2 -robot_namespace r2'/></group>"
+        "<node pkg='gazebo_ros' type='spawn_model' name='orphan' args='-urdf -param missing_description'/></launch>")
+    result = analyse([tmp_path], ["cam/cam.launch"], {}, [])
+    assert [p for p in ports(result, "publisher") if "spawn" in p[0]] == [
+        ("/spawn", "/rover/front/camera_info", "sensor_msgs/CameraInfo"),
+        ("/spawn", "/rover/front/image_raw", "sensor_msgs/Image"), ("/spawn", "?", "sensor_msgs/LaserScan"),
+        ("/two/spawn", "/r2/front/camera_info", "sensor_msgs/CameraInfo"),
+        ("/two/spawn", "/r2/front/image_raw", "sensor_msgs/Image"), ("/two/spawn", "?", "sensor_msgs/LaserScan")]
+    assert [(d.line, d.code) for d in result.diagnostics.items] == [(1, "robot-description")]
+    assert "/missing_description" in result.diagnostics.items[0].message
+
+
+def test_broken_xacro_is_a_diagnostic_at_the_parameter(tmp_path: Path) -> None:
+    shutil.copytree(CASES / "buggy" / "bot", tmp_path / "bot")
+    (tmp_path / "bot" / "urdf" / "sensors.xacro").write_text("<robot><broken\n")
+    result = analyse([tmp_path], ["bot/sim.launch"], {}, [])
+    assert [(d.file, d.line, d.code) for d in result.diagnostics.items] == [
+        ("bot/launch/sim.launch", 2, "robot-description")]
+    assert "xacro cannot expand" in result.diagnostics.items[0].message
