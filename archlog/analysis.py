@@ -12,6 +12,7 @@ from pathlib import Path
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.controllers import controller_nodes
 from archlog.extract.cpp import CppEnvironment, extract_cpp
 from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode
 from archlog.extract.messages import message_files
@@ -66,6 +67,7 @@ def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models
     if config is None:
         config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
                                workspace, diagnostics)
+    config.nodes.extend(controller_nodes(config, diagnostics))
     for summary, instance, elem in externals:
         summaries[(summary.package, summary.executable)] = summary
         config.nodes.append(LaunchNode(elem, summary.package, summary.executable, names.join("/", instance),

@@ -143,3 +143,26 @@ def test_model_marked_incomplete_makes_its_node_opaque(tmp_path: Path) -> None:
     result = analyse([tmp_path], [str(launch)], {}, [])
     assert [n for n, _reason in result.store.rows("node_incomplete")] == ["/relay"]
 
+
+
+def test_spawned_controllers_are_instances_of_their_type_models(tmp_path: Path) -> None:
+    launch = workspace(tmp_path, """<launch>
+  <group ns="base">
+    <rosparam>
+      joint_state_controller: {type: joint_state_controller/JointStateController, publish_rate: 50}
+      mobile_base_controller: {type: diff_drive_controller/DiffDriveController, left_wheel: l, right_wheel: r}
+    </rosparam>
+    <node pkg="controller_manager" type="spawner" name="spawner"
+          args="--shutdown-timeout 3 joint_state_controller mobile_base_controller missing_controller"/>
+  </group>
+</launch>""")
+    result = analyse([tmp_path], [str(launch)], {}, [])
+    assert sorted(n for n, *_ in result.store.rows("node")) == [
+        "/base/joint_state_controller", "/base/mobile_base_controller", "/base/spawner"]
+    pubs = sorted((n, t) for _p, n, t, _ty in result.store.rows("publisher") if "parameter_" not in t)
+    assert pubs == [("/base/joint_state_controller", "/base/joint_states"),
+                    ("/base/mobile_base_controller", "/base/mobile_base_controller/odom"),
+                    ("/base/mobile_base_controller", "/tf")]
+    assert [t for _p, _n, t, _ty in result.store.rows("subscriber")] == ["/base/mobile_base_controller/cmd_vel"]
+    assert [(d.code, "/base/missing_controller/type" in d.message) for d in result.diagnostics.items] == [
+        ("controller-type", True)]
