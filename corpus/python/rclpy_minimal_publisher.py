@@ -27,7 +27,7 @@ def main(args=None):
     try:
         rclpy.spin(node)
     except KeyboardInterrupt:
-        pass
+        node.get_logger().info("interrupted, shutting down")
     finally:
         node.destroy_node()
         rclpy.try_shutdown()

@@ -21,13 +21,13 @@ class Monitor(Node):
         self.timer = self.create_timer(0.5, self.tick)
 
     def on_scan(self, msg):
-        pass
+        self.get_logger().debug("scan with %d ranges" % len(msg.ranges))
 
     def on_reset(self, request, response):
         return response
 
     def tick(self):
-        pass
+        self.get_logger().debug("tick")
 
 
 def main():

@@ -10,7 +10,7 @@ from sensor_msgs.msg import CameraInfo, Image
 
 
 def on_pair(image, info):
-    pass
+    rospy.logdebug("image %dx%d with its camera info", image.width, image.height)
 
 
 def main():

@@ -22,10 +22,10 @@ class Planner(object):
         self.srv = rospy.Service("~make_plan", GetPlan, self.plan)
 
     def on_scan(self, msg):
-        pass
+        rospy.logdebug("scan with %d ranges", len(msg.ranges))
 
     def on_goal(self, msg):
-        pass
+        rospy.logdebug("goal in frame %s", msg.header.frame_id)
 
     def plan(self, req):
         return None

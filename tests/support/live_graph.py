@@ -6,6 +6,7 @@ is run as a subprocess; the master is read over XML-RPC with the stdlib.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import shutil
@@ -132,14 +133,10 @@ def _stop(proc: subprocess.Popen | None, grace: float) -> None:
             os.killpg(proc.pid, sig)
         except ProcessLookupError:
             break
-        try:
+        with contextlib.suppress(subprocess.TimeoutExpired):
             proc.wait(wait)
-        except subprocess.TimeoutExpired:
-            pass
-    try:  # the leader may be gone while group members linger
+    with contextlib.suppress(ProcessLookupError):  # the leader may be gone while group members linger
         os.killpg(proc.pid, signal.SIGKILL)
-    except ProcessLookupError:
-        pass
 
 
 def _kill_leftovers(tmp: Path) -> None:
@@ -151,10 +148,8 @@ def _kill_leftovers(tmp: Path) -> None:
     marker = f"ROS_HOME={tmp}".encode()
     pids = [pid for pid in _pids_with_env(marker) if pid != os.getpid()]
     for pid in pids:
-        try:
+        with contextlib.suppress(ProcessLookupError):
             os.kill(pid, signal.SIGKILL)
-        except ProcessLookupError:
-            pass
     end = time.monotonic() + 2.0
     while pids and time.monotonic() < end:
         pids = [p for p in pids if _alive(p)]
@@ -206,11 +201,9 @@ def _wait_for_master(uri: str, core: subprocess.Popen, log: Path,
                      deadline: float) -> xmlrpc.client.ServerProxy:
     master = _master(uri)
     while True:
-        try:
+        with contextlib.suppress(OSError, xmlrpc.client.Error):
             _call(master.getSystemState)
             return master
-        except (OSError, xmlrpc.client.Error):
-            pass
         if core.poll() is not None:
             raise RuntimeError(f"roscore exited with code {core.returncode}:\n{_tail(log)}")
         if time.monotonic() > deadline:

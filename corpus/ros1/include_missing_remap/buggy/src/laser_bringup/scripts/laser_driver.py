@@ -31,4 +31,4 @@ if __name__ == '__main__':
     try:
         main()
     except rospy.ROSInterruptException:
-        pass
+        rospy.loginfo("interrupted, shutting down")
