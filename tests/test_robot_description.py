@@ -73,3 +73,18 @@ def test_broken_xacro_is_a_diagnostic_at_the_parameter(tmp_path: Path) -> None:
     assert [(d.file, d.line, d.code) for d in result.diagnostics.items] == [
         ("bot/launch/sim.launch", 2, "robot-description")]
     assert "xacro cannot expand" in result.diagnostics.items[0].message
+
+
+def test_unreadable_descriptions_and_arguments_are_diagnostics(tmp_path: Path) -> None:
+    shutil.copytree(CASES / "clean" / "bot", tmp_path / "bot")
+    (tmp_path / "bot" / "urdf" / "other.urdf").write_text(
+        "<robot name='x'><gazebo><plugin name='p' filename='libgazebo_ros_bumper.so'/></gazebo></robot>\n")
+    (tmp_path / "bot" / "launch" / "bad.launch").write_text(
+        "<launch><param name='robot_description' command='xacro &quot;bot.xacro'/>\n"
+        "<node pkg='gazebo_ros' type='spawn_model' name='a' args='-urdf -param robot_description'/>\n"
+        "<param name='other' textfile='$(find bot)/urdf/other.urdf'/>\n"
+        "<node pkg='gazebo_ros' type='spawn_model' name='b' args='-urdf -param other'/>\n"
+        "<node pkg='controller_manager' type='spawner' name='c' args='base &quot;arm'/></launch>\n")
+    result = analyse([tmp_path], ["bot/bad.launch"], {}, [])
+    assert sorted((d.line, d.severity, d.code) for d in result.diagnostics.items) == [
+        (1, "note", "robot-description"), (3, "note", "robot-description"), (5, "error", "launch-invalid")]

@@ -21,10 +21,7 @@ def controller_nodes(config: LaunchConfig, diagnostics: DiagnosticSink) -> list[
     """One instance per controller each spawner starts (`--namespace NS` moves them)."""
     found = []
     for spawner in (n for n in config.nodes if (n.pkg, n.type) == ("controller_manager", "spawner")):
-        try:
-            words = shlex.split(spawner.args)
-        except ValueError:
-            continue
+        words = shlex.split(spawner.args)  # the launch interpreter has rejected args that do not split
         namespace, controllers, option = spawner.namespace, [], None
         for word in words:
             if option == "--namespace":

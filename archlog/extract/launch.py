@@ -560,7 +560,10 @@ class LaunchInterpreter:
     def _add_node(self, path: Path, el: etree._Element, node: LaunchNode) -> None:
         """Apply what a node does with its own command line: __name, __ns, remaps, _params;
         nodelet load/standalone become instances of the plugin type."""
-        words = shlex.split(node.args) if node.args else []
+        try:
+            words = shlex.split(node.args) if node.args else []
+        except ValueError as exc:  # roslaunch fails the same way
+            raise LaunchError(f"args cannot be split into words ({exc}): [{node.args}]") from None
         for word in words:
             if ":=" not in word:
                 continue

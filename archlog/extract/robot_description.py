@@ -80,13 +80,16 @@ def _expand(value: object, elem: Element, workspace: Workspace,
     if isinstance(value, str):
         return value, []
     expr = value.expr if isinstance(value, Unknown) else ""
-    words = shlex.split(expr[len("command: "):]) if expr.startswith("command: ") else []
+    try:
+        words = shlex.split(expr[len("command: "):]) if expr.startswith("command: ") else []
+    except ValueError:  # unbalanced quotes: reported below as a description not known statically
+        words = []
     program = next((i for i, w in enumerate(words) if Path(w).name in ("xacro", "xacro.py")), None)
     source = next((w for w in words[(program or 0) + 1:] if ":=" not in w and not w.startswith("-")), None)
     if program is None or source is None:
         diagnostics.add(elem.file, elem.line, "robot-description",
                         f"robot description not known statically ({expr or value}); its gazebo plugins are not read",
-                        "info")
+                        "note")
         return None
     mappings = dict(w.split(":=", 1) for w in words[program + 1:] if ":=" in w and not w.startswith("_"))
     return _xacro(Path(source), mappings, workspace, elem, diagnostics)
@@ -121,7 +124,7 @@ def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: 
     if library not in PLUGINS:
         if library.startswith("libgazebo_ros"):
             diagnostics.add(file, line, "robot-description", f"gazebo plugin {library} is not modelled; "
-                                                               "its topics are unknown", "info")
+                                                               "its topics are unknown", "note")
         return []
     ns = robot_ns if robot_ns is not None else _text(plugin, "robotNamespace") or ""
     if library == "libgazebo_ros_camera.so":
