@@ -10,6 +10,7 @@ from pathlib import Path
 import yaml
 
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.command_line import split_options
 from archlog.extract.launch import LaunchConfig, LaunchNode
 from archlog.extract.models import _LineLoader
 from archlog.extract.robot_description import spawned_ports
@@ -45,8 +46,8 @@ def configured_ports(node: LaunchNode, config: LaunchConfig, workspace: Workspac
     if (node.pkg, node.type) == ("rosbag", "record"):
         return _recorded(node, words)
     if (node.pkg, node.type) == ("rviz", "rviz"):
-        config = next((words[i + 1] for i, w in enumerate(words[:-1]) if w in ("-d", "--display-config")), None)
-        return _rviz(node, Path(config), diagnostics) if config else []
+        display = next((words[i + 1] for i, w in enumerate(words[:-1]) if w in ("-d", "--display-config")), None)
+        return _rviz(node, Path(display), diagnostics) if display else []
     return []
 
 
@@ -54,14 +55,7 @@ def _recorded(node: LaunchNode, words: list[str]) -> list[Port]:
     """The topics `rosbag record` is given (none are known with -a or with -e regexes)."""
     if {"-a", "--all", "-e", "--regex"} & set(words):
         return []
-    topics, skip = [], False
-    for word in words:
-        if skip:
-            skip = False
-        elif word in _RECORD_VALUED:
-            skip = True
-        elif not word.startswith("-") and ":=" not in word:
-            topics.append(word)
+    topics, _options = split_options(words, _RECORD_VALUED)
     return [Port("subscriber", topic, Unknown(f"rosbag records {topic} whatever its type", node.elem.file,
                                               node.elem.line), node.elem.file, node.elem.line) for topic in topics]
 

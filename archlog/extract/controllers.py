@@ -12,6 +12,7 @@ import shlex
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.command_line import split_options
 from archlog.extract.launch import LaunchConfig, LaunchNode
 
 VALUED = {"--namespace", "--wait-for", "--timeout", "--shutdown-timeout"}
@@ -22,14 +23,9 @@ def controller_nodes(config: LaunchConfig, diagnostics: DiagnosticSink) -> list[
     found = []
     for spawner in (n for n in config.nodes if (n.pkg, n.type) == ("controller_manager", "spawner")):
         words = shlex.split(spawner.args)  # the launch interpreter has rejected args that do not split
-        namespace, controllers, option = spawner.namespace, [], None
-        for word in words:
-            if option == "--namespace":
-                namespace = names.resolve(word, spawner.namespace, spawner.name)
-            if option or word.startswith("-") or ":=" in word:
-                option = word if word in VALUED and option is None else None
-                continue
-            controllers.append(word)
+        controllers, options = split_options(words, VALUED)
+        namespace = names.resolve(options["--namespace"], spawner.namespace, spawner.name) \
+            if "--namespace" in options else spawner.namespace
         for name in controllers:
             instance = names.resolve(name, namespace, spawner.name)
             value = config.params.get(names.canonical(instance + "/type"), (None,))[0]

@@ -15,6 +15,7 @@ from pathlib import Path
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.command_line import split_options
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import Port
 from archlog.extract.workspace import Workspace
@@ -52,7 +53,7 @@ PLUGINS: dict[str, tuple[PluginTopic, ...]] = {
 def spawned_ports(node: LaunchNode, words: list[str], config: LaunchConfig, workspace: Workspace,
                   diagnostics: DiagnosticSink) -> list[Port]:
     """The plugin ports of the description `spawn_model -urdf -param NAME` inserts."""
-    option = {w: words[i + 1] for i, w in enumerate(words[:-1]) if w.startswith("-")}
+    _positional, option = split_options(words, {"-param", "-robot_namespace"})
     if "-param" not in option:
         return []
     key = names.canonical(names.resolve(option["-param"], node.namespace, node.name))
