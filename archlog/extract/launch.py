@@ -62,10 +62,16 @@ class LaunchNode:
     manager: str | None = None
     declared: str = ""  # the name as declared (before __name/__ns in args); roslaunch checks these
     chain: tuple[Element, ...] = ()  # the <include> elements it was loaded through, outermost first
+    # ROS 2: parameters as (node-name pattern, dotted name, value, element); the pattern is "" for
+    # parameters given to this node directly, else a parameter file's node key ("/**", "/ns/talker")
+    parameters: list[tuple[str, str, object, Element]] = field(default_factory=list)
 
     @property
     def kind(self) -> tuple[str, str]:
-        """What runs: (package, executable), or (package, Type) of a nodelet plugin pkg/Type."""
+        """What runs: (package, executable), (package, Type) of a nodelet plugin pkg/Type, or
+        (package, ns::Class) of a ROS 2 component."""
+        if self.plugin and "::" in self.plugin:
+            return self.pkg, self.plugin
         if self.plugin and "/" in self.plugin:
             pkg, plugin = self.plugin.split("/", 1)
             return pkg, plugin
