@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 
 from archlog import names
@@ -15,6 +16,8 @@ from archlog.facts.similarity import near_pairs
 from archlog.facts.store import FactStore
 from archlog.values import Alternatives, Concat, ParamList, ParamRef, Unknown, Value, concat
 
+QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
+_MAX_INT = 2**31 - 1  # clingo's integers are 32-bit
 NAMED_PORTS = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 
 
@@ -98,6 +101,8 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         store.locate(pid, port.file, port.line, port.column)
         for policy, value in port.qos:
             store.add("qos", pid, policy, value)
+            if policy in QOS_DURATIONS and (micros := _microseconds(value)) is not None:
+                store.add("qos_duration", pid, policy, micros)
         if port.queue is not None:
             store.add("queue_size", pid, _single(_bind(port.queue, node, config)))
         if port.kind == "timer":
@@ -204,6 +209,15 @@ def _present(port: Port, node: LaunchNode, config: LaunchConfig) -> bool:
     if port.condition[1] is None:  # `set: true`
         return value != UNSET
     return isinstance(value, Unknown) or value.lower() == port.condition[1].lower()
+
+
+def _microseconds(seconds: str) -> int | None:
+    """A QoS duration in whole microseconds (clamped to clingo's range), or None when not a number."""
+    try:
+        value = float(seconds)
+    except ValueError:
+        return None
+    return min(round(value * 1_000_000), _MAX_INT) if math.isfinite(value) and value >= 0 else None
 
 
 def _options(value: str | Unknown | Alternatives) -> list[str | Unknown]:

@@ -91,7 +91,13 @@ RELATIONS: tuple[Relation, ...] = (
                  "'unset' (a rospy Publisher without queue_size publishes synchronously)")),
     _rel("ports", "qos", "A QoS policy of a ROS 2 publisher or subscriber.",
          _PORT, ("policy", "str", "history, depth, reliability, durability, deadline, lifespan, liveliness, "
-                 "liveliness_lease_duration, or profile"), ("value", "str", "the policy's value")),
+                 "liveliness_lease_duration, or profile"), ("value", "str", "the policy's value: keep_last, keep_all, "
+                 "reliable, best_effort, volatile, transient_local, automatic, manual_by_topic, system_default, a "
+                 "depth, a duration in seconds, or a preset name (`?(expr)` when unknown)")),
+    _rel("ports", "qos_duration", "A QoS duration policy of a ROS 2 publisher or subscriber as a number "
+         "(absent: infinite, the default).",
+         _PORT, ("policy", "str", "deadline, lifespan or liveliness_lease_duration"),
+         ("microseconds", "int", "the duration in microseconds, at most 2147483647 (about 36 minutes)")),
     _rel("ports", "alternative_names", "A port whose name is one of several at run time (a ternary, if/else); "
          "each alternative is its own row of the port's relation.", _PORT, ("count", "int", "how many alternatives")),
     _rel("ports", "port_source_name", "A port's name resolved in the node's namespace, before remapping.",
