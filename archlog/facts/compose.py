@@ -252,5 +252,6 @@ def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Work
         if summary.default_name is not None and not isinstance(summary.default_name, str):
             diagnostics.add(elem.file, elem.line, "node-name", f"node name of {pkg}/{exe} is not known statically; "
                             f"using the executable name {exe}", "note")
-        config.nodes.append(LaunchNode(elem, pkg, exe, names.join("/", name), "/"))
+        namespace = names.join("/", summary.namespace) if isinstance(summary.namespace, str) else "/"
+        config.nodes.append(LaunchNode(elem, pkg, exe, names.join(namespace, name), namespace))
     return config
