@@ -16,11 +16,12 @@ import clang.cindex as ci
 
 from archlog import names
 from archlog.diagnostics import Diagnostic
+from archlog.extract.cpp_ast import (K, SKIP, assignments, camera_info, default_constructed, is_rvalue, period,
+                                     qualified, ros_type, template_arg_type, type_from_spelling, unquote,
+                                     written_args)
 from archlog.extract.summary import Port
 from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
 
-K = ci.CursorKind
-_SKIP = (K.TYPE_REF, K.NAMESPACE_REF, K.TEMPLATE_REF)
 
 NODE_HANDLE = "ros::NodeHandle"
 IMAGE_TRANSPORT = "image_transport::ImageTransport"
@@ -61,9 +62,6 @@ FIXED_TYPES = {
     "set_parameters": "dynamic_reconfigure/Reconfigure", "parameter_descriptions": "dynamic_reconfigure/ConfigDescription",
     "parameter_updates": "dynamic_reconfigure/Config",
 }
-_MSG_TYPE = re.compile(r"\b(\w+)::(\w+?)(?:Request|Response)?_<")
-_PLAIN_TYPE = re.compile(r"\b(?!std\b|boost\b|ros\b|message_filters\b|actionlib\b)(\w+)::(\w+?)"
-                         r"(?:Request|Response)?(?:::(?:Const)?Ptr|ConstPtr)?\b")
 _FALLBACK = re.compile(r"(\w+)\s*(?:\.|->)\s*(advertise|subscribe|advertiseService|serviceClient)\s*"
                        r"(?:<\s*([\w:\s]+?)\s*>)?\s*\(\s*(\"(?:[^\"\\]|\\.)*\"|\w+)")
 
@@ -91,16 +89,6 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     if incomplete_ast:
         walker.token_fallback(tu)
     return walker.result
-
-
-def qualified(cursor: ci.Cursor | None) -> str:
-    """ns::Class of a declaration (template specialisations reduced to the template's name)."""
-    parts = []
-    while cursor is not None and cursor.kind != K.TRANSLATION_UNIT:
-        if cursor.spelling:
-            parts.append(cursor.spelling)
-        cursor = cursor.semantic_parent
-    return "::".join(reversed(parts))
 
 
 class _Walker:
@@ -171,7 +159,7 @@ class _Walker:
         """The namespace of a NodeHandle (or ImageTransport) built by this constructor call."""
         while ctor.kind == K.UNEXPOSED_EXPR and len(list(ctor.get_children())) == 1:
             ctor = next(ctor.get_children())
-        args = _written_args(ctor) if ctor.kind == K.CALL_EXPR else []
+        args = written_args(ctor) if ctor.kind == K.CALL_EXPR else []
         if not args:
             return ""
         first_is_handle = _is_handle_type(args[0].type)
@@ -219,7 +207,7 @@ class _Walker:
         params = [p.spelling for p in function.get_arguments()] if function is not None else []
         index = params.index(param.spelling) if param.spelling in params else -1
         sites = self.call_sites.get(self.key(function.canonical), []) if index >= 0 else []
-        found = {evaluate(args[index]) for site in sites if len(args := _written_args(site)) > index}
+        found = {evaluate(args[index]) for site in sites if len(args := written_args(site)) > index}
         if len(found) == 1:
             return next(iter(found))
         why = f"no call site passes this {what}" if not found else f"call sites pass different values for {what}"
@@ -231,7 +219,7 @@ class _Walker:
         if depth > 12:
             return self.unknown(expr)
         if kind == K.STRING_LITERAL:
-            return _unquote(expr.spelling)
+            return unquote(expr.spelling)
         if kind in (K.INTEGER_LITERAL, K.FLOATING_LITERAL, K.CXX_BOOL_LITERAL_EXPR):
             return "".join(t.spelling for t in expr.get_tokens())
         if kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR):
@@ -242,7 +230,7 @@ class _Walker:
             *_cond, then, other = [c for c in expr.get_children()]
             return alternatives([self.value(then, depth + 1), self.value(other, depth + 1)], False,
                                 self.unknown(expr, "one of several values"))
-        children = [c for c in expr.get_children() if c.kind not in _SKIP]
+        children = [c for c in expr.get_children() if c.kind not in SKIP]
         if kind in (K.UNEXPOSED_EXPR, K.PAREN_EXPR, K.CXX_FUNCTIONAL_CAST_EXPR, K.CSTYLE_CAST_EXPR,
                     K.CXX_STATIC_CAST_EXPR) and len(children) == 1:
             return self.value(children[0], depth + 1)
@@ -260,10 +248,10 @@ class _Walker:
         if self.key(decl) in self.loops:
             return self.loop_values(self.loops[self.key(decl)], expr, depth)
         if decl.kind in (K.VAR_DECL, K.FIELD_DECL):
-            init = [c for c in decl.get_children() if c.kind not in _SKIP and not _default_constructed(c)]
+            init = [c for c in decl.get_children() if c.kind not in SKIP and not default_constructed(c)]
             if init and decl.type.is_const_qualified():
                 return self.value(init[-1], depth + 1)
-            assigned = _assignments(decl)
+            assigned = assignments(decl)
             if assigned is not None and (init or assigned):
                 return alternatives([self.value(e, depth + 1) for e in init[-1:] + assigned], False,
                                     self.unknown(expr, "assigned values not all known"))
@@ -274,7 +262,7 @@ class _Walker:
         target = source
         while target.kind in (K.UNEXPOSED_EXPR, K.DECL_REF_EXPR) and target.kind != K.INIT_LIST_EXPR:
             if target.kind == K.DECL_REF_EXPR and target.referenced is not None:
-                init = [c for c in target.referenced.get_children() if c.kind not in _SKIP]
+                init = [c for c in target.referenced.get_children() if c.kind not in SKIP]
                 target = init[-1] if init else target
                 if not init:
                     break
@@ -283,13 +271,13 @@ class _Walker:
                 if len(children) != 1:
                     break
                 target = children[0]
-        items = [c for c in target.get_children() if c.kind not in _SKIP] if target.kind == K.INIT_LIST_EXPR else []
+        items = [c for c in target.get_children() if c.kind not in SKIP] if target.kind == K.INIT_LIST_EXPR else []
         return alternatives([self.value(i, depth + 1) for i in items], True,
                             self.unknown(expr, "loop over values not known statically"))
 
     def call_value(self, expr: ci.Cursor, depth: int) -> Value:
         name, owner = expr.spelling, qualified(expr.referenced.semantic_parent) if expr.referenced else ""
-        args = _written_args(expr)
+        args = written_args(expr)
         if name == "operator+" and len(args) == 2:
             return concat(self.value(args[0], depth + 1), self.value(args[1], depth + 1))
         if owner == "ros::names" and name == "append" and len(args) == 2:
@@ -300,17 +288,17 @@ class _Walker:
             return "~"
         if owner == "ros::this_node" and name == "getNamespace":
             return ""
-        if owner in (NODE_HANDLE, "ros::param") and name == "param" and len(args) == 2 and _is_rvalue(args[1]):
+        if owner in (NODE_HANDLE, "ros::param") and name == "param" and len(args) == 2 and is_rvalue(args[1]):
             handle = self.handle_of(next(expr.get_children())) if owner == NODE_HANDLE else ""
             return ParamRef(self.value(args[0], depth + 1), self.value(args[1], depth + 1), handle, self.file,
                             expr.location.line)
         if owner == NODE_HANDLE and name in ("resolveName", "getNamespace"):
             return self.handle_of(next(expr.get_children())) if name == "getNamespace" else self.value(args[0], depth + 1)
         if name in ("basic_string", "string", "c_str", "str") or (name == "" and len(args) == 1):
-            inner = args or [c for c in expr.get_children() if c.kind not in _SKIP]
+            inner = args or [c for c in expr.get_children() if c.kind not in SKIP]
             if len(inner) == 1:
                 return self.value(inner[0], depth + 1)
-        children = [c for c in expr.get_children() if c.kind not in _SKIP]
+        children = [c for c in expr.get_children() if c.kind not in SKIP]
         if len(children) == 1 and not args:
             return self.value(children[0], depth + 1)
         return self.unknown(expr)
@@ -320,13 +308,13 @@ class _Walker:
         ref = call.referenced
         if ref is None:
             return
-        name, args = call.spelling, _written_args(call)
+        name, args = call.spelling, written_args(call)
         owner = qualified(ref.semantic_parent)
         if ref.kind == K.CONSTRUCTOR and owner in CONSTRUCTED:
             self.constructed(call, owner, args)
         elif owner in ("ros::Rate", "ros::WallRate") and ref.kind == K.CONSTRUCTOR and args:
             hz = self.value(args[0])
-            self.add("timer", call, _period(hz) if isinstance(hz, str) else self.unknown(call, "rate not constant"),
+            self.add("timer", call, period(hz) if isinstance(hz, str) else self.unknown(call, "rate not constant"),
                      "", "")
         elif owner == "ros" and name == "init" and len(args) >= 3:
             self.result.default_name = self.value(args[2])
@@ -342,14 +330,14 @@ class _Walker:
         elif owner == NODE_HANDLE and name in TIMERS and args:
             self.add("timer", call, self.duration(args[0]), "", self.handle_of(next(call.get_children())))
         elif owner == "ros::service" and name in ("call", "waitForService", "exists") and args:
-            type_ = (_ros_type(args[1].type) if len(args) > 1 and name == "call" else None) or \
+            type_ = (ros_type(args[1].type) if len(args) > 1 and name == "call" else None) or \
                 self.unknown(call, "service type not given")
             self.add("service_client", call, self.value(args[0]), type_, "")
 
     def method(self, call: ci.Cursor, ref: ci.Cursor, owner: str, name: str, args: list[ci.Cursor]) -> None:
         kind = METHODS[(owner, name)]
         if owner == "message_filters::Subscriber":
-            type_ = _ros_type(call.referenced.semantic_parent.type) or _template_arg_type(call) or \
+            type_ = ros_type(call.referenced.semantic_parent.type) or template_arg_type(call) or \
                 self.unknown(call, "message type not resolved")
             self.add(kind, call, self.value(args[1]) if len(args) > 1 else self.unknown(call), type_,
                      self.handle_of(args[0]))
@@ -359,7 +347,7 @@ class _Walker:
         if owner == IMAGE_TRANSPORT:
             self.add(kind, call, topic, "sensor_msgs/Image", handle)
             if name.endswith("Camera"):
-                self.add(kind, call, _camera_info(topic), "sensor_msgs/CameraInfo", handle)
+                self.add(kind, call, camera_info(topic), "sensor_msgs/CameraInfo", handle)
             return
         queue = self.value(args[1]) if len(args) > 1 and name in ("advertise", "subscribe") else None
         self.add(kind, call, topic, self.port_type(call, args, name), handle,
@@ -369,7 +357,7 @@ class _Walker:
         """Library objects whose construction creates ports (tf, actionlib, message_filters...)."""
         has_handle = bool(args) and _is_handle_type(args[0].type)
         handle = self.handle_of(args[0]) if has_handle else ("~" if owner == "dynamic_reconfigure::Server" else "")
-        type_ = _ros_type(call.type) or self.unknown(call, "type not resolved")
+        type_ = ros_type(call.type) or self.unknown(call, "type not resolved")
         for kind, fixed, index in CONSTRUCTED[owner]:
             if fixed is not None:
                 self.add(kind, call, fixed, FIXED_TYPES[fixed], handle)
@@ -385,7 +373,7 @@ class _Walker:
             value = self.value(args[1]) if len(args) > 1 and method in ("setParam", "set") else "delete"
             self.add("param_write", call, pname, "", handle, value)
             return
-        has_default = len(args) > 2 or (method == "param" and len(args) == 2 and _is_rvalue(args[1]))
+        has_default = len(args) > 2 or (method == "param" and len(args) == 2 and is_rvalue(args[1]))
         default = self.value(args[-1]) if has_default else None
         self.add("param_read", call, pname, "", handle, default)
         if len(args) > 1 and isinstance(pname, str) and not (has_default and len(args) == 2):
@@ -399,16 +387,16 @@ class _Walker:
         """Seconds of a ros::Duration(x) / ros::Rate(hz) argument."""
         for cursor in expr.walk_preorder():
             if cursor.kind == K.CALL_EXPR and cursor.spelling in ("Duration", "WallDuration", "Rate", "WallRate"):
-                args = _written_args(cursor)
+                args = written_args(cursor)
                 if args:
                     value = self.value(args[0])
                     if "Rate" not in cursor.spelling:
                         return value
-                    return _period(value) if isinstance(value, str) else self.unknown(cursor, "rate not constant")
+                    return period(value) if isinstance(value, str) else self.unknown(cursor, "rate not constant")
         return self.unknown(expr, "timer period not resolved")
 
     def port_type(self, call: ci.Cursor, args: list[ci.Cursor], name: str) -> Value:
-        template_arg = _template_arg_type(call)
+        template_arg = template_arg_type(call)
         if template_arg and name != "subscribe":
             return template_arg
         if name in ("subscribe", "advertiseService"):
@@ -417,13 +405,13 @@ class _Walker:
                     target = cursor.referenced if cursor.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) else None
                     if target is not None and target.kind in (K.FUNCTION_DECL, K.CXX_METHOD):
                         params = list(target.get_arguments())
-                        if params and (found := _ros_type(params[0].type)):
+                        if params and (found := ros_type(params[0].type)):
                             return found
                     if cursor.kind == K.LAMBDA_EXPR:
                         params = [c for c in cursor.get_children() if c.kind == K.PARM_DECL]
-                        if params and (found := _ros_type(params[0].type)):
+                        if params and (found := ros_type(params[0].type)):
                             return found
-                    if "function<" in cursor.type.spelling and (found := _type_from_spelling(
+                    if "function<" in cursor.type.spelling and (found := type_from_spelling(
                             cursor.type.spelling.split("function<", 1)[1])):
                         return found
         return template_arg or self.unknown(call, "message type not resolved")
@@ -449,7 +437,7 @@ class _Walker:
         """Read NodeHandle calls from the text of lines where the AST produced no port."""
         covered = {p.line for p in self.result.ports}
         text = Path(self.source).read_text(errors="replace")
-        handles = {m.group(1): _unquote(m.group(2)) if m.group(2) else ""
+        handles = {m.group(1): unquote(m.group(2)) if m.group(2) else ""
                    for m in re.finditer(r"NodeHandle\s+(\w+)\s*(?:\(\s*(\"[^\"]*\")\s*\))?", text)}
         objects = {m.group(1) for m in _FALLBACK.finditer(text)}
         handles.update({m.group(1): m.group(2) for m in re.finditer(r"[:,]\s*(\w+)\s*\(\s*\"(~?[\w/]*)\"\s*\)", text)
@@ -462,10 +450,10 @@ class _Walker:
                 continue
             obj, method, template, first = match.groups()
             kind = METHODS.get((NODE_HANDLE, method))
-            name: Value = _unquote(first) if first.startswith('"') else \
+            name: Value = unquote(first) if first.startswith('"') else \
                 Unknown(f"{first} (read from tokens)", self.file, line)
             handle: Value = handles[obj] if obj in handles else Unknown(f"{obj} (read from tokens)", self.file, line)
-            type_: Value = (_type_from_spelling(template) if template else _callback_type(text, match.end())) or \
+            type_: Value = (type_from_spelling(template) if template else _callback_type(text, match.end())) or \
                 Unknown(f"{obj}.{method} (type not readable without the AST)", self.file, line)
             self.result.ports.append(Port(kind, name, type_, self.file, line, 0, handle))
             self.result.fallback_lines.append(line)
@@ -479,96 +467,10 @@ def _callback_type(text: str, start: int) -> str | None:
     if callback is None:
         return None
     signature = re.search(rf"\b{callback.group(1)}\s*\(\s*(?:const\s+)?([\w:]+)", text)
-    return _type_from_spelling(signature.group(1)) if signature else None
+    return type_from_spelling(signature.group(1)) if signature else None
 
 
 def _is_handle_type(type_: ci.Type) -> bool:
     spelling = type_.spelling
     return "NodeHandle" in spelling or "ImageTransport" in spelling
 
-
-def _template_arg_type(call: ci.Cursor) -> str | None:
-    callee = next(call.get_children(), None)
-    if callee is None:
-        return None
-    return next((t for c in callee.get_children() if c.kind == K.TYPE_REF and (t := _ros_type(c.type))), None)
-
-
-def _ros_type(type_: ci.Type) -> str | None:
-    """'sensor_msgs/LaserScan' from a C++ type such as const sensor_msgs::LaserScan::ConstPtr&."""
-    canonical = type_.get_canonical().spelling
-    match = _MSG_TYPE.search(canonical)
-    if match:
-        return _action_base(f"{match.group(1)}/{match.group(2)}")
-    return _type_from_spelling(canonical) or _type_from_spelling(type_.spelling)
-
-
-def _type_from_spelling(spelling: str) -> str | None:
-    match = _MSG_TYPE.search(spelling)
-    if match:
-        return _action_base(f"{match.group(1)}/{match.group(2)}")
-    inner = spelling.replace("const ", "")
-    if "<" in inner:
-        inner = inner[inner.index("<") + 1:]
-    match = _PLAIN_TYPE.search(inner)
-    return _action_base(f"{match.group(1)}/{match.group(2)}") if match else None
-
-
-def _action_base(type_name: str) -> str:
-    """An action's messages are named after it: pkg/FooAction -> pkg/Foo."""
-    return type_name[: -len("Action")] if type_name.endswith("Action") else type_name
-
-
-def _camera_info(topic: Value) -> Value:
-    """image_transport's camera_info topic: a sibling of the image topic."""
-    if isinstance(topic, str):
-        parent = topic.rsplit("/", 1)[0] if "/" in topic.strip("/") else ("/" if topic.startswith("/") else "")
-        return f"{parent}/camera_info" if parent not in ("", "/") else f"{parent}camera_info"
-    return concat(topic, "/../camera_info")
-
-
-def _period(hz: str) -> str:
-    try:
-        return repr(1 / float(hz))
-    except (ValueError, ZeroDivisionError):
-        return f"1/{hz}"
-
-
-def _is_rvalue(expr: ci.Cursor) -> bool:
-    """A literal or temporary, not a variable the parameter could be stored into."""
-    return not any(c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) for c in expr.walk_preorder())
-
-
-def _written_args(call: ci.Cursor) -> list[ci.Cursor]:
-    """The call's arguments as written (default arguments have no location)."""
-    return [a for a in call.get_arguments() if a.location.file is not None]
-
-
-def _unquote(literal: str) -> str:
-    body = literal[literal.index('"') + 1: literal.rindex('"')] if '"' in literal else literal
-    return body.encode("utf-8").decode("unicode_escape", errors="replace") if "\\" in body else body
-
-
-def _default_constructed(init: ci.Cursor) -> bool:
-    """`std::string s;` has a constructor call with no arguments as its 'initialiser'."""
-    return init.kind == K.CALL_EXPR and not _written_args(init)
-
-
-def _assignments(decl: ci.Cursor) -> list[ci.Cursor] | None:
-    """The right-hand sides assigned to a variable in its scope (if/else branches give several),
-    or None when it is also changed otherwise (`+=`, passed by reference)."""
-    scope = decl.semantic_parent
-    if scope is None:
-        return None
-    found: list[ci.Cursor] = []
-    for cursor in scope.walk_preorder():
-        if cursor.kind in (K.BINARY_OPERATOR, K.CALL_EXPR, K.COMPOUND_ASSIGNMENT_OPERATOR) and \
-                cursor.spelling in ("operator=", "operator+=", "=", "+="):
-            operands = [c for c in cursor.get_children() if not (c.kind == K.UNEXPOSED_EXPR and
-                                                                  c.spelling.startswith("operator"))]
-            refs = [c for c in cursor.walk_preorder() if c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)]
-            if refs and refs[0].referenced == decl:
-                if "+=" in cursor.spelling or len(operands) < 2:
-                    return None
-                found.append(operands[-1])
-    return found
