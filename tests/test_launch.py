@@ -142,18 +142,18 @@ def test_substitution_nesting_and_optenv() -> None:
     assert substitute("$(anon a)", ctx) == substitute("$(anon a)", ctx) != substitute("$(anon b)", ctx)
 
 
-@pytest.mark.parametrize("body, ros2_line", [
-    ('<node pkg="demo" type="talker" name="t"/>', None),
-    ('<arg name="ns" default="x"/>\n<node pkg="demo" exec="talker" name="t"/>', 3),
-    ('<let name="a" value="1"/>', 2),
-    ('<node pkg="demo" type="talker" name="$(var who)"/>', 2),
-    ('<group><push-ros-namespace namespace="r"/></group>', 2),
+@pytest.mark.parametrize("body, nodes, diagnostics", [
+    ('<node pkg="demo" type="talker" name="t"/>', ["/t"], []),
+    ('<arg name="ns" default="x"/>\n<node pkg="demo" exec="talker" name="t" namespace="$(var ns)"/>', ["/x/t"], []),
+    ('<let name="a" value="1"/>', [], []),
+    ('<node pkg="demo" type="talker" name="$(var who)"/>', [], [(2, "launch-attr"), (2, "launch-invalid")]),
+    ('<group><push-ros-namespace namespace="r"/></group>', [], []),
 ])
-def test_dialect_is_decided_by_content_not_file_name(tmp_path: Path, body: str, ros2_line: int | None) -> None:
+def test_dialect_is_decided_by_content_not_file_name(tmp_path: Path, body: str, nodes: list[str],
+                                                     diagnostics: list[tuple[int, str]]) -> None:
+    """A <launch> file with ROS 2's tags, `exec` or substitutions is read as ROS 2 (see test_launch_ros2.py)."""
     (tmp_path / "main.launch.xml").write_text(f"<launch>\n{body}\n</launch>\n")
     sink = DiagnosticSink()
     config = LaunchInterpreter(Workspace([tmp_path], sink), sink).load([tmp_path / "main.launch.xml"], {})
-    if ros2_line is None:
-        assert [n.name for n in config.nodes] == ["/t"] and sink.items == []
-    else:
-        assert config.nodes == [] and [(d.line, d.code) for d in sink.items] == [(ros2_line, "launch-ros2")]
+    assert [n.name for n in config.nodes] == nodes
+    assert [(d.line, d.code) for d in sink.items] == diagnostics

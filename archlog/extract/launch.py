@@ -14,6 +14,7 @@ import re
 import shlex
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import yaml
 from lxml import etree
@@ -24,6 +25,9 @@ from archlog.extract.substitution import (SubstContext, SubstitutionError, Unkno
                                           auto_value, substitute)
 from archlog.extract.workspace import Workspace
 from archlog.values import Unknown
+
+if TYPE_CHECKING:
+    from archlog.extract.launch2 import Ros2Launch
 
 MAX_INCLUDE_DEPTH = 32
 NODE_ATTRS = {"pkg", "type", "machine", "name", "args", "output", "respawn", "respawn_delay", "cwd", "ns",
@@ -138,6 +142,7 @@ class LaunchInterpreter:
         self._machine_uses: list[tuple[str, Path, etree._Element]] = []
         self._declared: list[tuple[str, Path, etree._Element, LaunchNode]] = []
         self._rosparam_yaml = False  # roslaunch imports rosparam (and its YAML angles) at the first load
+        self._ros2: Ros2Launch | None = None
 
     def load(self, files: list[Path], args: dict[str, str]) -> LaunchConfig:
         for path in files:
@@ -163,8 +168,12 @@ class LaunchInterpreter:
 
     # -- helpers --------------------------------------------------------------------------
     def _element(self, file: Path, el: etree._Element) -> Element:
+        return self.element_at(file, el.sourceline or 1)
+
+    def element_at(self, file: Path, line: int) -> Element:
+        """A new element at file:line (ids are shared by both launch dialects)."""
         self._count += 1
-        return Element(f"e{self._count:05d}", self.workspace.display(file), el.sourceline or 1)
+        return Element(f"e{self._count:05d}", self.workspace.display(file), line)
 
     def _diag(self, file: Path, el: etree._Element | None, code: str, message: str, severity: str = "error") -> None:
         line = el.sourceline if el is not None and el.sourceline else 1
@@ -200,9 +209,7 @@ class LaunchInterpreter:
         """Load a file into the scope; False when it could not be read at all."""
         shown = self.workspace.display(path)
         if path.suffix in (".py", ".yaml", ".yml"):
-            self.diagnostics.add(shown, 1, "launch-ros2", "a ROS 2 launch file (Python or YAML): not interpreted "
-                                 "as ROS 1; its nodes are not part of this configuration", "warning")
-            return False
+            return self._ros2_file(path, scope)
         try:
             root = etree.parse(str(path), etree.XMLParser(remove_comments=True)).getroot()
         except etree.XMLSyntaxError as exc:
@@ -214,13 +221,19 @@ class LaunchInterpreter:
         if root.tag != "launch":
             self._diag(path, root, "launch-xml", f"root element is <{root.tag}>, not <launch>")
             return False
-        marker = ros2_marker(root)
-        if marker is not None:
-            self._diag(path, marker, "launch-ros2", f"a ROS 2 XML launch file (this <{marker.tag}> is ROS 2's "
-                       "dialect): not interpreted as ROS 1; its nodes are not part of this configuration", "warning")
-            return False
+        if ros2_marker(root) is not None:
+            return self._ros2_file(path, scope)
         self._children(path, root, scope)
         return True
+
+    def _ros2_file(self, path: Path, scope: _Scope) -> bool:
+        """A ROS 2 launch file (Python, XML or YAML), launched with this scope's args."""
+        if self._ros2 is None:
+            from archlog.extract import launch2_frontend, launch2_python  # they build on this module
+            from archlog.extract.launch2 import PYTHON, XML, YAML, Ros2Launch
+            self._ros2 = Ros2Launch(self, {PYTHON: launch2_python.describe, XML: launch2_frontend.describe_xml,
+                                           YAML: launch2_frontend.describe_yaml})
+        return self._ros2.load(path, scope.subst.args, scope.subst.env, scope.chain)
 
     def _children(self, path: Path, parent: etree._Element, scope: _Scope) -> None:
         for el in parent:

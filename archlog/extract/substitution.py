@@ -184,12 +184,12 @@ _CMPOPS = {
     ast.Gt: operator.gt, ast.GtE: operator.ge, ast.In: lambda a, b: a in b, ast.NotIn: lambda a, b: a not in b,
     ast.Is: operator.is_, ast.IsNot: operator.is_not,
 }
-_STR_METHODS = {"lower", "upper", "strip", "lstrip", "rstrip", "startswith", "endswith", "replace", "split",
+STR_METHODS = {"lower", "upper", "strip", "lstrip", "rstrip", "startswith", "endswith", "replace", "split",
                 "join", "find", "count", "capitalize", "title", "isdigit", "format"}
-_MATH = {k: v for k, v in vars(math).items() if not k.startswith("_")}
-_BUILTINS = {f.__name__: f for f in (int, float, str, bool, list, dict, tuple, len, abs, min, max, round, sorted,
-                                     sum, map, filter, zip, any, all, reversed, enumerate, chr, ord, hex, oct, bin,
-                                     divmod, repr, isinstance)}
+MATH = {k: v for k, v in vars(math).items() if not k.startswith("_")}
+BUILTINS = {f.__name__: f for f in (int, float, str, bool, list, dict, tuple, len, abs, min, max, round, sorted,
+                                    sum, map, filter, zip, any, all, reversed, enumerate, chr, ord, hex, oct, bin,
+                                    divmod, repr, isinstance)}
 _HUGE_WIDTH = re.compile(r"\d{5,}")
 
 
@@ -213,15 +213,20 @@ def _number(text: str) -> int | float | None:
         return None
 
 
-def _eval(expr: str, ctx: SubstContext) -> str:
+def restricted_eval(expr: str, lookup: Callable[[str], object]) -> object:
+    """Evaluate a Python expression over the AST whitelist of `Evaluator`; names come from `lookup`."""
     if "__" in expr:
         raise SubstitutionError("$(eval ...) may not contain double underscore expressions")
     try:
         tree = ast.parse(expr.strip(), mode="eval")
     except SyntaxError as exc:
         raise SubstitutionError(f"$(eval) syntax error: {exc.msg}") from None
+    return Evaluator(lookup).visit(tree.body)
+
+
+def _eval(expr: str, ctx: SubstContext) -> str:
     functions: dict[str, object] = {
-        **_MATH,
+        **MATH,
         "arg": lambda name: auto_value(ctx.arg(name)), "find": ctx.find_pkg, "env": ctx.getenv,
         "optenv": lambda n, d="": ctx.getenv(n, d), "anon": ctx.anonymous, "dirname": ctx.dirname,
         "true": True, "false": False, "True": True, "False": False,
@@ -231,28 +236,26 @@ def _eval(expr: str, ctx: SubstContext) -> str:
         """roslaunch's order: its functions and math, then the args (auto-typed), then builtins."""
         if name in functions:
             return functions[name]
-        if name in ctx.args or name not in _BUILTINS:
+        if name in ctx.args or name not in BUILTINS:
             return auto_value(ctx.arg(name))
-        return _BUILTINS[name]
+        return BUILTINS[name]
 
-    return str(_Evaluator(lookup).visit(tree.body))
+    return str(restricted_eval(expr, lookup))
 
 
 def arithmetic(expr: str) -> object:
     """A plain arithmetic expression over numbers, pi and the math functions (for rosparam's rad())."""
     def lookup(name: str) -> object:
-        if name not in _MATH:
+        if name not in MATH:
             raise SubstitutionError(f"name '{name}' is not defined")
-        return _MATH[name]
+        return MATH[name]
 
-    try:
-        tree = ast.parse(expr.strip(), mode="eval")
-    except SyntaxError as exc:
-        raise SubstitutionError(f"syntax error: {exc.msg}") from None
-    return _Evaluator(lookup).visit(tree.body)
+    return restricted_eval(expr, lookup)
 
 
-class _Evaluator(ast.NodeVisitor):
+class Evaluator(ast.NodeVisitor):
+    """Evaluates pure expressions (no attribute access, no calls but to what `lookup` gives)."""
+
     def __init__(self, lookup: Callable[[str], object]) -> None:
         self.lookup = lookup
 
@@ -356,7 +359,7 @@ class _Evaluator(ast.NodeVisitor):
             function = self.lookup(node.func.id)
             if not callable(function):
                 raise SubstitutionError(f"$(eval) {node.func.id} is not callable")
-        elif isinstance(node.func, ast.Attribute) and node.func.attr in _STR_METHODS:
+        elif isinstance(node.func, ast.Attribute) and node.func.attr in STR_METHODS:
             target = self.visit(node.func.value)
             if not isinstance(target, str):
                 raise SubstitutionError(f"$(eval) cannot call {node.func.attr} on {type(target).__name__}")

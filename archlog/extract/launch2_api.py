@@ -1,0 +1,721 @@
+"""What the launch, launch_ros (and nav2_common) Python API builds, as values a static reading of
+a Python launch file can hold: actions and substitutions become launch2 objects, and the few
+standard-library calls launch files use to find files (os.path, pathlib, ament_index_python,
+os.environ, open + yaml) are answered from the workspace. Anything else is `Unread`.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Protocol
+
+import yaml
+
+from archlog.extract.launch import LaunchError
+from archlog.extract.launch2 import (PYTHON, XML, YAML, Action, Component, Condition, DeclareArgument, Group,
+                                     Include, LoadComponents, Node, Opaque, ParamDict, ParamFile, ParamItem,
+                                     ParamSource, ParamText, Process, PushNamespace, Remap, SetConfiguration,
+                                     SetEnvironment, SetParameter, SetParametersFile, SetRemap, Where)
+from archlog.extract.launch2_subst import Call, Context, Parts, Rewritten, Text, opaque, perform, text
+from archlog.extract.substitution import SubstitutionError, UnknownArg, Unresolved
+
+MAX_RANGE = 10_000
+
+
+# -- values -------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Unread:
+    """A value archlog cannot know ahead of time, with the reason and where it was met."""
+
+    reason: str
+    line: int
+
+
+@dataclass(frozen=True)
+class Ref:
+    """An imported module, class or function, by its qualified name."""
+
+    name: str
+
+
+@dataclass(frozen=True)
+class S:
+    """A launch substitution object (or a SomeSubstitutionsType list of them)."""
+
+    parts: Parts
+
+
+@dataclass
+class Description:
+    """A LaunchDescription under construction."""
+
+    actions: list[object] = field(default_factory=list)
+
+
+class LineDict(dict):
+    """A dict literal that remembers the line of each key."""
+
+    lines: dict[object, int]
+
+
+class LineTuple(tuple):
+    """A tuple literal that remembers its line."""
+
+    line: int
+
+
+@dataclass(frozen=True)
+class PathValue:
+    """A pathlib.Path."""
+
+    path: str
+
+
+@dataclass(frozen=True)
+class FileHandle:
+    """A file opened for reading."""
+
+    path: str
+
+
+@dataclass(frozen=True)
+class ContextValue:
+    """The LaunchContext an OpaqueFunction receives."""
+
+    ctx: Context
+
+
+@dataclass(frozen=True)
+class ConfigsView:
+    """context.launch_configurations."""
+
+    ctx: Context
+
+
+@dataclass(frozen=True)
+class Source:
+    """A launch description source: the file and its dialect (None: by its name)."""
+
+    target: Parts
+    dialect: str | None
+
+
+@dataclass(frozen=True)
+class Typed:
+    """launch_ros's ParameterValue (or Parameter, with a name): a value and its declared type."""
+
+    value: object
+    kind: str | None
+    name: Parts | None = None
+
+
+@dataclass(frozen=True)
+class Handler:
+    """An event handler (OnProcessExit, ...): the actions it starts, or a callable."""
+
+    actions: object
+
+
+class Interpreter(Protocol):
+    """What API calls need from the interpreter of the file."""
+
+    path: Path
+    env: dict[str, str | UnknownArg]
+    guards: list[Condition]
+
+    def find(self, pkg: str) -> Path | None: ...
+
+    def site(self, line: int) -> int: ...
+
+    def call(self, function: object, args: list[object], kwargs: dict[str, object], line: int) -> object: ...
+
+
+@dataclass
+class CallSite:
+    """One call of an API function: its arguments, line and interpreter."""
+
+    args: list[object]
+    kwargs: dict[str, object]
+    line: int
+    interp: Interpreter
+
+    def arg(self, index: int, name: str, default: object = None) -> object:
+        """An argument given by position or keyword."""
+        if name in self.kwargs:
+            return self.kwargs[name]
+        return self.args[index] if index < len(self.args) else default
+
+    def where(self) -> Where:
+        return Where(self.interp.path, self.interp.site(self.line))
+
+    def conditions(self) -> tuple[Condition, ...]:
+        """The action's `condition=` and the Python branches it was created in."""
+        own = self.kwargs.get("condition")
+        found = list(self.interp.guards)
+        if isinstance(own, Condition):
+            found.append(own)
+        elif own is not None:
+            found.append(Condition("guard", to_parts(own, self.line)))
+        return tuple(found)
+
+
+# -- conversions --------------------------------------------------------------------------
+def to_parts(value: object, line: int) -> Parts:
+    """A SomeSubstitutionsType value as parts (numbers are written out, as launch users expect)."""
+    if isinstance(value, str):
+        return text(value)
+    if isinstance(value, S):
+        return value.parts
+    if isinstance(value, PathValue):
+        return text(value.path)
+    if isinstance(value, bool):
+        return text(str(value).lower())
+    if isinstance(value, (int, float)):
+        return text(str(value))
+    if isinstance(value, (list, tuple)):
+        return tuple(p for item in value for p in to_parts(item, line))
+    if isinstance(value, Unread):
+        return opaque(f"{value.reason} (line {value.line})")
+    return opaque(f"a {type(value).__name__} where text was expected (line {line})")
+
+
+def optional_parts(value: object, line: int) -> Parts | None:
+    return None if value is None else to_parts(value, line)
+
+
+def entities(value: object, where: Where) -> list[Action]:
+    """The actions of a LaunchDescription, a list of entities, or one entity."""
+    if isinstance(value, Description):
+        return entities(value.actions, where)
+    if isinstance(value, (list, tuple)):
+        return [a for item in value for a in entities(item, where)]
+    if isinstance(value, Action):
+        return [value]
+    if value is None:
+        return []
+    if isinstance(value, Unread):
+        return [Opaque(where=Where(where.file, value.line), reason=value.reason)]
+    return [Opaque(where=where, reason=f"a {type(value).__name__} is not a launch entity")]
+
+
+def _listed(value: object) -> list[object]:
+    if value is None:
+        return []
+    return list(value) if isinstance(value, (list, tuple)) else [value]
+
+
+def _source(value: object, line: int) -> Source:
+    return value if isinstance(value, Source) else Source(to_parts(value, line), None)
+
+
+def _args(value: object, line: int) -> tuple[tuple[Parts, Parts], ...]:
+    """launch_arguments: pairs, or a dict (its items)."""
+    if isinstance(value, dict):
+        value = list(value.items())
+    if value is None:
+        return ()
+    if not isinstance(value, (list, tuple)):
+        raise LaunchError(f"launch_arguments is not known statically ({_why(value)})")
+    pairs = []
+    for item in value:
+        if not isinstance(item, (list, tuple)) or len(item) != 2:
+            raise LaunchError(f"launch argument {item!r} is not a (name, value) pair")
+        pairs.append((to_parts(item[0], line), to_parts(item[1], line)))
+    return tuple(pairs)
+
+
+def _why(value: object) -> str:
+    return value.reason if isinstance(value, Unread) else type(value).__name__
+
+
+def _remaps(value: object, line: int) -> tuple[Remap, ...]:
+    if value is None:
+        return ()
+    if not isinstance(value, (list, tuple)):
+        return (Remap(opaque(f"remappings not known statically ({_why(value)})"), text(""), line),)
+    found = []
+    for item in value:
+        at = getattr(item, "line", line)
+        if isinstance(item, (list, tuple)) and len(item) == 2:
+            found.append(Remap(to_parts(item[0], at), to_parts(item[1], at), at))
+        else:
+            found.append(Remap(opaque(f"remapping not known statically ({_why(item)})"), text(""), at))
+    return tuple(found)
+
+
+def _arguments(value: object, line: int) -> tuple[Parts, ...]:
+    if value is None:
+        return ()
+    if not isinstance(value, (list, tuple)):
+        return (to_parts(value, line),)
+    return tuple(to_parts(item, line) for item in value)
+
+
+_TYPES = {"str": "str", "int": "int", "float": "float", "bool": "bool", "List[str]": "list_of_str",
+          "List[int]": "list_of_int", "List[float]": "list_of_float", "List[bool]": "list_of_bool"}
+
+
+def _kind(value: object) -> str | None:
+    """A ParameterValue's value_type (str, int, List[int]...) by its name."""
+    if isinstance(value, Ref):
+        return _TYPES.get(value.name.rpartition(".")[2]) or _TYPES.get(value.name)
+    if isinstance(value, type):
+        return _TYPES.get(value.__name__)
+    return None
+
+
+def param_value(value: object, line: int) -> object:
+    """A Python parameter value as launch_ros normalizes it: text stays text, substitutions are
+    read with YAML rules, lists become uniform."""
+    if isinstance(value, Typed):
+        if isinstance(value.value, (S, list, tuple)) and _has_subst(value.value):
+            return ParamText(to_parts(value.value, line), value.kind)
+        return value.value
+    if isinstance(value, (S, Unread)):
+        return ParamText(to_parts(value, line))
+    if isinstance(value, PathValue):
+        return value.path
+    if isinstance(value, (list, tuple)):
+        items = list(value)
+        kinds = {type(v) for v in items}
+        if items and _has_subst(items) and all(isinstance(v, (str, S)) for v in items):
+            return ParamText(to_parts(items, line))
+        if kinds == {int} or kinds == {bool} or kinds == {str}:
+            return items
+        if kinds <= {int, float} and items:
+            return [float(v) for v in items]
+        return [v if isinstance(v, (str, int, float, bool)) else param_value(v, line) for v in items]
+    if value is None:
+        return ParamText(opaque(f"None as a parameter value (line {line})"))
+    return value
+
+
+def _has_subst(value: object) -> bool:
+    if isinstance(value, (list, tuple)):
+        return any(_has_subst(v) for v in value)
+    return isinstance(value, (S, Unread))
+
+
+def _dict_items(value: dict, prefix: Parts, line: int) -> list[ParamItem]:
+    """A parameter dict flattened: nested dicts give dotted names."""
+    items = []
+    lines = getattr(value, "lines", {})
+    for key, item in value.items():
+        at = lines.get(key, line)
+        name = to_parts(key, at)
+        full = (*prefix, Text("."), *name) if prefix else name
+        if isinstance(item, dict):
+            items.extend(_dict_items(item, full, at))
+        else:
+            items.append(ParamItem(full, param_value(item, at), at))
+    return items
+
+
+def params(value: object, line: int) -> tuple[ParamSource, ...]:
+    """A node's `parameters` list: dicts, Parameter descriptions and parameter files."""
+    if value is None:
+        return ()
+    if not isinstance(value, (list, tuple)):
+        return (ParamDict((ParamItem(opaque(f"parameters not known statically ({_why(value)})"), None, line),)),)
+    found: list[ParamSource] = []
+    for item in value:
+        if isinstance(item, dict):
+            found.append(ParamDict(tuple(_dict_items(item, (), line))))
+        elif isinstance(item, ParamFile):
+            found.append(item)
+        elif isinstance(item, Typed) and item.name is not None:
+            found.append(ParamDict((ParamItem(item.name, param_value(item, line), line),)))
+        elif isinstance(item, Unread):
+            found.append(ParamDict((ParamItem(opaque(f"{item.reason} (line {item.line})"), None, line),)))
+        else:
+            found.append(ParamFile(to_parts(item, line), line))
+    return tuple(found)
+
+
+def _components(value: object, line: int) -> tuple[Component, ...]:
+    if value is None:
+        return ()
+    items = value if isinstance(value, (list, tuple)) else [value]
+    found = []
+    for item in items:
+        if not isinstance(item, Component):
+            raise LaunchError(f"composable node description not known statically ({_why(item)})")
+        found.append(item)
+    return tuple(found)
+
+
+# -- the API ------------------------------------------------------------------------------
+def _declare(c: CallSite) -> object:
+    name = c.arg(0, "name")
+    if not isinstance(name, str):
+        return Unread(f"a launch argument whose name is not known ({_why(name)})", c.line)
+    choices = c.kwargs.get("choices")
+    return DeclareArgument(where=c.where(), conditions=c.conditions(), name=name,
+                           default=optional_parts(c.arg(1, "default_value"), c.line),
+                           choices=tuple(str(v) for v in choices) if isinstance(choices, (list, tuple)) else None)
+
+
+def _node(c: CallSite, container: bool = False) -> object:
+    exe = c.kwargs.get("executable", c.kwargs.get("node_executable"))
+    if exe is None:
+        raise LaunchError("Node needs an executable")
+    ros_arguments = c.kwargs.get("ros_arguments")
+    return Node(where=c.where(), conditions=c.conditions(), pkg=optional_parts(c.kwargs.get("package"), c.line),
+                exe=to_parts(exe, c.line), name=optional_parts(c.kwargs.get("name", c.kwargs.get("node_name")), c.line),
+                namespace=optional_parts(c.kwargs.get("namespace", c.kwargs.get("node_namespace")), c.line),
+                params=params(c.kwargs.get("parameters"), c.line), remaps=_remaps(c.kwargs.get("remappings"), c.line),
+                arguments=_arguments(c.kwargs.get("arguments"), c.line),
+                ros_arguments=_arguments(ros_arguments, c.line) if ros_arguments is not None else None,
+                components=_components(c.kwargs.get("composable_node_descriptions"), c.line) if container else ())
+
+
+def _component(c: CallSite) -> object:
+    own = c.kwargs.get("condition")
+    return Component(where=c.where(), conditions=(own,) if isinstance(own, Condition) else (),
+                     pkg=to_parts(c.kwargs.get("package"), c.line), plugin=to_parts(c.kwargs.get("plugin"), c.line),
+                     name=optional_parts(c.kwargs.get("name"), c.line),
+                     namespace=optional_parts(c.kwargs.get("namespace"), c.line),
+                     params=params(c.kwargs.get("parameters"), c.line),
+                     remaps=_remaps(c.kwargs.get("remappings"), c.line))
+
+
+def _load(c: CallSite) -> object:
+    target = c.arg(1, "target_container")
+    return LoadComponents(where=c.where(), conditions=c.conditions(),
+                          target=target if isinstance(target, Node) else to_parts(target, c.line),
+                          components=_components(c.arg(0, "composable_node_descriptions"), c.line))
+
+
+def _group(c: CallSite) -> object:
+    keep = c.kwargs.get("launch_configurations") or {}
+    return Group(where=c.where(), conditions=c.conditions(), actions=tuple(entities(c.arg(0, "actions"), c.where())),
+                 scoped=c.kwargs.get("scoped", True) is not False, forwarding=c.kwargs.get("forwarding", True) is not False,
+                 keep=tuple((to_parts(k, c.line), to_parts(v, c.line)) for k, v in keep.items())
+                 if isinstance(keep, dict) else ())
+
+
+def _include(c: CallSite) -> object:
+    source = _source(c.arg(0, "launch_description_source"), c.line)
+    return Include(where=c.where(), conditions=c.conditions(), target=source.target,
+                   args=_args(c.arg(1, "launch_arguments"), c.line), dialect=source.dialect)
+
+
+def _opaque_function(c: CallSite) -> object:
+    function = c.arg(0, "function")
+    extra_args, extra_kwargs = c.kwargs.get("args") or [], c.kwargs.get("kwargs") or {}
+    if isinstance(function, Unread) or isinstance(function, Ref):
+        return Opaque(where=c.where(), conditions=c.conditions(), reason=f"OpaqueFunction {_describe(function)}")
+    interp, where = c.interp, c.where()
+
+    def run(ctx: Context) -> list[Action]:
+        result = interp.call(function, [ContextValue(ctx), *list(extra_args)], dict(extra_kwargs), where.line)
+        return entities(result, where)
+
+    return Opaque(where=where, conditions=c.conditions(), reason="OpaqueFunction", run=run)
+
+
+def _describe(value: object) -> str:
+    if isinstance(value, Ref):
+        return value.name
+    return value.reason if isinstance(value, Unread) else type(value).__name__
+
+
+def _handler(c: CallSite) -> object:
+    for key in ("on_exit", "on_start", "on_completion", "on_stdout", "on_stderr"):
+        if key in c.kwargs:
+            return Handler(c.kwargs[key])
+    return Handler(None)
+
+
+def _register(c: CallSite) -> object:
+    handler = c.arg(0, "event_handler")
+    if not isinstance(handler, Handler):
+        return Opaque(where=c.where(), conditions=c.conditions(), reason=f"event handler {_describe(handler)}")
+    actions = handler.actions
+    if actions is not None and not isinstance(actions, (list, tuple, Action)):
+        return Opaque(where=c.where(), conditions=c.conditions(), reason="an event handler computed at run time")
+    return Group(where=c.where(), conditions=c.conditions(), actions=tuple(entities(actions, c.where())), scoped=False)
+
+
+def _process(c: CallSite) -> object:
+    return Process(where=c.where(), conditions=c.conditions(), cmd=_arguments(c.arg(0, "cmd"), c.line))
+
+
+def _env_action(mode: str) -> Callable[[CallSite], object]:
+    def build(c: CallSite) -> object:
+        value = None if mode == "unset" else to_parts(c.arg(1, "value"), c.line)
+        separator = c.kwargs.get("separator", os.pathsep)
+        return SetEnvironment(where=c.where(), conditions=c.conditions(), name=to_parts(c.arg(0, "name"), c.line),
+                              value=value, append="" if mode != "append" else
+                              ("prepend" if c.kwargs.get("prepend") is True else "append"),
+                              separator=to_parts(separator, c.line))
+    return build
+
+
+def _subst(name: str, *keys: str) -> Callable[[CallSite], object]:
+    """A substitution class whose arguments (by position or these keywords) are its frontend's."""
+    def build(c: CallSite) -> object:
+        args = [c.arg(i, key) for i, key in enumerate(keys)]
+        while args and args[-1] is None:
+            args.pop()
+        return S((Call(name, tuple(to_parts(a, c.line) for a in args)),))
+    return build
+
+
+def _equals(name: str) -> Callable[[CallSite], object]:
+    def build(c: CallSite) -> object:
+        sides = [c.arg(0, "left"), c.arg(1, "right")]
+        return S((Call(name, tuple(text("") if v is None else to_parts(v, c.line) for v in sides)),))
+    return build
+
+
+def _path_join(c: CallSite) -> object:
+    items = c.arg(0, "substitutions")
+    if not isinstance(items, (list, tuple)):
+        return S(to_parts(items, c.line))
+    return S((Call("path-join", tuple(to_parts(i, c.line) for i in items)),))
+
+
+def _eval(c: CallSite) -> object:
+    modules = c.arg(1, "python_modules")
+    args = (to_parts(c.arg(0, "expression"), c.line),)
+    if isinstance(modules, (list, tuple)):
+        args += (text(",".join(str(m) for m in modules)),)
+    return S((Call("eval", args),))
+
+
+def _rewritten(c: CallSite) -> object:
+    def pairs(value: object) -> tuple[tuple[str, Parts], ...]:
+        return tuple((str(k), to_parts(v, c.line)) for k, v in value.items()) if isinstance(value, dict) else ()
+
+    return S((Rewritten(to_parts(c.arg(0, "source_file"), c.line), optional_parts(c.kwargs.get("root_key"), c.line),
+                        pairs(c.arg(1, "param_rewrites")), pairs(c.kwargs.get("value_rewrites"))),))
+
+
+def _condition(kind: str) -> Callable[[CallSite], object]:
+    def build(c: CallSite) -> object:
+        if kind in ("if", "unless"):
+            return Condition(kind, to_parts(c.arg(0, "predicate_expression"), c.line))
+        name = c.arg(0, "launch_configuration_name")
+        return Condition(kind, optional_parts(c.arg(1, "expected_value"), c.line), str(name))
+    return build
+
+
+def _package_dir(name: str) -> Callable[[CallSite], object]:
+    """ament_index_python's lookups: a path when the package is here, else a substitution that
+    says so when it is used."""
+    def build(c: CallSite) -> object:
+        pkg = c.arg(0, "package_name")
+        found = c.interp.find(pkg) if isinstance(pkg, str) else None
+        if found is not None and name == "find-pkg-share":
+            return str(found)
+        return S((Call(name, (to_parts(pkg, c.line),)),))
+    return build
+
+
+def _action(cls: type, **fields: str) -> Callable[[CallSite], object]:
+    """An action whose arguments are all substitutions: each field from the API's argument of that
+    name (or position)."""
+    def build(c: CallSite) -> object:
+        values = {key: to_parts(c.arg(i, arg), c.line) for i, (key, arg) in enumerate(fields.items())}
+        return cls(where=c.where(), conditions=c.conditions(), **values)
+    return build
+
+
+def _set_parameter(c: CallSite) -> object:
+    return SetParameter(where=c.where(), conditions=c.conditions(), name=to_parts(c.arg(0, "name"), c.line),
+                        value=param_value(c.arg(1, "value"), c.line))
+
+
+def _use_sim_time(c: CallSite) -> object:
+    value = c.arg(0, "value")
+    return SetParameter(where=c.where(), conditions=c.conditions(), name=text("use_sim_time"),
+                        value=value if isinstance(value, bool) else ParamText(to_parts(value, c.line), "bool"))
+
+
+def _inert(c: CallSite) -> object:
+    """Actions with no effect on the architecture (LogInfo, Shutdown, EmitEvent...)."""
+    return None
+
+
+CONSTRUCTORS: dict[str, Callable[[CallSite], object]] = {
+    "LaunchDescription": lambda c: Description(_listed(c.arg(0, "initial_entities"))),
+    "DeclareLaunchArgument": _declare,
+    "SetLaunchConfiguration": _action(SetConfiguration, name="name", value="value"),
+    "UnsetLaunchConfiguration": lambda c: SetConfiguration(where=c.where(), conditions=c.conditions(),
+                                                           name=to_parts(c.arg(0, "name"), c.line), value=None),
+    "GroupAction": _group,
+    "IncludeLaunchDescription": _include,
+    "PythonLaunchDescriptionSource": lambda c: Source(to_parts(c.arg(0, "launch_file_path"), c.line), PYTHON),
+    "XMLLaunchDescriptionSource": lambda c: Source(to_parts(c.arg(0, "launch_file_path"), c.line), XML),
+    "YAMLLaunchDescriptionSource": lambda c: Source(to_parts(c.arg(0, "launch_file_path"), c.line), YAML),
+    "FrontendLaunchDescriptionSource": lambda c: Source(to_parts(c.arg(0, "launch_file_path"), c.line), None),
+    "AnyLaunchDescriptionSource": lambda c: Source(to_parts(c.arg(0, "launch_file_path"), c.line), None),
+    "OpaqueFunction": _opaque_function,
+    "TimerAction": lambda c: Group(where=c.where(), conditions=c.conditions(),
+                                   actions=tuple(entities(c.arg(1, "actions"), c.where())), scoped=False),
+    "RegisterEventHandler": _register,
+    "OnProcessExit": _handler, "OnProcessStart": _handler, "OnExecutionComplete": _handler, "OnProcessIO": _handler,
+    "OnStateTransition": _handler,
+    "OnShutdown": lambda c: Handler(None),
+    "ExecuteProcess": _process, "ExecuteLocal": _process,
+    "SetEnvironmentVariable": _env_action("set"), "UnsetEnvironmentVariable": _env_action("unset"),
+    "AppendEnvironmentVariable": _env_action("append"),
+    "LogInfo": _inert, "EmitEvent": _inert, "Shutdown": _inert, "SetROSLogDir": _inert, "LifecycleTransition": _inert,
+    "Node": _node, "LifecycleNode": _node,
+    "ComposableNodeContainer": lambda c: _node(c, container=True),
+    "ComposableNode": _component,
+    "LoadComposableNodes": _load,
+    "PushRosNamespace": _action(PushNamespace, namespace="namespace"),
+    "PushROSNamespace": _action(PushNamespace, namespace="namespace"),
+    "SetRemap": _action(SetRemap, src="src", dst="dst"),
+    "SetParameter": _set_parameter,
+    "SetParametersFromFile": _action(SetParametersFile, path="filename"),
+    "SetUseSimTime": _use_sim_time,
+    "ParameterFile": lambda c: ParamFile(to_parts(c.arg(0, "param_file"), c.line), c.line,
+                                         c.arg(1, "allow_substs", False) is True),
+    "ParameterValue": lambda c: Typed(c.arg(0, "value"), _kind(c.kwargs.get("value_type"))),
+    "Parameter": lambda c: Typed(c.arg(1, "value"), _kind(c.kwargs.get("value_type")), to_parts(c.arg(0, "name"), c.line)),
+    "IfCondition": _condition("if"), "UnlessCondition": _condition("unless"),
+    "LaunchConfigurationEquals": _condition("equals"), "LaunchConfigurationNotEquals": _condition("not-equals"),
+    "LaunchConfiguration": _subst("var", "variable_name", "default"),
+    "EnvironmentVariable": _subst("env", "name", "default_value"),
+    "TextSubstitution": lambda c: S(to_parts(c.arg(0, "text"), c.line)),
+    "PathJoinSubstitution": _path_join,
+    "PythonExpression": _eval,
+    "FindPackageShare": _subst("find-pkg-share", "package"),
+    "FindPackagePrefix": _subst("find-pkg-prefix", "package"),
+    "ThisLaunchFileDir": _subst("dirname"), "ThisLaunchFile": _subst("filename"),
+    "AnonName": _subst("anon", "name"),
+    "Command": _subst("command", "command"),
+    "FindExecutable": _subst("find-exec", "name"),
+    "ExecutableInPackage": _subst("exec-in-pkg", "executable", "package"),
+    "FileContent": _subst("file-content", "path"),
+    "EqualsSubstitution": _equals("equals"), "NotEqualsSubstitution": _equals("not-equals"),
+    "NotSubstitution": _subst("not", "value"), "AndSubstitution": _subst("and", "left", "right"),
+    "OrSubstitution": _subst("or", "left", "right"),
+    "AnySubstitution": lambda c: S((Call("any", tuple(to_parts(a, c.line) for a in c.args)),)),
+    "AllSubstitution": lambda c: S((Call("all", tuple(to_parts(a, c.line) for a in c.args)),)),
+    "IfElseSubstitution": _subst("if", "condition", "if_value", "else_value"),
+    "LaunchConfigAsBool": lambda c: S((Call("as-bool", ((Call("var", (to_parts(c.arg(0, "name"), c.line),)),),)),)),
+    "RewrittenYaml": _rewritten,
+    "get_package_share_directory": _package_dir("find-pkg-share"),
+    "get_package_prefix": _package_dir("find-pkg-prefix"),
+}
+API_MODULES = ("launch", "launch_ros", "launch_xml", "launch_yaml", "ament_index_python", "nav2_common")
+
+
+# -- the standard library a launch file uses to find its files ----------------------------
+def _plain_path(value: object) -> str | None:
+    if isinstance(value, str):
+        return value
+    return value.path if isinstance(value, PathValue) else None
+
+
+def _os_path(function: Callable[..., object]) -> Callable[[CallSite], object]:
+    def build(c: CallSite) -> object:
+        plain = [_plain_path(a) for a in c.args]
+        if any(p is None for p in plain):
+            return Unread(f"os.path.{function.__name__} of a value not known statically", c.line)
+        return function(*plain)
+    return build
+
+
+def _join(c: CallSite) -> object:
+    plain = [_plain_path(a) for a in c.args]
+    if all(p is not None for p in plain) and plain:
+        return os.path.join(*plain)  # type: ignore[arg-type]
+    return S((Call("path-join", tuple(to_parts(a, c.line) for a in c.args)),))
+
+
+def _getenv(c: CallSite) -> object:
+    name, default = c.arg(0, "key"), c.arg(1, "default")
+    if not isinstance(name, str):
+        return Unread("an environment variable whose name is not known", c.line)
+    return environment(c.interp.env, name, default, c.line)
+
+
+def environment(env: dict[str, str | UnknownArg], name: str, default: object, line: int) -> object:
+    """An environment variable as os.environ.get(name, default) reads it."""
+    value = env.get(name, default)
+    return Unread(f"environment variable {name} is not known ({value.reason})", line) \
+        if isinstance(value, UnknownArg) else value
+
+
+def _open(c: CallSite) -> object:
+    file, mode = c.arg(0, "file"), c.arg(1, "mode", "r")
+    path = _plain_path(file)
+    if path is None:
+        return Unread(f"opening a file whose path is not known ({_why(file)})", c.line)
+    if not isinstance(mode, str) or any(m in mode for m in "wax+"):
+        return Unread(f"{path} opened for writing", c.line)
+    return FileHandle(path)
+
+
+def _chain(c: CallSite) -> object:
+    if not all(isinstance(a, (list, tuple)) for a in c.args):
+        return Unread("itertools.chain of values not known statically", c.line)
+    return [item for a in c.args for item in a]
+
+
+def read_text(value: object, line: int) -> str | Unread:
+    """The text of a file handle (or of a string), as .read() or yaml.safe_load(f) see it."""
+    if isinstance(value, str):
+        return value
+    path = value.path if isinstance(value, (FileHandle, PathValue)) else None
+    if path is None:
+        return Unread(f"reading {_why(value)}", line)
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        return Unread(f"cannot read {path}: {exc}", line)
+
+
+def _loader(parse: Callable[[str], object]) -> Callable[[CallSite], object]:
+    def build(c: CallSite) -> object:
+        content = read_text(c.arg(0, "stream"), c.line)
+        if isinstance(content, Unread):
+            return content
+        try:
+            return parse(content)
+        except (yaml.YAMLError, ValueError) as exc:
+            return Unread(f"invalid file content: {exc}", c.line)
+    return build
+
+
+def _range(c: CallSite) -> object:
+    if not all(isinstance(a, int) for a in c.args) or not 1 <= len(c.args) <= 3:
+        return Unread("range over values not known statically", c.line)
+    numbers = range(*c.args)
+    return list(numbers) if len(numbers) <= MAX_RANGE else Unread("range too long", c.line)
+
+
+def perform_in(value: object, context: object, line: int) -> object:
+    """A substitution performed in an OpaqueFunction's context (launch's .perform(context))."""
+    if not isinstance(context, ContextValue):
+        return Unread("perform() outside an OpaqueFunction's context", line)
+    try:
+        return perform(to_parts(value, line), context.ctx)
+    except (Unresolved, SubstitutionError) as exc:
+        return Unread(str(exc), line)
+
+
+FUNCTIONS: dict[str, Callable[[CallSite], object]] = {
+    "os.path.join": _join,
+    "os.path.dirname": _os_path(os.path.dirname), "os.path.basename": _os_path(os.path.basename),
+    "os.path.abspath": _os_path(os.path.abspath), "os.path.realpath": _os_path(os.path.realpath),
+    "os.path.normpath": _os_path(os.path.normpath), "os.path.expanduser": _os_path(os.path.expanduser),
+    "os.path.exists": _os_path(os.path.exists), "os.path.isfile": _os_path(os.path.isfile),
+    "os.path.isdir": _os_path(os.path.isdir), "os.path.splitext": _os_path(os.path.splitext),
+    "os.getenv": _getenv, "os.environ.get": _getenv,
+    "pathlib.Path": lambda c: PathValue(str(Path(*[_plain_path(a) or "" for a in c.args])))
+    if all(_plain_path(a) is not None for a in c.args) else Unread("a path not known statically", c.line),
+    "yaml.safe_load": _loader(yaml.safe_load), "yaml.load": _loader(yaml.safe_load),
+    "yaml.full_load": _loader(yaml.safe_load), "json.load": _loader(json.loads), "json.loads": _loader(json.loads),
+    "builtins.open": _open, "builtins.range": _range, "itertools.chain": _chain,
+    "launch.utilities.perform_substitutions": lambda c: perform_in(c.arg(1, "subs"), c.arg(0, "context"), c.line),
+}
