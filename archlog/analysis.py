@@ -22,6 +22,7 @@ from archlog.extract.python import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace import Workspace
 from archlog.facts.compose import compose, rosrun_config
+from archlog.facts.instances import complete_instances
 from archlog.facts.store import FactStore
 
 
@@ -67,6 +68,7 @@ def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models
     if config is None:
         config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
                                workspace, diagnostics)
+    complete_instances(config, summaries, diagnostics)
     config.nodes.extend(controller_nodes(config, diagnostics))
     for summary, instance, elem in externals:
         summaries[(summary.package, summary.executable)] = summary

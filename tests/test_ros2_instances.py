@@ -1,0 +1,44 @@
+"""ROS 2 node instances get the name and namespace their source gives unless the launch file sets
+them, and their parameters (direct ones, and parameter-file entries whose node key matches)."""
+
+from __future__ import annotations
+
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.launch import Element, LaunchConfig, LaunchNode
+from archlog.extract.summary import NodeSummary
+from archlog.facts.instances import complete_instances
+from archlog.values import Unknown
+
+ELEM = Element("e1", "bringup.launch.py", 7)
+
+
+def node(name: str, namespace: str, exe: str = "talker", **kw) -> LaunchNode:
+    return LaunchNode(ELEM, "demo", exe, name, namespace, **kw)
+
+
+def test_launch_names_win_and_the_source_fills_in_the_rest() -> None:
+    summaries = {("demo", "talker"): NodeSummary("demo", "talker", "python", default_name="talker", namespace="robot"),
+                 ("demo", "listener"): NodeSummary("demo", "listener", "cpp", default_name=Unknown("name", "l.cpp", 3))}
+    config = LaunchConfig(nodes=[node("", ""), node("", "/ns"), node("/chatty", ""), node("/a/chatty", "/a"),
+                                 node("", "", exe="listener")])
+    sink = DiagnosticSink()
+    complete_instances(config, summaries, sink)
+    assert [(n.name, n.namespace) for n in config.nodes] == [
+        ("/robot/talker", "/robot"),      # both from the source
+        ("/ns/talker", "/ns"),            # a pushed namespace replaces the source's
+        ("/robot/chatty", "/robot"),      # a launch name keeps the source's namespace
+        ("/a/chatty", "/a"),
+        ("/listener", "/"),               # a name not known statically: the executable's
+    ]
+    assert [(d.line, d.code, d.severity) for d in sink.items] == [(7, "node-name", "note")]
+
+
+def test_parameters_reach_the_nodes_whose_key_matches() -> None:
+    entries = [("", "rate", 10, ELEM), ("/**", "use_sim_time", True, ELEM), ("/**/talker", "topic", "news", ELEM),
+               ("talker", "qos.depth", 5, ELEM), ("/other", "topic", "x", ELEM)]
+    config = LaunchConfig(nodes=[node("/robot/talker", "/robot", parameters=list(entries)),
+                                 node("/talker", "/", parameters=list(entries))])
+    complete_instances(config, {}, DiagnosticSink())
+    assert {k: v[0] for k, v in config.params.items()} == {
+        "/robot/talker/rate": 10, "/robot/talker/use_sim_time": True, "/robot/talker/topic": "news",
+        "/talker/rate": 10, "/talker/use_sim_time": True, "/talker/topic": "news", "/talker/qos.depth": 5}
