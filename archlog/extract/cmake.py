@@ -1,6 +1,7 @@
-"""A small CMakeLists.txt reader: commands with `${VAR}` expansion, `set()`, `list(APPEND)` and
-`foreach()` loops. Conditions are not evaluated (every branch is read); function and macro
-bodies are skipped."""
+"""A small CMakeLists.txt reader: commands with `${VAR}` expansion, `set()`, `list(APPEND)`,
+`foreach()` loops, and the package's own functions and macros expanded where they are called
+(with `${ARGN}`, `${ARGV<n>}` and `cmake_parse_arguments`); the commands they run are located at
+the call. Conditions are not evaluated (every branch is read)."""
 
 from __future__ import annotations
 
@@ -28,11 +29,21 @@ class _Raw:
     line: int
 
 
+@dataclass(frozen=True)
+class _Function:
+    params: tuple[str, ...]
+    body: tuple[_Raw, ...]
+    macro: bool
+
+
+_MAX_CALL_DEPTH = 8
+
+
 def commands(text: str, variables: dict[str, str] | None = None) -> list[Command]:
     """Parse and interpret CMake source; `variables`, if given, seeds them and receives the ones set."""
     variables = {} if variables is None else variables
     result: list[Command] = []
-    _run(_parse(text), variables, result)
+    _run(_parse(text), variables, result, {}, None)
     return result
 
 
@@ -59,20 +70,41 @@ def _parse(text: str) -> list[_Raw]:
     return raws
 
 
-def _run(raws: list[_Raw], variables: dict[str, str], out: list[Command]) -> None:
+def _run(raws: list[_Raw] | tuple[_Raw, ...], variables: dict[str, str], out: list[Command],
+         functions: dict[str, _Function], call_line: int | None, depth: int = 0) -> None:
+    """Interpret commands; `call_line`: the line of the function call they run for."""
     i = 0
     while i < len(raws):
         raw = raws[i]
         if raw.name in ("function", "macro", "foreach"):
             end = _matching_end(raws, i)
             if raw.name == "foreach":
-                _loop(raw, raws[i + 1:end], variables, out)
+                _loop(raw, raws[i + 1:end], variables, out, functions, call_line, depth)
+            else:
+                head = _expand_args(raw.args, variables)
+                if head:
+                    functions[head[0].lower()] = _Function(head[1:], tuple(raws[i + 1:end]), raw.name == "macro")
             i = end + 1
             continue
-        cmd = Command(raw.name, _expand_args(raw.args, variables), raw.line)
-        _track(cmd, variables)
-        out.append(cmd)
+        cmd = Command(raw.name, _expand_args(raw.args, variables), call_line or raw.line)
+        if cmd.name in functions and depth < _MAX_CALL_DEPTH:
+            _call(functions[cmd.name], cmd, variables, out, functions, depth)
+        else:
+            _track(cmd, variables)
+            out.append(cmd)
         i += 1
+
+
+def _call(function: _Function, cmd: Command, variables: dict[str, str], out: list[Command],
+          functions: dict[str, _Function], depth: int) -> None:
+    """Run a function (in a copy of the variables) or a macro (in the caller's) with its arguments."""
+    scope = variables if function.macro else dict(variables)
+    arguments = list(cmd.args)
+    scope.update({name: value for name, value in zip(function.params, arguments)})
+    scope.update({f"ARGV{n}": value for n, value in enumerate(arguments)})
+    scope.update({"ARGN": ";".join(arguments[len(function.params):]), "ARGV": ";".join(arguments),
+                  "ARGC": str(len(arguments))})
+    _run(function.body, scope, out, functions, cmd.line, depth + 1)
 
 
 def _matching_end(raws: list[_Raw], start: int) -> int:
@@ -86,7 +118,8 @@ def _matching_end(raws: list[_Raw], start: int) -> int:
     return len(raws) - 1
 
 
-def _loop(head: _Raw, body: list[_Raw], variables: dict[str, str], out: list[Command]) -> None:
+def _loop(head: _Raw, body: list[_Raw], variables: dict[str, str], out: list[Command],
+          functions: dict[str, _Function], call_line: int | None, depth: int) -> None:
     args = _expand_args(head.args, variables)
     if not args:
         return
@@ -109,7 +142,7 @@ def _loop(head: _Raw, body: list[_Raw], variables: dict[str, str], out: list[Com
         items = [str(n) for n in range(start, stop + 1)]
     for item in items:
         variables[var] = item
-        _run(body, variables, out)
+        _run(body, variables, out, functions, call_line, depth)
 
 
 def _expand_args(args: tuple[tuple[str, bool], ...], variables: dict[str, str]) -> tuple[str, ...]:
@@ -141,3 +174,34 @@ def _track(cmd: Command, variables: dict[str, str]) -> None:
     elif cmd.name == "list" and len(cmd.args) > 1 and cmd.args[0] == "APPEND":
         current = [v for v in variables.get(cmd.args[1], "").split(";") if v]
         variables[cmd.args[1]] = ";".join(current + list(cmd.args[2:]))
+    elif cmd.name == "cmake_parse_arguments" and len(cmd.args) >= 4:
+        _parse_arguments(cmd.args, variables)
+
+
+def _parse_arguments(args: tuple[str, ...], variables: dict[str, str]) -> None:
+    """cmake_parse_arguments(PREFIX OPTIONS ONE_VALUE MULTI_VALUE args...), also with PARSE_ARGV N:
+    sets PREFIX_KEYWORD for every keyword and PREFIX_UNPARSED_ARGUMENTS."""
+    if args[0] == "PARSE_ARGV" and len(args) >= 6:
+        start = int(args[1]) if args[1].isdigit() else 0
+        count = int(variables.get("ARGC", "0") or 0)
+        values = [variables.get(f"ARGV{n}", "") for n in range(start, count)]
+        args = (*args[2:6], *values)
+    prefix, options, single, multi = args[0], *(set(a.split(";")) - {""} for a in args[1:4])
+    parsed: dict[str, list[str]] = {}
+    unparsed: list[str] = []
+    current: str | None = None
+    for word in args[4:]:
+        if word in options:
+            parsed[word], current = ["TRUE"], None
+        elif word in single | multi:
+            parsed[word], current = [], word
+        elif current is not None:
+            parsed[current].append(word)
+            current = None if current in single else current
+        else:
+            unparsed.append(word)
+    for keyword in options:
+        variables[f"{prefix}_{keyword}"] = "TRUE" if keyword in parsed else "FALSE"
+    for keyword in single | multi:
+        variables[f"{prefix}_{keyword}"] = ";".join(parsed.get(keyword, []))
+    variables[f"{prefix}_UNPARSED_ARGUMENTS"] = ";".join(unparsed)

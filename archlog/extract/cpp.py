@@ -1,9 +1,14 @@
-"""roscpp nodes: parse C++ with libclang and hand each file to the walker (cpp_walk.py).
+"""roscpp and rclcpp nodes: parse C++ with libclang and hand each file to the walker (cpp_walk.py).
 
 No compile database is needed: include paths come from the workspace (include/ folders and
 include_directories()), headers generated for the workspace's own messages, /opt/ros/*/include
 and /usr/include. ros/ros.h is precompiled once per machine (a PCH in the cache folder), and
 each file's result is stored in an on-disk cache keyed by its content and every flag.
+
+Headers that are not installed get stand-ins: ROS 1 message headers (stub_headers.py), and for
+ROS 2 code the client libraries and interfaces (ros2_stubs.py), searched first. Errors that come
+from what a stand-in lacks are not the code's fault: they only make the walker read the lines
+it lost from the tokens.
 """
 
 from __future__ import annotations
@@ -24,8 +29,11 @@ import clang.cindex as ci
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cache import ResultCache, cache_dir, key
 from archlog.extract.cpp_walk import FileResult, walk
+from archlog.extract.ros2_stubs import API, API_DIR, DUAL, INTERFACE_INCLUDE, Interfaces, is_ros2, \
+    library_interfaces, spelled_types, stand_in_dir
 from archlog.extract.stub_headers import stub_dir
 from archlog.extract.summary import NodeSummary
+from archlog.extract.workspace import manifests
 
 _KEEP_GOING = 0x200
 _NOT_FOUND = re.compile(r"'([^']+)' file not found")
@@ -55,6 +63,7 @@ class CppEnvironment:
     per_file: dict[str, list[str]] = field(default_factory=dict)
     pch: Path | None = None
     fingerprint: str = ""
+    interfaces: Interfaces = field(default_factory=Interfaces)
 
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots()
@@ -66,7 +75,9 @@ class CppEnvironment:
             self.args += ["-resource-dir", rdir]
         self.pch = _ros_pch(system, rdir)
         self.per_file = _compile_commands(self.roots)
-        self.fingerprint = key(json.dumps(self.parse_args()), *_tree_stamp(self.workspace_includes))
+        self.interfaces = Interfaces.index(m.parent for root in self.roots for m in manifests(root))
+        self.fingerprint = key(json.dumps(self.parse_args()), *_tree_stamp(self.workspace_includes),
+                               *self.interfaces.stamp(), _stand_in_stamp())
 
     def parse_args(self, source: Path | None = None) -> list[str]:
         pch = ["-include-pch", str(self.pch), "-Xclang", "-fno-validate-pch"] if self.pch else []
@@ -75,6 +86,17 @@ class CppEnvironment:
     def file_args(self, source: Path | None) -> list[str]:
         """Flags a compile database gives for this file (include paths, defines, standard)."""
         return self.per_file.get(str(source.resolve()), []) if source is not None else []
+
+    def folders(self, source: Path | None = None) -> list[Path]:
+        """The include folders a file is parsed with (its compile database's first)."""
+        return [Path(a[2:]) for a in self.file_args(source) + self.args if a.startswith("-I")]
+
+    def find(self, name: str, folders: list[Path]) -> Path | None:
+        """Where an include resolves; a ROS 1 header of a package that ROS 2 has under the same
+        include names (tf2_ros, message_filters...) does not count for ROS 2 code."""
+        dual = name.split("/", 1)[0] in DUAL
+        return next((folder / name for folder in folders if (folder / name).is_file()
+                     and not (dual and _ros1_system(folder))), None)
 
 
 def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvironment,
@@ -102,14 +124,11 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
 
 def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
     try:
-        stubs = stub_dir(_unresolved_includes(source, env))
-        extra = [f"-I{stubs}"] if stubs else []
-        own = env.file_args(source)
-        tu = _load(index, source, env.parse_args(source) + extra, env.args + own + extra)
-        missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
-        more = stub_dir(missing) if missing else None
-        if more is not None and not extra:  # found only while parsing (included by a header): again
-            tu = _load(index, source, env.parse_args(source) + [f"-I{more}"], env.args + own + [f"-I{more}"])
+        scan = _scan(source, env)
+        if scan.ros2:
+            tu, stand_ins = _parse_ros2(index, source, env, scan)
+        else:
+            tu, stand_ins = _parse_ros1(index, source, env, scan), []
     except ci.TranslationUnitLoadError as exc:
         result = FileResult()
         result.diagnostics.append(Diagnostic(shown, 1, "cpp-parse", f"libclang could not parse this file: {exc}",
@@ -118,9 +137,12 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
         return result
     errors = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error and d.location.file
               and Path(d.location.file.name) == source]
-    result = walk(tu, source, shown, incomplete_ast=bool(errors), cls=cls)
+    gaps = [d for d in errors if stand_ins and _stand_in_gap(d, stand_ins)]
+    errors = [d for d in errors if d not in gaps and not (gaps and _cascade(d, gaps, source))]
+    result = walk(tu, source, shown, incomplete_ast=bool(errors or gaps), cls=cls, ros2=scan.ros2)
     result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
     result.missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
+    result.missing += [n for n in scan.missing + scan.dual if n not in result.missing]
     if errors:
         first = errors[0]
         result.diagnostics.append(Diagnostic(shown, first.location.line, "cpp-compile",
@@ -128,7 +150,126 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
                                              "from the tokens", "warning"))
         if result.fallback_lines:
             result.incomplete = f"{shown}:{first.location.line}: does not compile"
+    elif result.fallback_lines:
+        first = next(d for d in gaps if d.location.line in result.fallback_lines) if any(
+            d.location.line in result.fallback_lines for d in gaps) else gaps[0]
+        result.diagnostics.append(Diagnostic(shown, first.location.line, "cpp-stand-in",
+                                             f"archlog's stand-in ROS 2 headers lack what this line uses "
+                                             f"({first.spelling}); its calls were read from the tokens", "note"))
+        result.incomplete = f"{shown}:{first.location.line}: read from the tokens"
     return result
+
+
+def _parse_ros1(index: ci.Index, source: Path, env: CppEnvironment, scan: _Scan) -> ci.TranslationUnit:
+    """ROS 1 code: with ros/ros.h precompiled and stand-ins for message headers not installed."""
+    stubs = stub_dir(scan.missing)
+    extra = [f"-I{stubs}"] if stubs else []
+    own = env.file_args(source)
+    tu = _load(index, source, env.parse_args(source) + extra, env.args + own + extra)
+    missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
+    more = stub_dir(missing) if missing else None
+    if more is not None and not extra:  # found only while parsing (included by a header): again
+        tu = _load(index, source, env.parse_args(source) + [f"-I{more}"], env.args + own + [f"-I{more}"])
+    return tu
+
+
+def _parse_ros2(index: ci.Index, source: Path, env: CppEnvironment,
+                scan: _Scan) -> tuple[ci.TranslationUnit, list[str]]:
+    """ROS 2 code: stand-ins for the client libraries and interfaces that are not installed,
+    searched before every other folder. Returns the unit and the stand-in folders used."""
+    folders = env.folders(source)
+    wanted = scan.missing + scan.dual
+
+    def exists(name: str) -> bool:
+        return env.find(name, folders) is not None
+
+    tu, used = None, []
+    for _attempt in range(2):
+        folder = stand_in_dir(wanted, scan.spellings, env.interfaces, exists)
+        used = ([str(folder)] if folder else []) + [str(API_DIR)]
+        stand_in_rclcpp = any(n.split("/", 1)[0] in API for n in wanted) and \
+            not any(exists(n) for n in ["rclcpp/rclcpp.hpp", *library_interfaces("rclcpp")])
+        pch = _rclcpp_pch() if stand_in_rclcpp else None
+        tu = index.parse(str(source), args=[f"-I{f}" for f in used] + env.args + env.file_args(source)
+                         + (["-include-pch", str(pch), "-Xclang", "-fno-validate-pch"] if pch else []),
+                         options=_KEEP_GOING)
+        more = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))
+                and (m.group(1).split("/", 1)[0] in API or INTERFACE_INCLUDE.match(m.group(1)))
+                and m.group(1) not in wanted]
+        if not more:  # else: included by an installed header, found only while parsing
+            break
+        wanted += more
+    return tu, used
+
+
+@dataclass
+class _Scan:
+    """A file's includes, followed through the workspace's headers: those not found, the ROS 1
+    headers of packages ROS 2 also has, and whether it is ROS 2 code."""
+
+    missing: list[str]
+    dual: list[str]
+    spellings: set[str]
+    ros2: bool
+
+
+def _scan(source: Path, env: CppEnvironment) -> _Scan:
+    folders = env.folders(source)
+    queue, seen, texts = [source], {source}, []
+    missing: list[str] = []
+    dual: list[str] = []
+    while queue and len(seen) < 400:
+        path = queue.pop(0)
+        text = path.read_text(errors="replace")
+        texts.append(text)
+        for name in _INCLUDE.findall(text):
+            found = env.find(name, [path.parent] + folders)
+            if found is None:
+                ros1 = name.split("/", 1)[0] in DUAL and any((f / name).is_file() for f in folders if _ros1_system(f))
+                (dual if ros1 else missing).append(name)
+            elif not str(found).startswith(("/usr/", "/opt/")) and found not in seen:
+                seen.add(found)
+                queue.append(found)
+    return _Scan(list(dict.fromkeys(missing)), list(dict.fromkeys(dual)), spelled_types(texts),
+                 any(is_ros2(t) for t in texts))
+
+
+_STAND_IN_NAME = re.compile(r"\b(?:rclcpp\w*|rmw|rcl|tf2_ros|tf2|image_transport|message_filters|diagnostic_updater|"
+                            r"\w+::(?:msg|srv|action))::|'(?:rclcpp\w*|rmw|tf2_ros|image_transport|message_filters)'|"
+                            r"\bRCLCPP_|\brmw_|\brcl_")
+
+
+def _stand_in_gap(diag: ci.Diagnostic, folders: list[str]) -> bool:
+    """An error caused by what a stand-in header does not declare, not by the code."""
+    if _NOT_FOUND.search(diag.spelling):
+        return False
+    notes = [c.location.file.name for c in diag.children if c.location.file is not None]
+    return any(note.startswith(folder) for note in notes for folder in folders) or \
+        bool(_STAND_IN_NAME.search(diag.spelling))
+
+
+_UNDECLARED = re.compile(r"use of undeclared identifier '(\w+)'")
+
+
+def _cascade(diag: ci.Diagnostic, gaps: list[ci.Diagnostic], source: Path) -> bool:
+    """An identifier that is undeclared because its declaration was a stand-in gap."""
+    match = _UNDECLARED.search(diag.spelling)
+    if match is None:
+        return False
+    lines = source.read_text(errors="replace").splitlines()
+    return any(0 < g.location.line <= len(lines) and re.search(rf"\b{match.group(1)}\b", lines[g.location.line - 1])
+               for g in gaps)
+
+
+def _ros1_system(folder: Path) -> bool:
+    """Debian's ROS 1 headers (/usr/include and its nested package folders)."""
+    return str(folder) == "/usr/include" or str(folder.parent) == "/usr/include"
+
+
+@lru_cache(maxsize=1)
+def _stand_in_stamp() -> str:
+    """The content of the library stand-ins, so that cached results do not outlive a change."""
+    return key(*[p.read_bytes() for p in sorted(API_DIR.rglob("*.hpp"))])
 
 
 _KEPT_FLAGS = ("-I", "-D", "-U", "-isystem", "-std=", "-include")
@@ -161,19 +302,14 @@ def _compile_commands(roots: list[Path]) -> dict[str, list[str]]:
 
 @lru_cache(maxsize=1)
 def _nested_include_roots() -> list[str]:
-    """Debian puts some ROS headers one level down (/usr/include/pluginlib/pluginlib/...); their
-    pkg-config files add /usr/include/<name>, and so does archlog."""
-    return sorted(str(d) for d in Path("/usr/include").glob("*") if (d / d.name).is_dir())
+    """Debian puts some ROS headers one level down (/usr/include/pluginlib/pluginlib/...), and so
+    does ROS 2 since Humble (/opt/ros/humble/include/rclcpp/rclcpp/...); their build files add
+    <include>/<name>, and so does archlog."""
+    roots = [Path("/usr/include"), *sorted(Path(p) for p in glob.glob("/opt/ros/*/include"))]
+    return sorted(str(d) for root in roots for d in root.glob("*") if (d / d.name).is_dir())
 
 
 _INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
-
-
-def _unresolved_includes(source: Path, env: CppEnvironment) -> list[str]:
-    """The file's own #includes that no include folder (nor the file's folder) has."""
-    folders = [source.parent] + [Path(a[2:]) for a in env.args if a.startswith("-I")]
-    names = _INCLUDE.findall(source.read_text(errors="replace"))
-    return [n for n in names if not any((folder / n).is_file() for folder in folders)]
 
 
 def _load(index: ci.Index, source: Path, args: list[str], without_pch: list[str]) -> ci.TranslationUnit:
@@ -194,8 +330,8 @@ def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
     """A cached result holds while its headers are unchanged and its missing headers still are."""
     if any(_mtime(path) != mtime for path, mtime in result.depends):
         return False
-    folders = [a[2:] for a in env.args if a.startswith("-I")]
-    return not any((Path(folder) / name).is_file() for name in result.missing for folder in folders)
+    folders = env.folders()
+    return not any(env.find(name, folders) for name in result.missing)
 
 
 def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink) -> None:
@@ -203,6 +339,7 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
     if result.default_name is not None and summary.default_name is None:
         summary.default_name, summary.anonymous = result.default_name, result.anonymous
         summary.name_file, summary.name_line = result.name_file, result.name_line
+        summary.namespace = result.namespace
     summary.incomplete = summary.incomplete or result.incomplete
     for diag in result.diagnostics:
         diagnostics.add(diag.file, diag.line, diag.code, diag.message, diag.severity, diag.column)
@@ -225,14 +362,30 @@ def _ros_pch(system: list[str], rdir: str | None) -> Path | None:
     header = next((Path(d) / "ros" / "ros.h" for d in system if (Path(d) / "ros" / "ros.h").is_file()), None)
     if header is None or rdir is None:
         return None
-    args = ["-x", "c++-header", "-std=c++17", "-Wno-everything", "-resource-dir", rdir, *(f"-I{d}" for d in system)]
-    stamp = key(ci.conf.lib.clang_getClangVersion.__name__, json.dumps(args),
-                *_tree_stamp([header.parent]))
-    target = cache_dir() / f"ros-{stamp[:20]}.pch"
+    return _precompiled("ros", "#include <ros/ros.h>\n", [f"-I{d}" for d in system], rdir,
+                        _tree_stamp([header.parent]))
+
+
+@lru_cache(maxsize=1)
+def _rclcpp_pch() -> Path | None:
+    """The rclcpp stand-in precompiled (with the interfaces it declares), built once per machine."""
+    rdir = resource_dir()
+    deps = stand_in_dir(library_interfaces("rclcpp"), set(), Interfaces.index([]), lambda _name: False)
+    if rdir is None or deps is None:
+        return None
+    return _precompiled("rclcpp-stand-in", '#include "archlog_ros2/rclcpp.hpp"\n', [f"-I{deps}", f"-I{API_DIR}"],
+                        rdir, [_stand_in_stamp()])
+
+
+def _precompiled(name: str, prelude_text: str, includes: list[str], rdir: str, stamps: list[str]) -> Path | None:
+    """A PCH of a prelude, kept in the cache under a name keyed by everything it depends on."""
+    args = ["-x", "c++-header", "-std=c++17", "-Wno-everything", "-resource-dir", rdir, *includes]
+    stamp = key(ci.conf.lib.clang_getClangVersion.__name__, json.dumps(args), prelude_text, *stamps)
+    target = cache_dir() / f"{name}-{stamp[:20]}.pch"
     if target.is_file():
         return target
     prelude = target.with_suffix(".hpp")  # clang reads the PCH's source again when loading it
-    prelude.write_text("#include <ros/ros.h>\n")
+    prelude.write_text(prelude_text)
     try:
         tu = ci.Index.create().parse(str(prelude), args=args, options=_KEEP_GOING | ci.TranslationUnit.PARSE_INCOMPLETE)
         if any(d.severity >= ci.Diagnostic.Error for d in tu.diagnostics):

@@ -19,6 +19,7 @@ from archlog.diagnostics import Diagnostic
 from archlog.extract.cpp_ast import (K, SKIP, assignments, camera_info, default_constructed, is_rvalue, period,
                                      qualified, ros_type, template_arg_type, type_from_spelling, unquote,
                                      written_args)
+from archlog.extract.rclcpp_walk import RclcppWalker
 from archlog.extract.summary import Port
 from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
 
@@ -75,6 +76,7 @@ class FileResult:
     anonymous: bool = False
     name_file: str = ""
     name_line: int = 0
+    namespace: Value = ""
     incomplete: str | None = None
     diagnostics: list[Diagnostic] = field(default_factory=list)
     fallback_lines: list[int] = field(default_factory=list)
@@ -82,18 +84,20 @@ class FileResult:
     missing: list[str] = field(default_factory=list)
 
 
-def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool, cls: str | None = None) -> FileResult:
-    """Read one parsed file; with `cls`, only that class's methods (and free functions) count."""
-    walker = _Walker(source, shown, cls)
+def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool, cls: str | None = None,
+         ros2: bool = False) -> FileResult:
+    """Read one parsed file; with `cls`, only that class's methods (and free functions) count.
+    `ros2`: the file is ROS 2 code (rclcpp_walk.py reads its API)."""
+    walker = _Walker(source, shown, cls, ros2)
     walker.walk(tu.cursor)
     if incomplete_ast:
         walker.token_fallback(tu)
     return walker.result
 
 
-class _Walker:
-    def __init__(self, source: Path, shown: str, cls: str | None = None) -> None:
-        self.source, self.file, self.cls = str(source), shown, cls
+class _Walker(RclcppWalker):
+    def __init__(self, source: Path, shown: str, cls: str | None = None, ros2: bool = False) -> None:
+        self.source, self.file, self.cls, self.ros2 = str(source), shown, cls, ros2
         self.result = FileResult()
         self.handles: dict[tuple, Value] = {}
         self.param_vars: dict[tuple, Value] = {}
@@ -129,6 +133,8 @@ class _Walker:
         for cursor in cursors:
             if cursor.kind == K.CONSTRUCTOR:
                 self.member_inits(cursor)
+        if self.ros2:
+            self.prepare_ros2(cursors)
         for cursor in self.relevant(cursors):
             if cursor.kind == K.CALL_EXPR:
                 self.call(cursor)
@@ -278,6 +284,9 @@ class _Walker:
     def call_value(self, expr: ci.Cursor, depth: int) -> Value:
         name, owner = expr.spelling, qualified(expr.referenced.semantic_parent) if expr.referenced else ""
         args = written_args(expr)
+        if self.ros2 and expr.referenced is not None and \
+                (found := self.rclcpp_value(expr, owner, name, args, depth)) is not None:
+            return found
         if name == "operator+" and len(args) == 2:
             return concat(self.value(args[0], depth + 1), self.value(args[1], depth + 1))
         if owner == "ros::names" and name == "append" and len(args) == 2:
@@ -310,6 +319,8 @@ class _Walker:
             return
         name, args = call.spelling, written_args(call)
         owner = qualified(ref.semantic_parent)
+        if self.ros2 and self.rclcpp_call(call, ref, owner, name, args):
+            return
         if ref.kind == K.CONSTRUCTOR and owner in CONSTRUCTED:
             self.constructed(call, owner, args)
         elif owner in ("ros::Rate", "ros::WallRate") and ref.kind == K.CONSTRUCTOR and args:
@@ -417,10 +428,10 @@ class _Walker:
         return template_arg or self.unknown(call, "message type not resolved")
 
     def add(self, kind: str, call: ci.Cursor, name: Value, type_: Value, handle: Value,
-            default: Value | None = None, queue: Value | None = None) -> None:
+            default: Value | None = None, queue: Value | None = None, qos: tuple[tuple[str, str], ...] = ()) -> None:
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
-                self.add(kind, call, option, type_, handle, default, queue)
+                self.add(kind, call, option, type_, handle, default, queue, qos)
             return
         loc = call.location
         if isinstance(name, str) and name.startswith("~") and call.referenced is not None and \
@@ -429,14 +440,17 @@ class _Walker:
                 self.file, loc.line, "cpp-private-name",
                 f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
                 "(the node dies at start-up); use a NodeHandle(\"~\") instead", "error", loc.column))
-        self.result.ports.append(Port(kind, name, type_, self.file, loc.line, loc.column, handle, default,
-                                      queue=queue))
+        self.result.ports.append(Port(kind, name, type_, self.file, loc.line, loc.column, handle, default, qos,
+                                      queue))
 
     # -- when the AST is incomplete -------------------------------------------------------------
     def token_fallback(self, tu: ci.TranslationUnit) -> None:
         """Read NodeHandle calls from the text of lines where the AST produced no port."""
         covered = {p.line for p in self.result.ports}
         text = Path(self.source).read_text(errors="replace")
+        if self.ros2:
+            self.ros2_fallback(text, covered)
+            return
         handles = {m.group(1): unquote(m.group(2)) if m.group(2) else ""
                    for m in re.finditer(r"NodeHandle\s+(\w+)\s*(?:\(\s*(\"[^\"]*\")\s*\))?", text)}
         objects = {m.group(1) for m in _FALLBACK.finditer(text)}

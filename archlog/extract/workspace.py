@@ -17,13 +17,17 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cmake import commands
 
 SKIP_DIRS = {"build", "devel", "install", "log", "node_modules", "__pycache__"}
+_REGISTER_NODE = re.compile(r"^\s*RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)", re.M)
+_LIBRARY_WORDS = {"SHARED", "STATIC", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL", "WIN32", "MACOSX_BUNDLE",
+                  "NO_TARGET_LINK_LIBRARIES", "PRIVATE", "PUBLIC", "INTERFACE"}
 SOURCE_SUFFIXES = {".cpp", ".cc", ".cxx", ".c++", ".C"}
 _SHEBANG = re.compile(rb"^#!.*python")
 
 
 @dataclass
 class Executable:
-    """A node executable, or a nodelet plugin (then `cls` names its C++ class)."""
+    """A node executable, a nodelet plugin or a ROS 2 component (then `cls` names its C++ class,
+    and only that class is the node; a component's name is the class, as launch files name it)."""
 
     package: str
     name: str
@@ -59,7 +63,7 @@ class Workspace:
         self.diagnostics = diagnostics
         self.packages: dict[str, Package] = {}
         for root in self.roots:
-            for manifest in _manifests(root):
+            for manifest in manifests(root):
                 self._index(manifest)
 
     def display(self, path: Path | str) -> str:
@@ -110,6 +114,7 @@ class Workspace:
         self._entry_points(package)
         self._script_executables(package)
         self._nodelets(package)
+        self._components(package)
 
     def _cmake_executables(self, package: Package) -> None:
         self._cmake_dir(package, package.path, {"CMAKE_CURRENT_SOURCE_DIR": str(package.path)}, depth=0)
@@ -127,15 +132,22 @@ class Workspace:
             if c.name == "set_target_properties" and "OUTPUT_NAME" in c.args[:-1]
         }
         for c in cmds:
-            if c.name in ("add_executable", "cuda_add_executable") and c.args and \
+            if c.name in ("add_executable", "cuda_add_executable", "ament_auto_add_executable") and c.args and \
                     "IMPORTED" not in c.args and "ALIAS" not in c.args:
                 target = c.args[0]
-                sources = [_under(folder, s) for s in c.args[1:] if Path(s).suffix in SOURCE_SUFFIXES | {".cu"}]
                 name = output_names.get(target, target)
-                package.executables[name] = Executable(package.name, name, "cpp", sources, c.line)
-            elif c.name in ("add_library", "cuda_add_library") and c.args:
-                package.libraries[c.args[0]] = [_under(folder, a) for a in c.args[1:]
-                                                if Path(a).suffix in SOURCE_SUFFIXES | {".cu"}]
+                package.executables[name] = Executable(package.name, name, "cpp", _sources(folder, c.args), c.line)
+            elif c.name in ("add_library", "cuda_add_library", "ament_auto_add_library") and c.args:
+                package.libraries[c.args[0]] = _sources(folder, c.args)
+            elif c.name == "target_sources" and c.args:
+                extra = _sources(folder, c.args)
+                if c.args[0] in package.libraries:
+                    package.libraries[c.args[0]] += extra
+                exe = package.executables.get(output_names.get(c.args[0], c.args[0]))
+                if exe is not None and exe.cls is None:
+                    exe.sources += extra
+            elif c.name in ("rclcpp_components_register_node", "rclcpp_components_register_nodes") and c.args:
+                self._registered_components(package, c.name, c.args, c.line)
             elif c.name == "include_directories":
                 package.include_dirs += [_under(folder, a) for a in c.args if a not in ("SYSTEM", "BEFORE", "AFTER")
                                          and "$" not in a]
@@ -171,6 +183,38 @@ class Workspace:
                     package.executables[plugin] = Executable(package.name, plugin, "cpp", sources,
                                                              cls.sourceline or 0, type_)
 
+    def _registered_components(self, package: Package, command: str, args: tuple[str, ...], line: int) -> None:
+        """rclcpp_components_register_node(lib PLUGIN ns::Class [EXECUTABLE exe]) and
+        rclcpp_components_register_nodes(lib ns::A ns::B)."""
+        sources = package.libraries.get(args[0], [])
+        if command.endswith("_node"):
+            plugin = args[args.index("PLUGIN") + 1] if "PLUGIN" in args[:-1] else None
+            classes = [plugin] if plugin else []
+            executable = args[args.index("EXECUTABLE") + 1] if "EXECUTABLE" in args[:-1] else None
+        else:
+            classes = [a for a in args[1:] if "::" in a]
+            executable = None
+        for cls in classes:
+            package.executables[cls] = Executable(package.name, cls, "cpp", list(sources), line, cls)
+        if executable and classes:
+            package.executables[executable] = Executable(package.name, executable, "cpp", list(sources), line,
+                                                         classes[0])
+
+    def _components(self, package: Package) -> None:
+        """Components registered in the sources (RCLCPP_COMPONENTS_REGISTER_NODE) but not in
+        CMakeLists.txt: the library compiling the file, else the file alone."""
+        for path in _source_files(package.path):
+            text = path.read_text(errors="replace")
+            if "RCLCPP_COMPONENTS_REGISTER_NODE" not in text:
+                continue
+            for match in _REGISTER_NODE.finditer(text):
+                cls = match.group(1).lstrip(":")
+                if cls in package.executables:
+                    continue
+                sources = next((s for s in package.libraries.values() if path in s), [path])
+                package.executables[cls] = Executable(package.name, cls, "cpp", list(sources),
+                                                      text.count("\n", 0, match.start()) + 1, cls)
+
     def _entry_points(self, package: Package) -> None:
         """console_scripts of setup.py / setup.cfg (catkin and ament_python packages)."""
         for spec in _console_scripts(package.path, self.diagnostics, self.display):
@@ -195,7 +239,8 @@ class Workspace:
                     package.executables[path.name] = Executable(package.name, path.name, "python", [path])
 
 
-def _manifests(root: Path) -> list[Path]:
+def manifests(root: Path) -> list[Path]:
+    """Every package.xml under a root (not below a package, nor in build folders or ignored trees)."""
     if (root / "package.xml").is_file():
         return [root / "package.xml"]
     found: list[Path] = []
@@ -207,6 +252,28 @@ def _manifests(root: Path) -> list[Path]:
         if "package.xml" in filenames:
             found.append(Path(dirpath) / "package.xml")
             dirnames[:] = []
+    return found
+
+
+def _sources(folder: Path, args: tuple[str, ...]) -> list[Path]:
+    """The C++ sources of add_executable / add_library / ament_auto_add_* / target_sources
+    (ament_auto's DIRECTORY d: every source under d)."""
+    found: list[Path] = []
+    words = list(args[1:])
+    for index, word in enumerate(words):
+        if word == "DIRECTORY" and index + 1 < len(words):
+            found += _source_files(_under(folder, words[index + 1]))
+        elif word not in _LIBRARY_WORDS and Path(word).suffix in SOURCE_SUFFIXES | {".cu"}:
+            found.append(_under(folder, word))
+    return found
+
+
+def _source_files(folder: Path) -> list[Path]:
+    """C++ sources under a folder, outside build trees."""
+    found = []
+    for dirpath, dirnames, filenames in os.walk(folder):
+        dirnames[:] = sorted(d for d in dirnames if not d.startswith(".") and d not in SKIP_DIRS)
+        found += [Path(dirpath) / f for f in sorted(filenames) if Path(f).suffix in SOURCE_SUFFIXES]
     return found
 
 
