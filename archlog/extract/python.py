@@ -12,11 +12,13 @@ from __future__ import annotations
 import ast
 import re
 from dataclasses import dataclass, field
+from fractions import Fraction
 from pathlib import Path
 
 import parso
 
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.qos import DURATIONS, Qos, number, preset_name, seconds_text
 from archlog.extract.summary import NodeSummary, Port
 from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
 
@@ -49,19 +51,9 @@ _TF = {
 }
 _PARAM_READS = {"rospy.get_param": True, "rospy.search_param": False, "rospy.has_param": False}
 _PARAM_WRITES = {"rospy.set_param", "rospy.delete_param"}
-_QOS_PRESETS = {
-    "qos_profile_sensor_data": (("reliability", "best_effort"), ("durability", "volatile"), ("history", "keep_last"),
-                                ("depth", "5")),
-    "qos_profile_system_default": (("reliability", "reliable"), ("durability", "volatile")),
-    "qos_profile_services_default": (("reliability", "reliable"), ("durability", "volatile")),
-    "qos_profile_parameters": (("reliability", "reliable"), ("durability", "volatile"), ("depth", "1000")),
-    "qos_profile_parameter_events": (("reliability", "reliable"), ("durability", "volatile"), ("depth", "1000")),
-}
-_QOS_DEFAULTS = (("reliability", "reliable"), ("durability", "volatile"))
-_QOS_KEYWORDS = {"history", "depth", "reliability", "durability", "deadline", "lifespan", "liveliness",
-                 "liveliness_lease_duration"}
 _TF_MESSAGE = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage"}
-_RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "create_timer"}
+_RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "get_parameter", "get_parameter_or",
+               "create_timer"}
 _PARAMETER_VALUES = {"value", "string_value", "integer_value", "double_value", "bool_value"}
 _KIND = {ast.AugAssign: "augmented assignment", ast.For: "loop variable", ast.With: "with target"}
 
@@ -143,10 +135,10 @@ def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]
             bad = sorted({e.start_pos[0] for e in grammar.iter_errors(grammar.parse("\n".join(lines)))}
                          | {exc.lineno or 1})
         progress = False
-        for number in bad:
-            if not 1 <= number <= len(lines):
+        for line_number in bad:
+            if not 1 <= line_number <= len(lines):
                 continue
-            text = lines[number - 1]
+            text = lines[line_number - 1]
             fixed = text
             for pattern, replacement in _REPAIRS:
                 fixed = pattern.sub(replacement, fixed)
@@ -155,11 +147,11 @@ def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]
                 fixed = indent + ("if True:" if text.rstrip().endswith(":") else "pass")
                 if fixed == text:
                     continue
-                dropped.append(number)
-            lines[number - 1] = fixed
+                dropped.append(line_number)
+            lines[line_number - 1] = fixed
             progress = True
-            if number not in repaired:
-                repaired.append(number)
+            if line_number not in repaired:
+                repaired.append(line_number)
         if not progress:
             break
     return None, repaired, dropped
@@ -404,14 +396,15 @@ class _Extractor:
         if isinstance(expr.func, ast.Attribute) and expr.func.attr == "get_parameter_value" and \
                 isinstance(expr.func.value, ast.Call):
             return self.call_value(expr.func.value, depth + 1, scope)
-        if isinstance(expr.func, ast.Attribute) and expr.func.attr in ("declare_parameter", "get_parameter") \
-                and expr.args:
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr in ("declare_parameter", "get_parameter",
+                                                                      "get_parameter_or") and expr.args:
             name = self.value(expr.args[0], depth + 1, scope)
-            default = _arg(expr, 1, "value")
+            default = _arg(expr, 1, "value" if expr.func.attr == "declare_parameter" else "alternative_value")
             if isinstance(name, str):
-                default = default if default is not None else self.declared.get(name)
+                default = default if default is not None and expr.func.attr != "get_parameter" else \
+                    self.declared.get(name)
                 return ParamRef(name, self.value(default, depth + 1, scope) if default is not None
-                                else self.unknown(expr, "parameter without default"), "", self.file, expr.lineno)
+                                else self.unknown(expr, "parameter without default"), "~", self.file, expr.lineno)
         return self.unknown(expr)
 
     def format_value(self, expr: ast.Call, depth: int, scope: _Function | None) -> Value:
@@ -422,8 +415,8 @@ class _Extractor:
             parts.append(template[position:match.start()])
             key = match.group(1)
             if key.isdigit() or not key:
-                number = int(key) if key else index
-                item = expr.args[number] if number < len(expr.args) else None
+                slot = int(key) if key else index
+                item = expr.args[slot] if slot < len(expr.args) else None
             else:
                 item = next((kw.value for kw in expr.keywords if kw.arg == key), None)
             parts.append(self.value(item, depth + 1, scope) if item is not None else self.unknown(expr))
@@ -503,10 +496,13 @@ class _Extractor:
                 if kind in ("publisher", "subscriber") else ()
             self.add(kind, call, self.value(_arg(call, name_at, name_kw)),
                      self.message_type(_arg(call, type_at, type_kw), True), qos=qos)
-        elif method == "declare_parameter" and call.args:
-            default = _arg(call, 1, "value")
-            self.add("param_read", call, self.value(call.args[0]), "",
-                     self.value(default) if default is not None else None)
+        elif method in ("declare_parameter", "get_parameter", "get_parameter_or") and call.args:
+            name = self.value(call.args[0])
+            default = _arg(call, 1, "value") if method == "declare_parameter" else \
+                _arg(call, 1, "alternative_value") if method == "get_parameter_or" else None
+            if default is None and isinstance(name, str):
+                default = self.declared.get(name)
+            self.add("param_read", call, name, "", self.value(default) if default is not None else None, handle="~")
         elif method == "declare_parameters":
             prefix = self.value(_arg(call, 0, "namespace"))
             params = _arg(call, 1, "parameters")
@@ -514,34 +510,105 @@ class _Extractor:
                 pair = item.elts if isinstance(item, ast.Tuple) else [item]
                 name = self.value(pair[0])
                 full = concat(prefix, ".", name) if prefix else name
-                self.add("param_read", call, full, "", self.value(pair[1]) if len(pair) > 1 else None)
+                self.add("param_read", call, full, "", self.value(pair[1]) if len(pair) > 1 else None, handle="~")
         elif method == "create_timer":
             self.add("timer", call, self.value(_arg(call, 0, "timer_period_sec")), "")
 
     def qos(self, expr: ast.expr | None) -> tuple[tuple[str, str], ...]:
-        """QoS policies from a depth, a preset, or a QoSProfile(...) call."""
-        if expr is None:
-            return ()
-        if isinstance(expr, ast.Constant) and isinstance(expr.value, int):
-            return (("history", "keep_last"), ("depth", str(expr.value)), *_QOS_DEFAULTS)
+        """QoS policies from a depth, a preset, a QoSProfile(...) call, or a variable holding one
+        (with the attributes set on it before the call)."""
+        return self.qos_value(expr, 0, self.scope, expr.lineno).facts() if expr is not None else ()
+
+    def qos_value(self, expr: ast.expr, depth: int, scope: _Function | None, line: int) -> Qos:
+        text = ast.unparse(expr)
+        if depth > 8:
+            return Qos.unknown(text)
         name = self.qualified(expr)
-        if name and name.rsplit(".", 1)[-1] in _QOS_PRESETS:
-            return (("profile", name.rsplit(".", 1)[-1]), *_QOS_PRESETS[name.rsplit(".", 1)[-1]])
-        if isinstance(expr, ast.Name) and self.scope is not None and expr.id in self.scope.assigns:
-            return self.qos(self.scope.assigns[expr.id][-1])
-        if isinstance(expr, ast.Name) and expr.id in self.module_assigns:
-            return self.qos(self.module_assigns[expr.id][-1])
-        if isinstance(expr, ast.Call) and (self.qualified(expr.func) or "").endswith("QoSProfile"):
-            found = []
-            for kw in expr.keywords:
-                if kw.arg in _QOS_KEYWORDS:
-                    text = ast.unparse(kw.value).rsplit(".", 1)[-1].lower()
-                    text = text.removeprefix("reliability_").removeprefix("durability_").removeprefix("history_")
-                    found.append((kw.arg, text))
-            given = {policy for policy, _v in found}
-            implied = [("history", "keep_last")] if "depth" in given and "history" not in given else []
-            return tuple(found + implied + [d for d in _QOS_DEFAULTS if d[0] not in given])
-        return (("profile", f"?({ast.unparse(expr)})"),)
+        if name and (preset := preset_name(name)) and not (isinstance(expr, ast.Name) and self.assigned(expr, scope)):
+            return Qos.preset(preset)
+        if isinstance(expr, ast.Call):
+            func = self.qualified(expr.func) or ""
+            if func.endswith("QoSProfile"):
+                return self.qos_profile(expr, scope)
+            if func in ("copy.copy", "copy.deepcopy") and expr.args:
+                return self.qos_value(expr.args[0], depth + 1, scope, line)
+            if func.endswith("QoSPresetProfiles.get_from_short_key") and expr.args and \
+                    isinstance(expr.args[0], ast.Constant) and (preset := preset_name(
+                        f"QoSPresetProfiles.{str(expr.args[0].value).upper()}")):
+                return Qos.preset(preset)
+        if isinstance(expr, ast.Name) and (assigned := self.assigned(expr, scope)):
+            qos = self.qos_value(assigned[-1], depth + 1, scope if assigned is not self.module_assigns.get(expr.id)
+                                 else None, line).copy()
+            for target, value in self.attribute_sets(expr.id, scope, line):
+                self.qos_set(qos, target, value, scope)
+            return qos
+        if _is_self_attr(expr) and scope is not None and scope.cls and \
+                (values := self.class_attrs.get(scope.cls, {}).get(expr.attr)):
+            last = values[-1]
+            return self.qos_value(last, depth + 1, self.attr_scope.get(id(last), scope), line) \
+                if isinstance(last, ast.expr) else Qos.unknown(text)
+        value = self.value(expr, scope=scope)
+        if isinstance(value, str) and number(value) is not None:
+            qos = Qos.preset("default")
+            qos.initialise("keep_last", value, text)
+            return qos
+        return Qos.unknown(text)
+
+    def assigned(self, expr: ast.Name, scope: _Function | None) -> list[ast.expr]:
+        """The values assigned to a name, in its function or else at module level."""
+        found = scope.assigns.get(expr.id) if scope is not None else None
+        found = found if found else self.module_assigns.get(expr.id, [])
+        return [e for e in found if isinstance(e, ast.expr)]
+
+    def attribute_sets(self, variable: str, scope: _Function | None, line: int) -> list[tuple[str, ast.expr]]:
+        """`variable.policy = value` statements before `line`, in the function (or module)."""
+        body = scope.node.body if scope is not None else self.tree.body
+        return [(target.attr, node.value) for node in _in_scope(body) if isinstance(node, ast.Assign)
+                and node.lineno < line for target in node.targets if isinstance(target, ast.Attribute)
+                and isinstance(target.value, ast.Name) and target.value.id == variable]
+
+    def qos_profile(self, call: ast.Call, scope: _Function | None) -> Qos:
+        """QoSProfile(history=..., depth=..., reliability=..., ...): rmw's default profile for
+        what is not given; a depth without a history means keep_last."""
+        qos = Qos.preset("default")
+        given = {kw.arg for kw in call.keywords}
+        if "depth" in given and "history" not in given:
+            qos.set("history", "keep_last", ast.unparse(call))
+        for kw in call.keywords:
+            if kw.arg is not None:
+                self.qos_set(qos, kw.arg, kw.value, scope)
+        return qos
+
+    def qos_set(self, qos: Qos, policy: str, value: ast.expr, scope: _Function | None) -> None:
+        """One policy from a QoSProfile keyword or an attribute assignment."""
+        text = ast.unparse(value)
+        if policy in DURATIONS:
+            seconds = self.seconds(value, scope)
+            qos.apply(policy, seconds_text(seconds) if seconds is not None else None, text)
+        elif policy == "depth":
+            depth = self.value(value, scope=scope)
+            qos.apply("depth", depth if isinstance(depth, str) and number(depth) is not None else None, text)
+        else:
+            qos.apply(policy, self.qualified(value) or text, text)
+
+    def seconds(self, expr: ast.expr, scope: _Function | None) -> Fraction | None:
+        """Seconds of rclpy's Duration(seconds=..., nanoseconds=...) (also builtin_interfaces'
+        Duration(sec=..., nanosec=...)); None when not known."""
+        if not (isinstance(expr, ast.Call) and (self.qualified(expr.func) or "").endswith("Duration")):
+            if isinstance(expr, ast.Name) and (assigned := self.assigned(expr, scope)):
+                return self.seconds(assigned[-1], scope)
+            return None
+        total = Fraction(0)
+        for index, (keyword, alias, scale) in enumerate((("seconds", "sec", 1), ("nanoseconds", "nanosec", 10 ** 9))):
+            part = _arg(expr, index, keyword) or next((kw.value for kw in expr.keywords if kw.arg == alias), None)
+            if part is None:
+                continue
+            value = self.value(part, scope=scope)
+            amount = number(value) if isinstance(value, str) else None
+            if amount is None:
+                return None
+            total += amount / scale
+        return total
 
     def queue(self, call: ast.Call, func: str) -> Value | None:
         """A rospy queue_size: a number, 'unbounded' (None; a Subscriber's default), or 'unset'."""
@@ -577,13 +644,14 @@ class _Extractor:
         self.summary.name_file, self.summary.name_line = self.file, call.lineno
 
     def add(self, kind: str, call: ast.Call, name: Value, type_: Value, default: Value | None = None,
-            qos: tuple[tuple[str, str], ...] = (), queue: Value | None = None) -> None:
+            qos: tuple[tuple[str, str], ...] = (), queue: Value | None = None, handle: str = "") -> None:
+        """One port; `handle` "~" for ROS 2 parameters (node-private)."""
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
-                self.add(kind, call, option, type_, default, qos, queue)
+                self.add(kind, call, option, type_, default, qos, queue, handle)
             return
-        self.summary.ports.append(Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, "", default, qos,
-                                       queue))
+        self.summary.ports.append(Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, handle, default,
+                                       qos, queue))
 
 
 def _arg(call: ast.Call, index: int, keyword: str) -> ast.expr | None:

@@ -13,7 +13,8 @@ def plain(value: Value | None) -> object:
     if isinstance(value, Unknown):
         return {"unknown": value.expr, "line": value.line}
     if isinstance(value, ParamRef):
-        return {"param": value.name, "default": plain(value.default)}
+        handle = {"handle": plain(value.handle_ns)} if value.handle_ns else {}
+        return {"param": value.name, **handle, "default": plain(value.default)}
     if isinstance(value, Concat):
         return {"concat": [plain(p) for p in value.parts]}
     if isinstance(value, Alternatives):
