@@ -12,6 +12,7 @@ be read: a parse error, no generate_launch_description). Times are wall clock pe
 from __future__ import annotations
 
 import argparse
+import re
 import collections
 import sys
 import time
@@ -40,7 +41,7 @@ def dialect(path: Path) -> str | None:
     except OSError:
         return None
     if path.suffix == ".py":
-        return "python" if "def generate_launch_description" in content else None
+        return "python" if re.search(r"^def generate_launch_description", content, re.M) else None
     if path.suffix in (".yaml", ".yml"):
         try:
             data = yaml.safe_load(content)

@@ -410,7 +410,11 @@ class Ros2Launch:
             self.diag(action.where, "launch-unknown", f"{action.reason}: not interpreted; the nodes it may start "
                       "are not part of this configuration")
             return
-        self.run(action.run(ctx), ctx)
+        try:
+            actions = action.run(ctx)
+        except RecursionError:
+            raise LaunchError("the OpaqueFunction is too deeply nested to read statically") from None
+        self.run(actions, ctx)
 
     # -- nodes --------------------------------------------------------------------------
     def _node(self, action: Node, ctx: Context) -> None:
@@ -539,7 +543,8 @@ class Ros2Launch:
         return found
 
     def _value(self, value: object, ctx: Context, elem: Element) -> object:
-        """A parameter value as the node receives it; Unknown where it depends on the run."""
+        """A parameter value as the node receives it; Unknown where it depends on the run, or
+        where launch would reject it (then with an error)."""
         try:
             if isinstance(value, ParamText):
                 return _typed(perform(value.parts, ctx), value.kind)
@@ -547,6 +552,9 @@ class Ros2Launch:
                 return [self._value(v, ctx, elem) for v in value]
             return value
         except Unresolved as exc:
+            return Unknown(str(exc), elem.file, elem.line)
+        except SubstitutionError as exc:
+            self.diagnostics.add(elem.file, elem.line, "launch-subst", f"parameter value: {exc}", "error")
             return Unknown(str(exc), elem.file, elem.line)
 
     def _param_file(self, source: ParamFile, where: Where, ctx: Context) -> list[tuple[str, str, object, Element]]:
@@ -730,10 +738,17 @@ def _rewrite(entries: list[tuple[str, str, object, Element]], rewritten: Rewritt
     """nav2_common's RewrittenYaml over loaded entries: leaf parameters renamed by `params`,
     values equal to a key of `values` replaced, every node key put under `root_key`."""
     def resolved(parts: Parts, elem: Element) -> object:
+        """A rewritten value converted as RewrittenYaml converts it."""
         try:
-            return yaml_value(perform(parts, ctx))
+            value = perform(parts, ctx)
         except Unresolved as exc:
             return Unknown(str(exc), elem.file, elem.line)
+        if rewritten.convert_types:
+            try:
+                return float(value) if "." in value else int(value)
+            except ValueError:
+                pass
+        return {"true": True, "false": False}.get(value.lower(), value)
 
     root = perform(rewritten.root_key, ctx) if rewritten.root_key is not None else ""
     params, values = dict(rewritten.params), dict(rewritten.values)

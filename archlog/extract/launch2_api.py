@@ -493,7 +493,8 @@ def _rewritten(c: CallSite) -> object:
         return tuple((str(k), to_parts(v, c.line)) for k, v in value.items()) if isinstance(value, dict) else ()
 
     return S((Rewritten(to_parts(c.arg(0, "source_file"), c.line), optional_parts(c.kwargs.get("root_key"), c.line),
-                        pairs(c.arg(1, "param_rewrites")), pairs(c.kwargs.get("value_rewrites"))),))
+                        pairs(c.arg(1, "param_rewrites")), pairs(c.kwargs.get("value_rewrites")),
+                        c.kwargs.get("convert_types") is True),))
 
 
 def _condition(kind: str) -> Callable[[CallSite], object]:

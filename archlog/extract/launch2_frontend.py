@@ -85,7 +85,7 @@ def describe_xml(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
         launcher.diagnostics.add(shown, root.sourceline or 1, "launch-xml", f"root element is <{root.tag}>, not <launch>",
                                  "error")
         return None
-    return _Reader(path, launcher).actions(_xml_entity(root).children or [])
+    return _Reader(path, launcher, typed=False).actions(_xml_entity(root).children or [])
 
 
 def _xml_entity(el: etree._Element) -> Entity:
@@ -140,16 +140,17 @@ def describe_yaml(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
         launcher.diagnostics.add(shown, 1, "launch-yaml", "not a ROS 2 YAML launch file: the root must be the one key "
                                  "'launch'", "error")
         return None
-    reader = _Reader(path, launcher)
+    reader = _Reader(path, launcher, typed=True)
     return reader.actions(reader.yaml_children(data["launch"], "launch", getattr(data, "line", 1)))
 
 
 class _Reader:
     """Reads the entities of one file into actions, reporting what launch would reject."""
 
-    def __init__(self, path: Path, launcher: "Ros2Launch") -> None:
+    def __init__(self, path: Path, launcher: "Ros2Launch", typed: bool) -> None:
         self.path = path
         self.launcher = launcher
+        self.typed = typed  # YAML values keep their type; XML text is read with YAML rules
 
     def where(self, line: int) -> Where:
         return Where(self.path, line)
@@ -379,12 +380,14 @@ class _Reader:
             return [self.param_value(v, kind[8:] if kind and kind.startswith("list_of_") else kind) for v in value]
         if not isinstance(value, str):
             return value
+        if kind is None and not self.typed:
+            loaded = yaml_value(value)
+            if not isinstance(loaded, (str, dict)):
+                return loaded
+            value = loaded if isinstance(loaded, str) else value
         parts = parse(value)
-        if len(parts) == 1 and isinstance(parts[0], Text):
-            if kind is None:
-                loaded = yaml_value(parts[0].text)
-                return loaded if not isinstance(loaded, dict) else parts[0].text
-            return ParamText(parts, kind)
+        if len(parts) == 1 and isinstance(parts[0], Text) and kind in (None, "str"):
+            return parts[0].text
         return ParamText(parts, kind)
 
 

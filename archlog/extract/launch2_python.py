@@ -48,7 +48,7 @@ def describe(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
         return None
     try:
         tree = ast.parse(source, str(path))
-    except (SyntaxError, ValueError) as exc:
+    except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
         line = exc.lineno if isinstance(exc, SyntaxError) and exc.lineno else 1
         launcher.diagnostics.add(shown, line, "launch-python", f"Python launch file does not parse: {exc}", "error")
         return None

@@ -48,6 +48,7 @@ class Rewritten:
     root_key: "Parts | None"
     params: tuple[tuple[str, "Parts"], ...]
     values: tuple[tuple[str, "Parts"], ...]
+    convert_types: bool = False
 
 
 Subst = Text | Call | Rewritten
