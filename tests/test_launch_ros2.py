@@ -641,3 +641,41 @@ def test_bad_elements_are_diagnostics_and_the_run_goes_on(tmp_path: Path) -> Non
                            ("main.xml", 6, "launch-invalid"), ("main.xml", 2, "launch-include"),
                            ("main.xml", 3, "launch-subst"), ("main.xml", 7, "launch-invalid"),
                            ("params.yaml", 4, "param-file")]
+
+
+def test_group_forwarding_and_keep(tmp_path: Path) -> None:
+    config, sink = load(tmp_path, {"main.xml": """
+        <launch>
+          <arg name="outer" default="o"/>
+          <group forwarding="false">
+            <keep name="kept" value="$(var outer)_k"/>
+            <node pkg="p" exec="e" name="$(var kept)_$(var outer default)"/>
+          </group>
+          <node pkg="p" exec="e" name="$(var outer)_$(var kept default)"/>
+        </launch>
+        """}, "main.xml")
+    assert [n.name for n in config.nodes] == ["/o_k_default", "/o_default"] and sink.items == []
+
+
+def test_python_that_would_run_away_is_cut_short(tmp_path: Path) -> None:
+    deep = "+".join(["1"] * 5000)
+    config, sink = load(tmp_path, {"deep.launch.py": f"X = {deep}\n", "main.launch.py": python("""
+        def forever():
+            return forever()
+
+        def setup(context, *args):
+            return setup(context)
+
+        def generate_launch_description():
+            nothing = forever()
+            text = 'a' * 10 ** 9
+            numbers = [i for i in range(10 ** 9)]
+            return LaunchDescription([
+                OpaqueFunction(function=setup, args=nothing),
+                Node(package='p', executable='e', name='still_here'),
+                IncludeLaunchDescription(PythonLaunchDescriptionSource(os.path.join(os.path.dirname(__file__),
+                                                                                    'deep.launch.py'))),
+            ])
+        """)}, "main.launch.py")
+    assert [n.name for n in config.nodes] == ["/still_here"]
+    assert codes(sink) == [("main.launch.py", 18, "launch-unknown"), ("deep.launch.py", 1, "launch-python")]

@@ -18,6 +18,7 @@ import shlex
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import Literal
 
 from archlog import names
 from archlog.extract.launch import MAX_INCLUDE_DEPTH, Element, LaunchError, LaunchInterpreter, LaunchNode
@@ -89,7 +90,7 @@ class ParamDict:
 
 @dataclass(frozen=True)
 class ParamFile:
-    path: Parts | Rewritten
+    path: Parts  # a single Rewritten part: nav2's RewrittenYaml
     line: int
     allow_substs: Parts | bool = False
 
@@ -229,6 +230,7 @@ class Ros2Launch:
         self.env: dict[str, str | UnknownArg] = {}  # the environment Python launch files see when read
         self._descriptions: dict[tuple[Path, str], Description | None] = {}
         self._param_files: dict[tuple[Path, str | None], list[tuple[str, str, object, Element]]] = {}
+        self._templates: dict[Path, Parts] = {}  # parameter files read as substitutions
         self._launched: dict[int, str] = {}  # id of a container's Node action -> its full name
 
     # -- entry points -------------------------------------------------------------------
@@ -517,7 +519,8 @@ class Ros2Launch:
 
     def _scope_params(self, ctx: Context) -> list[tuple[str, str, object, Element]]:
         found: list[tuple[str, str, object, Element]] = []
-        for entry in ctx.configs.get("global_params") or []:
+        entries = ctx.configs.get("global_params")
+        for entry in entries if isinstance(entries, list) else []:
             if isinstance(entry, tuple):
                 name, value, elem = entry
                 found.append(("", name, value, elem))
@@ -581,8 +584,12 @@ class Ros2Launch:
         return _rewrite(entries, rewritten, ctx) if rewritten else entries
 
     def _substituted(self, path: Path, where: Where, ctx: Context) -> str | None:
+        """A parameter file's text with its substitutions performed (allow_substs)."""
         try:
-            return perform(parse(path.read_text(encoding="utf-8")), ctx)
+            key = path.resolve()
+            if key not in self._templates:
+                self._templates[key] = parse(path.read_text(encoding="utf-8"))
+            return perform(self._templates[key], ctx)
         except (OSError, UnicodeDecodeError, SubstitutionError) as exc:
             self.diag(where, "param-file", f"substitutions in {path.name} not performed: {exc}")
             return None
@@ -602,7 +609,7 @@ class Ros2Launch:
                 loaded.append((component, state))
         self._components(loaded, manager, ctx)
 
-    def _components(self, loaded: list[tuple[Component, bool | str]], manager: str, ctx: Context) -> None:
+    def _components(self, loaded: list[tuple[Component, Literal[True] | str]], manager: str, ctx: Context) -> None:
         for component, state in loaded:
             here = ctx if state is True else replace(ctx, condition=f"{ctx.condition} and {state}"
                                                      if ctx.condition else str(state))
@@ -636,11 +643,12 @@ def dialect_of(path: Path) -> str:
 
 
 def _label(action: Action) -> str:
-    return {DeclareArgument: "<arg>", SetConfiguration: "<let>", SetEnvironment: "<set_env>", Group: "<group>",
-            Include: "<include>", PushNamespace: "<push-ros-namespace>", SetRemap: "<set_remap>",
-            SetParameter: "<set_parameter>", SetParametersFile: "<set_parameters_from_file>",
-            Node: "<node>", LoadComponents: "<load_composable_node>", Process: "<executable>",
-            Opaque: "OpaqueFunction", Component: "<composable_node>"}.get(type(action), type(action).__name__)
+    """What an action is called in messages (its frontend tag, which names the Python class too)."""
+    return {DeclareArgument: "arg", SetConfiguration: "let", SetEnvironment: "set_env", Group: "group",
+            Include: "include", PushNamespace: "push-ros-namespace", SetRemap: "set_remap",
+            SetParameter: "set_parameter", SetParametersFile: "set_parameters_from_file", Node: "node",
+            LoadComponents: "load_composable_node", Process: "executable", Opaque: "OpaqueFunction",
+            Component: "composable_node"}.get(type(action), type(action).__name__)
 
 
 def _holds(cond: Condition, ctx: Context) -> bool:
@@ -649,7 +657,7 @@ def _holds(cond: Condition, ctx: Context) -> bool:
     if cond.kind == "unless":
         return not truth(cond.expr or (), ctx)
     if cond.kind == "guard":
-        raise Unresolved("a Python condition evaluated when the description is generated")
+        raise Unresolved("a Python test on values not known statically")
     value = ctx.configs.get(cond.name)
     if isinstance(value, UnknownArg):
         raise Unresolved(unknown_reason(cond.name, value))

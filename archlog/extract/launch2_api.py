@@ -406,13 +406,15 @@ def _include(c: CallSite) -> object:
 
 def _opaque_function(c: CallSite) -> object:
     function = c.arg(0, "function")
-    extra_args, extra_kwargs = c.kwargs.get("args") or [], c.kwargs.get("kwargs") or {}
+    extra_args = _listed(c.kwargs.get("args"))
+    given = c.kwargs.get("kwargs")
+    extra_kwargs = {str(k): v for k, v in given.items()} if isinstance(given, dict) else {}
     if isinstance(function, Unread) or isinstance(function, Ref):
         return Opaque(where=c.where(), conditions=c.conditions(), reason=f"OpaqueFunction {_describe(function)}")
     interp, where = c.interp, c.where()
 
     def run(ctx: Context) -> list[Action]:
-        result = interp.call(function, [ContextValue(ctx), *list(extra_args)], dict(extra_kwargs), where.line)
+        result = interp.call(function, [ContextValue(ctx), *extra_args], dict(extra_kwargs), where.line)
         return entities(result, where)
 
     return Opaque(where=where, conditions=c.conditions(), reason="OpaqueFunction", run=run)
@@ -482,10 +484,10 @@ def _path_join(c: CallSite) -> object:
 
 def _eval(c: CallSite) -> object:
     modules = c.arg(1, "python_modules")
-    args = (to_parts(c.arg(0, "expression"), c.line),)
+    args = [to_parts(c.arg(0, "expression"), c.line)]
     if isinstance(modules, (list, tuple)):
-        args += (text(",".join(str(m) for m in modules)),)
-    return S((Call("eval", args),))
+        args.append(text(",".join(str(m) for m in modules)))
+    return S((Call("eval", tuple(args)),))
 
 
 def _rewritten(c: CallSite) -> object:
@@ -658,9 +660,12 @@ def _open(c: CallSite) -> object:
 
 
 def _chain(c: CallSite) -> object:
-    if not all(isinstance(a, (list, tuple)) for a in c.args):
-        return Unread("itertools.chain of values not known statically", c.line)
-    return [item for a in c.args for item in a]
+    items: list[object] = []
+    for arg in c.args:
+        if not isinstance(arg, (list, tuple)):
+            return Unread("itertools.chain of values not known statically", c.line)
+        items.extend(arg)
+    return items
 
 
 def read_text(value: object, line: int) -> str | Unread:
@@ -689,9 +694,10 @@ def _loader(parse: Callable[[str], object]) -> Callable[[CallSite], object]:
 
 
 def _range(c: CallSite) -> object:
-    if not all(isinstance(a, int) for a in c.args) or not 1 <= len(c.args) <= 3:
+    bounds = [a for a in c.args if isinstance(a, int)]
+    if len(bounds) != len(c.args) or not 1 <= len(bounds) <= 3:
         return Unread("range over values not known statically", c.line)
-    numbers = range(*c.args)
+    numbers = range(*bounds)
     return list(numbers) if len(numbers) <= MAX_RANGE else Unread("range too long", c.line)
 
 

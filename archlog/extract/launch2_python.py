@@ -410,7 +410,7 @@ class _Interpreter(Evaluator):
             return [*left, *right] if isinstance(left, list) else (*left, *right)
         if not (_plain(left) and _plain(right)):
             return Unread(f"{ast.unparse(node)} over launch objects", node.lineno)
-        return super().visit_BinOp(ast.BinOp(ast.Constant(left), node.op, ast.Constant(right)))
+        return super().visit_BinOp(ast.BinOp(_constant(left), node.op, _constant(right)))
 
     def visit_Compare(self, node: ast.Compare) -> object:
         values = [self.value(node.left), *(self.value(c) for c in node.comparators)]
@@ -419,7 +419,7 @@ class _Interpreter(Evaluator):
             return unread
         if not all(_plain(v) for v in values):
             return Unread(f"{ast.unparse(node)} compares launch objects", node.lineno)
-        rebuilt = ast.Compare(ast.Constant(values[0]), node.ops, [ast.Constant(v) for v in values[1:]])
+        rebuilt = ast.Compare(_constant(values[0]), node.ops, [_constant(v) for v in values[1:]])
         return super().visit_Compare(rebuilt)
 
     def visit_BoolOp(self, node: ast.BoolOp) -> object:
@@ -438,7 +438,7 @@ class _Interpreter(Evaluator):
             return not operand
         if not _plain(operand):
             return Unread(f"{ast.unparse(node)} of a launch object", node.lineno)
-        return super().visit_UnaryOp(ast.UnaryOp(node.op, ast.Constant(operand)))
+        return super().visit_UnaryOp(ast.UnaryOp(node.op, _constant(operand)))
 
     def visit_IfExp(self, node: ast.IfExp) -> object:
         test = self.value(node.test)
@@ -460,7 +460,7 @@ class _Interpreter(Evaluator):
         if not isinstance(target, (dict, list, tuple, str)):
             return Unread(f"indexing {_why(target)}", node.lineno)
         try:
-            return target[index]  # type: ignore[index]
+            return target[index]  # type: ignore[index, call-overload]
         except (TypeError, KeyError, IndexError) as exc:
             return Unread(f"{ast.unparse(node)}: {exc!r}", node.lineno)
 
@@ -489,9 +489,9 @@ class _Interpreter(Evaluator):
     def visit_DictComp(self, node: ast.DictComp) -> object:
         pairs = self.comprehension(node.generators, lambda: (self.value(node.key), self.value(node.value)),
                                    node.lineno)
-        if isinstance(pairs, Unread):
+        if not isinstance(pairs, list):
             return pairs
-        return {k: v for k, v in pairs if _hashable(k)}  # type: ignore[misc]
+        return {k: v for k, v in pairs if _hashable(k)}
 
     def comprehension(self, generators: list[ast.comprehension], element: object, line: int) -> object:
         results: list[object] = []
@@ -600,6 +600,11 @@ class _Interpreter(Evaluator):
         if isinstance(value, UnknownArg):
             return Unread(f"launch argument '{name}' is not known ({value.reason})", line)
         return value
+
+
+def _constant(value: object) -> ast.Constant:
+    """A computed value wrapped for the evaluator (which reads a Constant's value as it is)."""
+    return ast.Constant(value)  # type: ignore[arg-type]
 
 
 def _plain(value: object) -> bool:

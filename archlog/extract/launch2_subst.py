@@ -89,8 +89,8 @@ class Context:
 # -- the frontend grammar -----------------------------------------------------------------
 def parse(source: str) -> Parts:
     """Parse a frontend attribute (XML or YAML string) into parts, as launch's grammar does."""
-    if not source:
-        return text("")
+    if "$(" not in source and "\\" not in source:
+        return text(source)
     parser = _Parser(source)
     parts = parser.template(None)
     if parser.pos != len(source):
@@ -156,11 +156,11 @@ class _Parser:
         char = self.source[self.pos]
         if quote is None and char in "'\"":
             self.pos += 1
-            parts = self.template(char)
+            quoted = self.template(char)
             if self.pos >= len(self.source):
                 raise self.error(f"unterminated {char}")
             self.pos += 1
-            return parts
+            return quoted
         parts: list[Subst] = []
         buffer: list[str] = []
         stops = " ()" + ("'\"" if quote is None else quote)
