@@ -295,6 +295,8 @@ def test_substitutions(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
             <param name="anon" value="$(anon a) $(anon a) $(anon b)"/>
             <param name="missing_pkg" value="$(find-pkg-share nowhere)"/>
             <param name="command" value="$(command 'xacro robot.urdf.xacro')"/>
+            <param name="content" value="$(file-content '$(find-pkg-share robot_pkg)/dummy.txt')"/>
+            <param name="device" value="$(file-content /dev/zero)"/>
           </node>
         </launch>
         """}, "main.xml")
@@ -307,6 +309,7 @@ def test_substitutions(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     assert first == second != third
     assert isinstance(values["missing_pkg"], Unknown) and "nowhere" in values["missing_pkg"].expr
     assert isinstance(values["command"], Unknown) and values["command"].line == 10
+    assert values["content"] == "x" and isinstance(values["device"], Unknown)
     assert sink.items == []
 
 

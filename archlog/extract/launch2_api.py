@@ -20,7 +20,7 @@ from archlog.extract.launch2 import (PYTHON, XML, YAML, Action, Component, Condi
                                      Include, LoadComponents, Node, Opaque, ParamDict, ParamFile, ParamItem,
                                      ParamSource, ParamText, Process, PushNamespace, Remap, SetConfiguration,
                                      SetEnvironment, SetParameter, SetParametersFile, SetRemap, Where)
-from archlog.extract.launch2_subst import Call, Context, Parts, Rewritten, Text, opaque, perform, text
+from archlog.extract.launch2_subst import Call, Context, Parts, Rewritten, Text, opaque, perform, read_file, text
 from archlog.extract.substitution import SubstitutionError, UnknownArg, Unresolved
 
 MAX_RANGE = 10_000
@@ -676,9 +676,9 @@ def read_text(value: object, line: int) -> str | Unread:
     if path is None:
         return Unread(f"reading {_why(value)}", line)
     try:
-        return Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        return Unread(f"cannot read {path}: {exc}", line)
+        return read_file(path)
+    except Unresolved as exc:
+        return Unread(str(exc), line)
 
 
 def _loader(parse: Callable[[str], object]) -> Callable[[CallSite], object]:
