@@ -682,3 +682,31 @@ def test_python_that_would_run_away_is_cut_short(tmp_path: Path) -> None:
         """)}, "main.launch.py")
     assert [n.name for n in config.nodes] == ["/still_here"]
     assert codes(sink) == [("main.launch.py", 18, "launch-unknown"), ("deep.launch.py", 1, "launch-python")]
+
+
+def test_parameter_files_of_composable_nodes_are_applied_by_launch(tmp_path: Path) -> None:
+    """launch_ros applies a file to a composable node itself: `/**`, then the node's own
+    namespace/name key override it; other wildcards do not apply. A plain node keeps every entry."""
+    config, sink = load(tmp_path, {"p.yaml": """
+        /**:
+          ros__parameters: {rate: 1, shared: 0}
+        /ns:
+          /worker:
+            ros__parameters: {rate: 2}
+        /**/worker:
+          ros__parameters: {ignored: true}
+        """, "main.xml": """
+        <launch>
+          <node_container pkg="rclcpp_components" exec="component_container" name="box" namespace="/">
+            <composable_node pkg="p" plugin="p::Worker" name="worker" namespace="ns">
+              <param from="$(dirname)/p.yaml"/>
+            </composable_node>
+          </node_container>
+          <node pkg="p" exec="worker" name="worker" namespace="ns"><param from="$(dirname)/p.yaml"/></node>
+        </launch>
+        """}, "main.xml")
+    component, node = config.nodes[1], config.nodes[2]
+    assert params(component) == [("", "rate", 1), ("", "shared", 0), ("", "rate", 2)]
+    assert params(node) == [("/**", "rate", 1), ("/**", "shared", 0), ("/ns/worker", "rate", 2),
+                            ("/**/worker", "ignored", True)]
+    assert sink.items == []

@@ -517,7 +517,9 @@ class Ros2Launch:
             found.append((src, dst, self.element(where.file, remap.line)))
         return found
 
-    def _scope_params(self, ctx: Context) -> list[tuple[str, str, object, Element]]:
+    def _scope_params(self, ctx: Context, component: str | None = None) -> list[tuple[str, str, object, Element]]:
+        """set_parameter's values and set_parameters_from_file's entries (for a composable node,
+        `component` is its key, see _for_component)."""
         found: list[tuple[str, str, object, Element]] = []
         entries = ctx.configs.get("global_params")
         for entry in entries if isinstance(entries, list) else []:
@@ -525,15 +527,16 @@ class Ros2Launch:
                 name, value, elem = entry
                 found.append(("", name, value, elem))
             else:
-                found.extend(entry)
+                found.extend(entry if component is None else _for_component(entry, component))
         return found
 
-    def _params(self, sources: tuple[ParamSource, ...], where: Where, ctx: Context
+    def _params(self, sources: tuple[ParamSource, ...], where: Where, ctx: Context, component: str | None = None
                 ) -> list[tuple[str, str, object, Element]]:
         found: list[tuple[str, str, object, Element]] = []
         for source in sources:
             if isinstance(source, ParamFile):
-                found.extend(self._param_file(source, where, ctx))
+                entries = self._param_file(source, where, ctx)
+                found.extend(entries if component is None else _for_component(entries, component))
                 continue
             for item in source.items:
                 elem = self.element(where.file, item.line)
@@ -627,7 +630,8 @@ class Ros2Launch:
         namespace = _node_namespace(component.namespace, ctx)
         full = names.join(namespace or "/", base) if base else ""
         remaps = self._scope_remaps(ctx) + self._remaps(component.remaps, component.where, ctx)
-        params = self._scope_params(ctx) + self._params(component.params, component.where, ctx)
+        key = f"{namespace.strip('/')}/{base}" if namespace and namespace != "/" else base
+        params = self._scope_params(ctx, key) + self._params(component.params, component.where, ctx, key)
         self.config.nodes.append(LaunchNode(elem, pkg, plugin, full, namespace or "", remaps, ctx.condition,
                                             plugin=plugin, manager=manager, declared=full, chain=ctx.chain,
                                             parameters=params))
@@ -739,6 +743,18 @@ def _typed(value: str, kind: str | None) -> object:
         return _COERCE[kind](value)
     except ValueError:
         raise SubstitutionError(f"{value!r} is not a {kind}") from None
+
+
+def _for_component(entries: list[tuple[str, str, object, Element]], key: str
+                   ) -> list[tuple[str, str, object, Element]]:
+    """A parameter file as launch_ros applies it to a composable node before loading it: the
+    `/**` entries, then those under the node's own key (`namespace/name`, no other wildcard),
+    given to the node directly (pattern "")."""
+    def normal(pattern: str) -> str:
+        return "/".join(part for part in pattern.split("/") if part)
+
+    return [("", name, value, elem) for wanted in ("**", key) for pattern, name, value, elem in entries
+            if normal(pattern) == wanted and (wanted == "**" or key)]
 
 
 def _rewrite(entries: list[tuple[str, str, object, Element]], rewritten: Rewritten, ctx: Context
