@@ -87,3 +87,31 @@ def test_cmake_loops_lists_and_skipped_function_bodies(tmp_path: Path) -> None:
     assert sorted(ws.packages["loops"].executables) == ["listener_node", "relay_node", "talker_node", "win_only",
                                                          "worker1", "worker2"]
     assert ws.packages["loops"].executables["relay_node"].sources[0].name == "relay.cpp"
+
+
+def test_ros2_components_ament_executables_and_cmake_functions(tmp_path: Path) -> None:
+    package(tmp_path, "fleet", {
+        "CMakeLists.txt": (
+            "project(fleet)\nfind_package(ament_cmake REQUIRED)\n"
+            "function(fleet_node target)\n  cmake_parse_arguments(ARG \"\" \"FOLDER\" \"EXTRA\" ${ARGN})\n"
+            "  add_executable(${target} src/${ARG_FOLDER}/${target}.cpp ${ARG_EXTRA})\n"
+            "  install(TARGETS ${target} DESTINATION lib/${PROJECT_NAME})\nendfunction()\n"
+            "fleet_node(dispatcher FOLDER tasks EXTRA src/common.cpp)\n"
+            "add_executable(monitor src/monitor.cpp)\ninstall(TARGETS monitor DESTINATION lib/${PROJECT_NAME})\n"
+            "add_library(fleet_components SHARED src/odometer.cpp src/common.cpp)\n"
+            "rclcpp_components_register_node(fleet_components PLUGIN \"fleet::Odometer\" EXECUTABLE odometer)\n"
+            "rclcpp_components_register_nodes(fleet_components \"fleet::Charger\")\n"),
+        "src/tasks/dispatcher.cpp": "", "src/common.cpp": "", "src/monitor.cpp": "", "src/odometer.cpp": "",
+        "src/extra/probe.cpp": "#include <rclcpp_components/register_node_macro.hpp>\n\n"
+                               "RCLCPP_COMPONENTS_REGISTER_NODE(fleet::Probe)\n",
+    })
+    executables = Workspace([tmp_path], DiagnosticSink()).packages["fleet"].executables
+    found = {name: (exe.cls, [s.name for s in exe.sources], exe.line) for name, exe in executables.items()}
+    assert found == {
+        "dispatcher": (None, ["dispatcher.cpp", "common.cpp"], 8),
+        "monitor": (None, ["monitor.cpp"], 9),
+        "fleet::Odometer": ("fleet::Odometer", ["odometer.cpp", "common.cpp"], 12),
+        "odometer": ("fleet::Odometer", ["odometer.cpp", "common.cpp"], 12),
+        "fleet::Charger": ("fleet::Charger", ["odometer.cpp", "common.cpp"], 13),
+        "fleet::Probe": ("fleet::Probe", ["probe.cpp"], 3),
+    }

@@ -239,7 +239,7 @@ class _Walker(RclcppWalker):
         children = [c for c in expr.get_children() if c.kind not in SKIP]
         if kind in (K.UNEXPOSED_EXPR, K.PAREN_EXPR, K.CXX_FUNCTIONAL_CAST_EXPR, K.CSTYLE_CAST_EXPR,
                     K.CXX_STATIC_CAST_EXPR) and len(children) == 1:
-            return self.value(children[0], depth + 1)
+            return self.value(children[0], depth)  # a wrapper: descending it cannot loop
         return self.unknown(expr)
 
     def variable(self, expr: ci.Cursor, depth: int) -> Value:

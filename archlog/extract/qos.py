@@ -131,9 +131,13 @@ class Qos:
         return Qos(dict(self.policies), self.profile, list(self.unread))
 
     def initialise(self, history: str | None, depth: str | None, expr: str) -> None:
-        """rclcpp's QoSInitialization (KeepLast(n), KeepAll(), from_rmw(p)): history and depth."""
+        """rclcpp's QoSInitialization (KeepLast(n), KeepAll(), from_rmw(p)): history and depth
+        (which only keep_last has)."""
         self.set("history", history, expr)
-        self.set("depth", depth, expr)
+        if history == "keep_last" or history is None:
+            self.set("depth", depth, expr)
+        else:
+            self.policies.pop("depth", None)
 
     def set(self, policy: str, value: str | None, expr: str) -> None:
         """Set a policy from a value already in archlog's vocabulary; None: not readable."""

@@ -58,9 +58,14 @@ FACTORIES = {"make_shared", "make_unique", "allocate_shared"}
 _CHRONO_LITERAL = re.compile(r"^(\d+(?:\.\d*)?|\.\d+)(h|min|s|ms|us|ns)$")
 _CHRONO_UNITS = {"h": Fraction(3600), "min": Fraction(60), "s": Fraction(1), "ms": Fraction(1, 1000),
                  "us": Fraction(1, 1000000), "ns": Fraction(1, 1000000000)}
-_RATIO = re.compile(r"std::(?:__\w+::)?ratio<(\d+)(?:L|l)?,\s*(\d+)(?:L|l)?>")
+_CHRONO = re.compile(r"^std::(?:__\w+::)?chrono::duration<[^,<>]+(?:,\s*std::(?:__\w+::)?ratio<(\d+)[lLuU]*"
+                     r"(?:,\s*(\d+)[lLuU]*)?>)?\s*>$")
 _CONDITIONAL = (K.IF_STMT, K.FOR_STMT, K.WHILE_STMT, K.DO_STMT, K.SWITCH_STMT, K.CXX_FOR_RANGE_STMT,
                 K.CONDITIONAL_OPERATOR, K.CASE_STMT, K.DEFAULT_STMT)
+_INFINITE = Fraction(9223372036)
+_RMW_UNSPECIFIED = {"RMW_DURATION_UNSPECIFIED", "RMW_QOS_DEADLINE_DEFAULT", "RMW_QOS_LIFESPAN_DEFAULT",
+                    "RMW_QOS_LIVELINESS_LEASE_DURATION_DEFAULT", "RMW_QOS_DEADLINE_BEST_AVAILABLE",
+                    "RMW_QOS_LIVELINESS_LEASE_DURATION_BEST_AVAILABLE"}
 _RMW_FIELDS = ("history", "depth", "reliability", "durability", "deadline", "lifespan", "liveliness",
                "liveliness_lease_duration")
 
@@ -117,6 +122,17 @@ def strip(expr: ci.Cursor) -> ci.Cursor:
 def tokens(expr: ci.Cursor) -> str:
     """An expression as written (comments left out), at most 120 characters."""
     return " ".join(t.spelling for t in expr.get_tokens() if t.kind != ci.TokenKind.COMMENT)[:120]
+
+
+def macro_name(expr: ci.Cursor) -> str:
+    """The macro an expression was expanded from (the word at its expansion point)."""
+    location = expr.extent.start
+    if location.file is None:
+        return ""
+    with open(location.file.name, "rb") as source:
+        source.seek(location.offset)
+        match = re.match(rb"\w+", source.read(80))
+    return match.group(0).decode() if match else ""
 
 
 def parameter_names(function: ci.Cursor) -> list[str]:
@@ -475,6 +491,9 @@ class RclcppWalker:
         literal = _CHRONO_LITERAL.match(tokens(expr).replace(" ", ""))
         if literal:
             return Fraction(literal.group(1)) * _CHRONO_UNITS[literal.group(2)]
+        if expr.kind == K.INIT_LIST_EXPR and not tokens(expr):  # from a macro: rmw's duration macros
+            macro = macro_name(expr)
+            return _INFINITE if macro == "RMW_DURATION_INFINITE" else Fraction(0) if macro in _RMW_UNSPECIFIED else None
         if expr.kind == K.INIT_LIST_EXPR:
             parts = [number(v) if isinstance(v := self.value(c, depth + 1), str) else None
                      for c in expr.get_children()]
@@ -487,7 +506,8 @@ class RclcppWalker:
             return None
         ref, args = expr.referenced, written_args(expr)
         owner = qualified(ref.semantic_parent)
-        scale = _RATIO.search(expr.type.get_canonical().spelling)
+        chrono = _CHRONO.match(expr.type.get_canonical().spelling)
+        scale = Fraction(int(chrono.group(1) or 1), int(chrono.group(2) or 1)) if chrono else None
         if ref.kind == K.CONSTRUCTOR and owner == "rclcpp::Duration":
             if len(args) == 2:
                 whole, nanos = (number(v) if isinstance(v := self.value(a, depth + 1), str) else None for a in args)
@@ -499,13 +519,13 @@ class RclcppWalker:
             return None if amount is None else amount if ref.spelling == "from_seconds" else amount / 1_000_000_000
         if ref.spelling == "duration_cast" and args:
             return self.seconds(args[0], depth + 1)
-        if ref.kind == K.CONSTRUCTOR and scale and len(args) == 1:
+        if ref.kind == K.CONSTRUCTOR and scale is not None and len(args) == 1:
             inner = strip(args[0])
-            if inner.type.get_canonical().spelling.startswith("std::chrono::duration"):
+            if _CHRONO.match(inner.type.get_canonical().spelling):
                 return self.seconds(inner, depth + 1)
             value = self.value(args[0], depth + 1)
             amount = number(value) if isinstance(value, str) else None
-            return amount * Fraction(int(scale.group(1)), int(scale.group(2))) if amount is not None else None
+            return amount * scale if amount is not None else None
         if ref.kind == K.CONSTRUCTOR and len(args) == 1:  # copy or conversion
             return self.seconds(args[0], depth + 1)
         return None
@@ -739,6 +759,7 @@ class RclcppWalker:
     def ros2_fallback(self, text: str, covered: set[int]) -> None:
         """Read rclcpp entity calls, action servers/clients and the node's name from the text of
         lines where the AST produced nothing."""
+        aliases = {m.group(1) or m.group(4): m.group(2) or m.group(3) for m in _ALIAS.finditer(text)}
         sub_nodes = {m.group(1): unquote(m.group(2)) for m in re.finditer(
             r"(\w+)\s*=\s*(?:this\s*->\s*)?create_sub_node\s*\(\s*(\"[^\"]*\")", text)}
         for match in [*_ENTITY_FALLBACK.finditer(text), *_ACTION_FALLBACK.finditer(text)]:
@@ -751,7 +772,7 @@ class RclcppWalker:
                 ("action_server" if method == "create_server" else "action_client")
             name: Value = unquote(first) if first.startswith('"') else \
                 Unknown(f"{first} (read from tokens)", self.file, line)
-            type_: Value = type_from_spelling(template) or \
+            type_: Value = type_from_spelling(aliases.get(template, template)) or \
                 Unknown(f"{method}<{template}> (type not readable without the AST)", self.file, line)
             qos: tuple[tuple[str, str], ...] = ()
             if kind in ("publisher", "subscriber"):
@@ -773,6 +794,7 @@ _ENTITY_FALLBACK = re.compile(
 _ACTION_FALLBACK = re.compile(
     r"\brclcpp_action::(?P<method>create_server|create_client)\s*<\s*(?P<type>[\w:]+)[^>;]*>\s*\(\s*[^,;]+?,\s*"
     r"(?P<name>\"(?:[^\"\\]|\\.)*\"|[\w:.>\-]+)")
+_ALIAS = re.compile(r"\busing\s+(\w+)\s*=\s*(?:typename\s+)?([\w:]+)\s*;|\btypedef\s+([\w:]+)\s+(\w+)\s*;")
 _NODE_FALLBACK = re.compile(r"[:,]\s*(?:rclcpp::Node|Node|(?:rclcpp_lifecycle::)?LifecycleNode)\s*\(\s*(\"[^\"]+\")")
 
 

@@ -40,8 +40,9 @@ INTERFACE_INCLUDE = re.compile(r"^(\w+)/(msg|srv|action)/(\w+)\.hpp$")
 ROS2_MARKERS = re.compile(r'^\s*#\s*include\s*[<"](?:rclcpp\w*/|\w+/(?:msg|srv|action)/\w+\.hpp)', re.M)
 _INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 
-# ROS 2 core interfaces the client libraries use, which Debian's ROS 1 does not ship (or ships
-# in their ROS 1 shape: std_msgs/Header has no seq in ROS 2)
+# ROS 2 core interfaces the client libraries use, and the most common service and action types,
+# which Debian's ROS 1 does not ship (or ships in their ROS 1 shape: std_msgs/Header has no seq
+# in ROS 2)
 EMBEDDED = {
     "builtin_interfaces/msg/Time": "int32 sec\nuint32 nanosec\n",
     "builtin_interfaces/msg/Duration": "int32 sec\nuint32 nanosec\n",
@@ -82,6 +83,11 @@ EMBEDDED = {
         "GoalInfo goal_info\n---\nint8 ERROR_NONE=0\nint8 ERROR_REJECTED=1\nint8 ERROR_UNKNOWN_GOAL_ID=2\n"
         "int8 ERROR_GOAL_TERMINATED=3\nint8 return_code\nGoalInfo[] goals_canceling\n"),
     "tf2_msgs/msg/TFMessage": "geometry_msgs/TransformStamped[] transforms\n",
+    "std_srvs/srv/Empty": "---\n",
+    "std_srvs/srv/Trigger": "---\nbool success\nstring message\n",
+    "std_srvs/srv/SetBool": "bool data\n---\nbool success\nstring message\n",
+    "example_interfaces/srv/AddTwoInts": "int64 a\nint64 b\n---\nint64 sum\n",
+    "example_interfaces/action/Fibonacci": "int32 order\n---\nint32[] sequence\n---\nint32[] sequence\n",
     "diagnostic_msgs/msg/KeyValue": "string key\nstring value\n",
     "diagnostic_msgs/msg/DiagnosticStatus": (
         "byte OK=0\nbyte WARN=1\nbyte ERROR=2\nbyte STALE=3\nbyte level\nstring name\nstring message\n"

@@ -17,7 +17,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cmake import commands
 
 SKIP_DIRS = {"build", "devel", "install", "log", "node_modules", "__pycache__"}
-_REGISTER_NODE = re.compile(r"^\s*RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)", re.M)
+_REGISTER_NODE = re.compile(r"^[ \t]*RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)", re.M)
 _LIBRARY_WORDS = {"SHARED", "STATIC", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL", "WIN32", "MACOSX_BUNDLE",
                   "NO_TARGET_LINK_LIBRARIES", "PRIVATE", "PUBLIC", "INTERFACE"}
 SOURCE_SUFFIXES = {".cpp", ".cc", ".cxx", ".c++", ".C"}
@@ -207,13 +207,11 @@ class Workspace:
             text = path.read_text(errors="replace")
             if "RCLCPP_COMPONENTS_REGISTER_NODE" not in text:
                 continue
-            for match in _REGISTER_NODE.finditer(text):
-                cls = match.group(1).lstrip(":")
+            for cls, line in registered_components(text):
                 if cls in package.executables:
                     continue
                 sources = next((s for s in package.libraries.values() if path in s), [path])
-                package.executables[cls] = Executable(package.name, cls, "cpp", list(sources),
-                                                      text.count("\n", 0, match.start()) + 1, cls)
+                package.executables[cls] = Executable(package.name, cls, "cpp", list(sources), line, cls)
 
     def _entry_points(self, package: Package) -> None:
         """console_scripts of setup.py / setup.cfg (catkin and ament_python packages)."""
@@ -253,6 +251,11 @@ def manifests(root: Path) -> list[Path]:
             found.append(Path(dirpath) / "package.xml")
             dirnames[:] = []
     return found
+
+
+def registered_components(text: str) -> list[tuple[str, int]]:
+    """(class, line) of every RCLCPP_COMPONENTS_REGISTER_NODE(ns::Class) in a C++ source."""
+    return [(m.group(1).lstrip(":"), text.count("\n", 0, m.start()) + 1) for m in _REGISTER_NODE.finditer(text)]
 
 
 def _sources(folder: Path, args: tuple[str, ...]) -> list[Path]:

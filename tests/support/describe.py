@@ -25,6 +25,7 @@ def plain(value: Value | None) -> object:
 def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
     lines = [f"node {json.dumps(plain(summary.default_name))} namespace {json.dumps(plain(summary.namespace))}"
              f" anonymous {summary.anonymous}"]
+    lines += [f"incomplete {summary.incomplete}"] if summary.incomplete else []
     for p in summary.ports:
         extra = f" default {json.dumps(plain(p.default))}" if p.default is not None else ""
         extra += "".join(f" {k}={v}" for k, v in p.qos)

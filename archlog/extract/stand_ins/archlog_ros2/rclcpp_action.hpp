@@ -74,11 +74,14 @@ public:
   using AcceptedCallback = std::function<void (std::shared_ptr<ServerGoalHandle<ActionT>>)>;
 };
 
-template<typename ActionT, typename NodeT>
+// rclcpp_action takes the callbacks as std::function (Server<ActionT>::GoalCallback...); taken
+// here as they come, so that a callback whose body uses a field a stand-in message lacks does
+// not make the whole call unresolved.
+template<typename ActionT, typename NodeT, typename GoalCallbackT, typename CancelCallbackT,
+  typename AcceptedCallbackT>
 typename Server<ActionT>::SharedPtr create_server(
-  NodeT node, const std::string & name, typename Server<ActionT>::GoalCallback handle_goal,
-  typename Server<ActionT>::CancelCallback handle_cancel,
-  typename Server<ActionT>::AcceptedCallback handle_accepted,
+  NodeT node, const std::string & name, GoalCallbackT && handle_goal, CancelCallbackT && handle_cancel,
+  AcceptedCallbackT && handle_accepted,
   const rcl_action_server_options_t & options = rcl_action_server_get_default_options(),
   rclcpp::CallbackGroup::SharedPtr group = nullptr);
 template<typename ActionT>

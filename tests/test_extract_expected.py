@@ -1,0 +1,57 @@
+"""Extraction on CodeQL-style fixtures, compared with their .expected files: rospy/rclpy in
+corpus/python, rclcpp in corpus/cpp_ros2 (a file registering a component is read as that
+component: only its class is the node).
+
+Set ARCHLOG_UPDATE_EXPECTED=1 to rewrite the .expected files (then review the diff)."""
+
+from __future__ import annotations
+
+import difflib
+import os
+from functools import lru_cache
+from pathlib import Path
+
+import pytest
+
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.cpp import CppEnvironment, extract_cpp
+from archlog.extract.python import extract_python
+from archlog.extract.summary import NodeSummary
+from archlog.extract.workspace import registered_components
+from conftest import ROOT
+from support.describe import describe
+
+FOLDERS = ("python", "cpp_ros2")
+FIXTURES = sorted(p for folder in FOLDERS for p in (ROOT / "corpus" / folder).iterdir() if p.suffix != ".expected")
+
+
+@lru_cache(maxsize=1)
+def cpp_environment() -> CppEnvironment:
+    return CppEnvironment([], None, [])
+
+
+def extract(fixture: Path, sink: DiagnosticSink) -> NodeSummary:
+    if fixture.suffix == ".cpp":
+        components = registered_components(fixture.read_text())
+        return extract_cpp([fixture], "fixtures", fixture.name, cpp_environment(), {fixture: fixture.name}, sink,
+                           components[0][0] if components else None)
+    return extract_python(fixture, "fixtures", fixture.name, fixture.name, sink)
+
+
+def test_enough_fixtures() -> None:
+    names = [p.name for p in FIXTURES]
+    assert sum(n.startswith("rclpy_") for n in names) >= 10
+    assert sum(n.startswith("rospy_") for n in names) >= 4
+    assert sum(n.startswith("rclcpp_") for n in names) >= 10
+
+
+@pytest.mark.parametrize("fixture", FIXTURES, ids=lambda p: p.name)
+def test_fixture_matches_expected(fixture: Path) -> None:
+    sink = DiagnosticSink()
+    got = describe(extract(fixture, sink), sink.items)
+    expected_file = fixture.with_name(fixture.name + ".expected")
+    if os.environ.get("ARCHLOG_UPDATE_EXPECTED"):
+        expected_file.write_text(got)
+    expected = expected_file.read_text() if expected_file.is_file() else ""
+    diff = "".join(difflib.unified_diff(expected.splitlines(True), got.splitlines(True), "expected", "got"))
+    assert not diff, diff
