@@ -18,7 +18,7 @@ import shlex
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Literal
+from typing import TypeVar
 
 from archlog import names
 from archlog.extract.launch import MAX_INCLUDE_DEPTH, Element, LaunchError, LaunchInterpreter, LaunchNode
@@ -213,6 +213,7 @@ class Opaque(Action):
 
 
 Description = list[Action]
+A = TypeVar("A", bound=Action)
 DescribeFile = Callable[[Path, "Ros2Launch"], Description | None]
 
 
@@ -262,26 +263,30 @@ class Ros2Launch:
     # -- visiting -----------------------------------------------------------------------
     def run(self, actions: list[Action] | tuple[Action, ...], ctx: Context) -> None:
         for action in actions:
-            try:
-                state = self.condition(action.conditions, ctx)
-            except (SubstitutionError, LaunchError) as exc:
-                self.diag(action.where, "launch-subst", f"condition of {_label(action)}: {exc}", "error")
-                continue
-            if state is False:
-                continue
-            here = ctx
-            if state is not True:
-                self.diag(action.where, "launch-condition",
-                          f"condition {state} cannot be resolved statically; {_label(action)} kept as conditional",
-                          "note")
-                here = replace(ctx, condition=f"{ctx.condition} and {state}" if ctx.condition else state)
-            try:
-                self._execute(action, here, state is not True)
-            except Unresolved as exc:
-                self.diag(action.where, "launch-unknown", f"{_label(action)} skipped: {exc}")
-            except (SubstitutionError, LaunchError) as exc:
-                self.diag(action.where, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",
-                          f"{_label(action)}: {exc}", "error")
+            self._guarded(action, ctx, self._execute)
+
+    def _guarded(self, action: A, ctx: Context, execute: Callable[[A, Context, bool], None]) -> None:
+        """Execute an action whose conditions hold (kept as conditional when they cannot be known;
+        `execute` is told so); what it cannot do is a diagnostic at the action."""
+        try:
+            state = self.condition(action.conditions, ctx)
+        except (SubstitutionError, LaunchError) as exc:
+            self.diag(action.where, "launch-subst", f"condition of {_label(action)}: {exc}", "error")
+            return
+        if state is False:
+            return
+        here = ctx
+        if state is not True:
+            self.diag(action.where, "launch-condition",
+                      f"condition {state} cannot be resolved statically; {_label(action)} kept as conditional", "note")
+            here = replace(ctx, condition=f"{ctx.condition} and {state}" if ctx.condition else state)
+        try:
+            execute(action, here, state is not True)
+        except Unresolved as exc:
+            self.diag(action.where, "launch-unknown", f"{_label(action)} skipped: {exc}")
+        except (SubstitutionError, LaunchError) as exc:
+            self.diag(action.where, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",
+                      f"{_label(action)}: {exc}", "error")
 
     def condition(self, conditions: tuple[Condition, ...], ctx: Context) -> bool | str:
         """False when a condition is false, True when all hold, else the text of those unknown."""
@@ -439,12 +444,8 @@ class Ros2Launch:
                           chain=ctx.chain, parameters=params)
         self.config.nodes.append(node)
         self._launched[id(action)] = full
-        loaded = []
         for component in action.components:
-            state = self.condition(component.conditions, ctx)
-            if state is not False:
-                loaded.append((component, state))
-        self._components(loaded, full, ctx)
+            self._guarded(component, ctx, lambda c, here, _: self._component(c, full, here))
 
     def _base_name(self, name: Parts | None, where: Where, ctx: Context) -> str:
         """The node name the launch gives ("" for none, or when it is not known: then the source's
@@ -605,23 +606,8 @@ class Ros2Launch:
             manager = self._launched[id(action.target)]
         else:
             manager = names.join("/", perform(action.target, ctx))
-        loaded = []
         for component in action.components:
-            state = self.condition(component.conditions, ctx)
-            if state is not False:
-                loaded.append((component, state))
-        self._components(loaded, manager, ctx)
-
-    def _components(self, loaded: list[tuple[Component, Literal[True] | str]], manager: str, ctx: Context) -> None:
-        for component, state in loaded:
-            here = ctx if state is True else replace(ctx, condition=f"{ctx.condition} and {state}"
-                                                     if ctx.condition else str(state))
-            try:
-                self._component(component, manager, here)
-            except Unresolved as exc:
-                self.diag(component.where, "launch-unknown", f"composable node skipped: {exc}")
-            except (SubstitutionError, LaunchError) as exc:
-                self.diag(component.where, "launch-invalid", f"composable node: {exc}", "error")
+            self._guarded(component, ctx, lambda c, here, _: self._component(c, manager, here))
 
     def _component(self, component: Component, manager: str, ctx: Context) -> None:
         pkg, plugin = perform(component.pkg, ctx), perform(component.plugin, ctx)
