@@ -710,3 +710,25 @@ def test_parameter_files_of_composable_nodes_are_applied_by_launch(tmp_path: Pat
     assert params(node) == [("/**", "rate", 1), ("/**", "shared", 0), ("/ns/worker", "rate", 2),
                             ("/**/worker", "ignored", True)]
     assert sink.items == []
+
+
+def test_python_reads_the_files_it_opens(tmp_path: Path) -> None:
+    config, sink = load(tmp_path, {"pkg/config/nodes.yaml": "ns: robot\nnodes: [{name: a}, {name: b}]\n",
+                                   "main.launch.py": python("""
+        import yaml
+        from pathlib import Path
+
+        def launch_setup(context):
+            path = Path(get_package_share_directory('pkg')) / 'config' / 'nodes.yaml'
+            with open(path) as stream:
+                spec = yaml.safe_load(stream)
+            return [Node(package='p', executable='e', name=n['name'], namespace=f"{spec['ns']}", parameters=[
+                        {'source': str(path.parent), 'raw': path.read_text().splitlines()[0]}])
+                    for n in spec['nodes']]
+
+        def generate_launch_description():
+            return LaunchDescription([OpaqueFunction(function=launch_setup)])
+        """)}, "main.launch.py")
+    assert [n.name for n in config.nodes] == ["/robot/a", "/robot/b"]
+    assert params(config.nodes[0]) == [("", "source", str(tmp_path / "pkg" / "config")), ("", "raw", "ns: robot")]
+    assert sink.items == []

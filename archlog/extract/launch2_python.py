@@ -33,6 +33,8 @@ MAX_STEPS = 200_000
 MAX_ITEMS = 10_000
 _LIST_METHODS = {"append", "extend", "insert", "pop", "index", "count", "copy", "remove", "reverse"}
 _DICT_METHODS = {"get", "items", "keys", "values", "update", "copy", "setdefault", "pop"}
+_STR_EXTRA = {"splitlines", "partition", "rpartition", "rsplit", "casefold", "removeprefix", "removesuffix",
+              "isalpha", "isalnum", "islower", "isupper", "isspace"}
 _PATH_ATTRS = {"parent": lambda p: str(Path(p).parent), "name": lambda p: Path(p).name,
                "stem": lambda p: Path(p).stem, "suffix": lambda p: Path(p).suffix}
 
@@ -275,6 +277,7 @@ class _Interpreter(Evaluator):
             except LaunchError as exc:
                 return Unread(str(exc), line)
         if any(function is builtin for builtin in BUILTINS.values()):
+            args = [a.path if isinstance(a, PathValue) else a for a in args]  # str(path) is its text
             if any(isinstance(v, Unread) for v in [*args, *kwargs.values()]):
                 return next(v for v in [*args, *kwargs.values()] if isinstance(v, Unread))
             if any(not _plain(v) for v in [*args, *kwargs.values()]):
@@ -340,7 +343,7 @@ class _Interpreter(Evaluator):
             return Ref(f"builtins.{name}")
         if name in BUILTINS:
             return BUILTINS[name]
-        if name in ("print", "isinstance", "hasattr", "type", "super", "vars", "locals", "globals", "getattr"):
+        if name in ("print", "hasattr", "type", "super", "vars", "locals", "globals", "getattr"):
             return Unread(f"{name}()", self.line)
         return Unread(f"name '{name}' is not defined", self.line)
 
@@ -394,7 +397,7 @@ class _Interpreter(Evaluator):
         if not _plain(value):
             return value if isinstance(value, Unread) else Unread("a launch object formatted into a string",
                                                                   node.lineno)
-        return super().visit_FormattedValue(node)
+        return super().visit_FormattedValue(ast.FormattedValue(_constant(value), node.conversion, node.format_spec))
 
     def visit_BinOp(self, node: ast.BinOp) -> object:
         left, right = self.value(node.left), self.value(node.right)
@@ -579,18 +582,34 @@ class _Interpreter(Evaluator):
                     "as_posix": path.as_posix}[name]()
         if isinstance(target, FileHandle) and name in ("__enter__", "close"):
             return target
-        allowed = (STR_METHODS if isinstance(target, str) else _LIST_METHODS if isinstance(target, list)
-                   else _DICT_METHODS if isinstance(target, dict) else {"index", "count"} if isinstance(target, tuple)
-                   else set())
+        if isinstance(target, str):
+            return self.string_method(target, name, args, kwargs, line)
+        allowed = (_LIST_METHODS if isinstance(target, list) else _DICT_METHODS if isinstance(target, dict)
+                   else {"index", "count"} if isinstance(target, tuple) else set())
         if name not in allowed:
             return Unread(f"{_why(target)}.{name}()", line)
-        if isinstance(target, str) and not all(_plain(a) for a in [*args, *kwargs.values()]):
-            return Unread(f"str.{name}() of a launch object", line)
         try:
             result = getattr(target, name)(*args, **kwargs)
         except (TypeError, ValueError, KeyError, IndexError, AttributeError) as exc:
             return Unread(f"{name}(): {exc}", line)
         return list(result) if name in ("items", "keys", "values") else result
+
+    def string_method(self, target: str, name: str, args: list[object], kwargs: dict[str, object], line: int
+                      ) -> object:
+        """A str method: those the restricted evaluator allows go through it (with its guards on
+        format()), a few more pure ones are called here."""
+        if not all(_plain(a) for a in [*args, *kwargs.values()]):
+            return Unread(f"str.{name}() of a launch object", line)
+        if name in STR_METHODS:
+            call = ast.Call(ast.Attribute(_constant(target), name), [_constant(a) for a in args],
+                            [ast.keyword(k, _constant(v)) for k, v in kwargs.items()])
+            return super().visit_Call(call)
+        if name not in _STR_EXTRA:
+            return Unread(f"str.{name}()", line)
+        try:
+            return getattr(target, name)(*args, **kwargs)
+        except (TypeError, ValueError) as exc:
+            return Unread(f"{name}(): {exc}", line)
 
     def config(self, view: ConfigsView, name: object, default: object, line: int) -> object:
         """context.launch_configurations[name] (or .get(name, default))."""
