@@ -6,7 +6,9 @@ Each PATH is one repository (indexed as the workspace, so $(find-pkg-share) find
 Per repository: the ROS 2 launch files by dialect, archlog crashes (must be 0), and how many
 were interpreted fully (no unknown value, no unresolved condition, no error), partially (some
 unknown or conditional part, or an error in part of the file), or not at all (the file could not
-be read: a parse error, no generate_launch_description). Times are wall clock per file.
+be read: a parse error, no generate_launch_description). Partial files whose only gaps come from
+packages outside the repository (not found by $(find-pkg-share)) are counted apart. Times are wall
+clock per file, after the workspace is indexed.
 """
 
 from __future__ import annotations
@@ -31,6 +33,7 @@ from archlog.extract.workspace import SKIP_DIRS, Workspace  # noqa: E402
 
 PARTIAL = {"launch-unknown", "launch-condition"}  # notes that still mean "not all of it is known"
 UNREAD = {"launch-python", "launch-xml", "launch-yaml", "launch-missing"}  # the file itself was not read
+MISSING_PACKAGE = re.compile(r"package '[^']+' not found")
 IGNORED = {"launch-arg-unknown", "launch-process", "no-model", "package-xml", "duplicate-package"}
 
 
@@ -107,6 +110,8 @@ def main() -> None:
             unread = any(d.code in UNREAD and d.file == workspace.display(path) for d in sink.items)
             verdict, reasons = classify(not unread, sink)
             counts[verdict] += 1
+            if verdict == "partial" and all(MISSING_PACKAGE.search(r) for r in reasons):
+                counts["missing"] += 1
             if opts.verbose:
                 print(f"  {verdict:7} {len(config.nodes):3} nodes  {path.relative_to(folder)}")
             if verdict != "full":
@@ -116,7 +121,8 @@ def main() -> None:
         mean = sum(times) / len(times) * 1000 if times else 0.0
         print(f"{folder.name}: {len(files)} ROS 2 launch files (python {counts['python']}, xml {counts['xml']}, "
               f"yaml {counts['yaml']}); {len(crashes)} crashes; fully {counts['full']}, partially "
-              f"{counts['partial']}, not at all {counts['none']}; {nodes} nodes; "
+              f"{counts['partial']} ({counts['missing']} only for want of a package outside the repository), "
+              f"not at all {counts['none']}; {nodes} nodes; "
               f"{mean:.1f} ms/file mean, {max(times, default=0) * 1000:.0f} ms max (+{index_time:.2f} s indexing)")
         for path, trace in crashes[: opts.show]:
             print(f"  CRASH {path}\n{trace}")
@@ -126,7 +132,8 @@ def main() -> None:
                 print(f"    {reason}")
     if len(opts.paths) > 1:
         print(f"total: {total['full'] + total['partial'] + total['none']} files, {total['crashes']} crashes, "
-              f"fully {total['full']}, partially {total['partial']}, not at all {total['none']}")
+              f"fully {total['full']}, partially {total['partial']} ({total['missing']} only for want of a package), "
+              f"not at all {total['none']}")
 
 
 if __name__ == "__main__":
