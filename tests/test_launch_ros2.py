@@ -732,3 +732,19 @@ def test_python_reads_the_files_it_opens(tmp_path: Path) -> None:
     assert [n.name for n in config.nodes] == ["/robot/a", "/robot/b"]
     assert params(config.nodes[0]) == [("", "source", str(tmp_path / "pkg" / "config")), ("", "raw", "ns: robot")]
     assert sink.items == []
+
+
+def test_a_namespace_that_is_not_known_skips_the_nodes_it_would_hold(tmp_path: Path) -> None:
+    config, sink = load(tmp_path, {"main.yaml": """
+        launch:
+        - arg: {name: robot}
+        - group:
+            children:
+            - push-ros-namespace: {namespace: $(var robot)}
+            - node: {pkg: p, exec: e, name: inside}
+            - node: {pkg: p, exec: e, name: absolute, namespace: /fixed}
+        - node: {pkg: p, exec: e, name: outside}
+        """}, "main.yaml")
+    assert [n.name for n in config.nodes] == ["/fixed/absolute", "/outside"]
+    assert codes(sink) == [("main.yaml", 2, "launch-arg-unknown"), ("main.yaml", 6, "launch-unknown")]
+    assert "launch argument 'robot' is not known" in sink.items[1].message

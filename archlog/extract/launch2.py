@@ -316,11 +316,7 @@ class Ros2Launch:
         elif isinstance(action, Include):
             self._include(action, ctx)
         elif isinstance(action, PushNamespace):
-            pushed = perform(action.namespace, ctx)
-            previous = _namespace_config(ctx)
-            combined = _absolute(_prefix(previous, pushed))
-            _check_namespace(combined)
-            ctx.configs["ros_namespace"] = UnknownArg(f"pushed under {ctx.condition}") if uncertain else combined
+            self._push_namespace(action, ctx, uncertain)
         elif isinstance(action, SetRemap):
             self._set_remap(action, ctx)
         elif isinstance(action, SetParameter):
@@ -340,6 +336,19 @@ class Ros2Launch:
                       "it is not part of the architecture", "note")
         elif isinstance(action, Opaque):
             self._opaque(action, ctx)
+
+    def _push_namespace(self, action: PushNamespace, ctx: Context, uncertain: bool) -> None:
+        """Push a namespace; one that is not known makes the nodes of the scope unknown (they are
+        skipped with a diagnostic rather than placed in the wrong namespace)."""
+        try:
+            if uncertain:
+                raise Unresolved(f"pushed under {ctx.condition}")
+            combined = _absolute(_prefix(_namespace_config(ctx), perform(action.namespace, ctx)))
+        except Unresolved as exc:
+            ctx.configs["ros_namespace"] = UnknownArg(str(exc))
+            return
+        _check_namespace(combined)
+        ctx.configs["ros_namespace"] = combined
 
     def _declare(self, action: DeclareArgument, ctx: Context, uncertain: bool) -> None:
         if action.name not in ctx.configs:
@@ -706,7 +715,7 @@ def _check_namespace(ns: str | None) -> None:
 def _node_namespace(namespace: Parts | None, ctx: Context) -> str | None:
     """A node's namespace: its own under the pushed one; None when neither is set."""
     own = perform(namespace, ctx) if namespace is not None else None
-    combined = _absolute(_prefix(_namespace_config(ctx), own))
+    combined = _absolute(own if own is not None and own.startswith("/") else _prefix(_namespace_config(ctx), own))
     _check_namespace(combined)
     return combined
 
