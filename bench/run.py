@@ -56,7 +56,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=3)
     opts = parser.parse_args()
     results: dict[str, dict] = {}
-    variants = sorted(p.parent for p in (ROOT / "corpus" / "ros1").glob("*/*/case.json"))
+    variants = sorted(p.parent for corpus in ("ros1", "ros2") for p in (ROOT / "corpus" / corpus).glob("*/*/case.json"))
     print(f"{'system':42} " + " ".join(f"{s:>9}" for s in STAGES) + f" {'total':>8}")
     for variant in variants:
         runs = [corpus_run(variant) for _ in range(opts.repeat)]

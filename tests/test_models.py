@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 from archlog.analysis import analyse
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.models import load_models
+from archlog.extract.models import BUILTIN_DIR, load_models
+from archlog.extract.qos import PRESETS
 from archlog.queries.session import Session
 from archlog.rules.engine import Engine
 from archlog.rules.ruleset import load_rules
@@ -166,3 +168,27 @@ def test_spawned_controllers_are_instances_of_their_type_models(tmp_path: Path) 
     assert [t for _p, _n, t, _ty in result.store.rows("subscriber")] == ["/base/mobile_base_controller/cmd_vel"]
     assert [(d.code, "/base/missing_controller/type" in d.message) for d in result.diagnostics.items] == [
         ("controller-type", True)]
+
+
+def test_ros2_model_ports_carry_qos(tmp_path: Path) -> None:
+    model = tmp_path / "lidar.yaml"
+    model.write_text("package: lidar\nexecutable: driver\npublishers:\n"
+                     "  - {name: scan, type: sensor_msgs/msg/LaserScan, qos: sensor_data}\n"
+                     "  - {name: map, type: nav_msgs/msg/OccupancyGrid,\n"
+                     "     qos: {durability: transient_local, depth: 1, deadline: 0.5}}\n")
+    sink = DiagnosticSink()
+    [(summary, _instance)] = load_models(model, "lidar.yaml", sink)
+    scan, latched = summary.ports
+    assert dict(scan.qos) == {"profile": "sensor_data", "history": "keep_last", "depth": "5",
+                              "reliability": "best_effort", "durability": "volatile"}
+    assert dict(latched.qos) == {"history": "keep_last", "depth": "1", "reliability": "reliable",
+                                 "durability": "transient_local", "deadline": "0.5"}
+    model.write_text("package: lidar\nexecutable: driver\npublishers:\n"
+                     "  - {name: bad, type: std_msgs/msg/Empty, qos: {reliability: sometimes}}\n")
+    assert load_models(model, "lidar.yaml", sink) == []
+    assert [(d.line, d.code) for d in sink.items] == [(4, "model-schema")]
+
+
+def test_model_schema_names_every_qos_preset() -> None:
+    schema = json.loads((BUILTIN_DIR / "model.schema.json").read_text())
+    assert set(schema["$defs"]["preset"]["enum"]) == set(PRESETS) - {"unknown"}

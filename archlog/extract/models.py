@@ -6,7 +6,8 @@ configuration) and lists its ports. A name may be a string or `{param: NAME, def
 `{each: LIST_PARAM, field: KEY}` makes one port per element of a list parameter (twist_mux's
 inputs); a port with `if: {param: NAME, default: VALUE}` exists only when that parameter is true (or
 equals `equals`), and with `if: {param: NAME, set: true}` only when the configuration sets it. A
-model with `incomplete: REASON` lists only some ports, so its nodes count as opaque. The format's
+ROS 2 port may give `qos:` as a preset's name or as `{preset: P, reliability: ..., depth: ...,
+deadline: SECONDS, ...}` (rmw's default profile when no preset is named). A model with `incomplete: REASON` lists only some ports, so its nodes count as opaque. The format's
 JSON Schema is archlog/models/model.schema.json; a file that breaks it is reported at the offending
 entry's line and its valid models are still used.
 """
@@ -14,6 +15,7 @@ entry's line and its valid models are still used.
 from __future__ import annotations
 
 import json
+from fractions import Fraction
 from functools import lru_cache
 from pathlib import Path
 
@@ -21,6 +23,7 @@ import jsonschema
 import yaml
 
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.summary import NodeSummary, Port
 from archlog.values import ParamList, ParamRef, Value
 
@@ -78,7 +81,20 @@ def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: 
     condition = port.get("if")
     summary.ports.append(Port(kind, _name(port["name"], shown, port["__line__"]), str(port.get("type", "")),
                               shown, port["__line__"], 0, "", None if default is None else str(default),
+                              qos=() if "qos" not in port else _qos(port["qos"]),
                               condition=None if condition is None else _condition(condition, shown)))
+
+
+def _qos(spec: str | dict) -> tuple[tuple[str, str], ...]:
+    """A ROS 2 port's QoS: a preset's name, or a preset (default: rmw's default) with policies changed."""
+    if isinstance(spec, str):
+        return Qos.preset(spec).facts()
+    qos = Qos.preset(spec.get("preset", "default"))
+    for policy, value in spec.items():
+        if policy not in ("preset", "__line__"):
+            text = seconds_text(Fraction(str(value))) if policy in DURATIONS else _text(value)
+            qos.apply(policy, text, f"{policy}: {value}")
+    return qos.facts()
 
 
 def _condition(condition: dict, shown: str) -> tuple[Value, str | None]:

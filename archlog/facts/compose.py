@@ -120,7 +120,7 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
             if port.kind in ("param_read", "param_write"):
                 store.add(port.kind, pid, node.name, after, _single(last))
             else:
-                store.add(port.kind, pid, node.name, after, _single(_bind(port.type, node, config)))
+                store.add(port.kind, pid, node.name, after, _type_name(_single(_bind(port.type, node, config))))
             store.add("port_source_name", pid, before)
 
 
@@ -209,6 +209,11 @@ def _present(port: Port, node: LaunchNode, config: LaunchConfig) -> bool:
     if port.condition[1] is None:  # `set: true`
         return value != UNSET
     return isinstance(value, Unknown) or value.lower() == port.condition[1].lower()
+
+
+def _type_name(type_: str | Unknown) -> str | Unknown:
+    """One spelling per type: a C++ spelling (`std_msgs::msg::String`) becomes `std_msgs/msg/String`."""
+    return type_.replace("::", "/") if isinstance(type_, str) else type_
 
 
 def _microseconds(seconds: str) -> int | None:
