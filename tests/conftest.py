@@ -13,11 +13,12 @@ from archlog.rules.ruleset import load_rules
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "corpus" / "ros1"
+CORPUS_ROS2 = ROOT / "corpus" / "ros2"
 SHARED = ROOT.parent / "shared"
 
 
-def corpus_cases() -> list[Path]:
-    return sorted(p.parent for p in CORPUS.glob("*/*/case.json"))
+def corpus_cases(corpus: Path = CORPUS) -> list[Path]:
+    return sorted(p.parent for p in corpus.glob("*/*/case.json"))
 
 
 def load_case(variant: Path) -> dict:

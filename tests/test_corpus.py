@@ -6,22 +6,23 @@ from pathlib import Path
 
 import pytest
 
-from conftest import CORPUS, corpus_cases, finding_keys, load_case, run_case
+from conftest import CORPUS, CORPUS_ROS2, corpus_cases, finding_keys, load_case, run_case
 
-CASES = corpus_cases()
-
-
-def test_corpus_has_buggy_and_clean_twins() -> None:
-    names = {p.parent.name for p in CASES}
-    assert len(names) >= 8
-    for name in names:
-        assert (CORPUS / name / "buggy" / "case.json").is_file()
-        assert (CORPUS / name / "clean" / "case.json").is_file()
-        assert load_case(CORPUS / name / "buggy")["findings"], f"{name}/buggy expects no finding"
-        assert load_case(CORPUS / name / "clean")["findings"] == []
+CASES = corpus_cases(CORPUS) + corpus_cases(CORPUS_ROS2)
 
 
-@pytest.mark.parametrize("variant", CASES, ids=lambda p: f"{p.parent.name}/{p.name}")
+@pytest.mark.parametrize(("corpus", "least"), [(CORPUS, 8), (CORPUS_ROS2, 6)], ids=["ros1", "ros2"])
+def test_corpus_has_buggy_and_clean_twins(corpus: Path, least: int) -> None:
+    cases = {p.parent for p in corpus_cases(corpus)}
+    assert len(cases) >= least
+    for case in cases:
+        assert (case / "buggy" / "case.json").is_file()
+        assert (case / "clean" / "case.json").is_file()
+        assert load_case(case / "buggy")["findings"], f"{case.name}/buggy expects no finding"
+        assert load_case(case / "clean")["findings"] == []
+
+
+@pytest.mark.parametrize("variant", CASES, ids=lambda p: f"{p.parent.parent.name}/{p.parent.name}/{p.name}")
 def test_expected_findings(variant: Path) -> None:
     analysis, findings = run_case(variant)
     expected = sorted((f["rule"], f["file"], f["line"], f["subject"]) for f in load_case(variant)["findings"])

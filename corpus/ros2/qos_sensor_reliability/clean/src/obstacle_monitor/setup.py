@@ -1,0 +1,13 @@
+from setuptools import setup
+
+package_name = "obstacle_monitor"
+
+setup(
+    name=package_name,
+    version="0.1.0",
+    packages=[package_name],
+    data_files=[("share/ament_index/resource_index/packages", ["resource/" + package_name]),
+                ("share/" + package_name, ["package.xml"])],
+    install_requires=["setuptools"],
+    entry_points={"console_scripts": ["monitor = obstacle_monitor.monitor:main"]},
+)
