@@ -471,6 +471,7 @@ def test_python_groups_namespaces_scope_actions_and_includes(tmp_path: Path) -> 
 
 def test_python_components(tmp_path: Path) -> None:
     config, sink = load(tmp_path, {"main.launch.py": python("""
+        from my_robot.components import make_component
         def generate_launch_description():
             container = ComposableNodeContainer(
                 name='box', namespace='', package='rclcpp_components', executable='component_container',
@@ -479,6 +480,7 @@ def test_python_components(tmp_path: Path) -> None:
                                    remappings=[('chatter', 'talk')], parameters=[{'rate': 2}]),
                     ComposableNode(package='composition', plugin='composition::Server',
                                    condition=IfCondition('false')),
+                    make_component(),
                 ])
             load = LoadComposableNodes(target_container=container, composable_node_descriptions=[
                 ComposableNode(package='composition', plugin='composition::Listener', name='listener',
@@ -490,7 +492,8 @@ def test_python_components(tmp_path: Path) -> None:
     assert [(n.name, n.type, n.manager) for n in config.nodes] == [
         ("/box", "component_container", None), ("/talker", "composition::Talker", "/box"),
         ("/ns/listener", "composition::Listener", "/box"), ("", "composition::Client", "/box")]
-    assert config.nodes[1].kind == ("composition", "composition::Talker") and sink.items == []
+    assert config.nodes[1].kind == ("composition", "composition::Talker")
+    assert codes(sink) == [("main.launch.py", 16, "launch-unknown")] and "make_component" in sink.items[0].message
 
 
 def test_python_opaque_functions(tmp_path: Path) -> None:

@@ -336,16 +336,15 @@ def params(value: object, line: int) -> tuple[ParamSource, ...]:
     return tuple(found)
 
 
-def _components(value: object, line: int) -> tuple[Component, ...]:
+def _components(value: object, where: Where) -> tuple[Component, ...]:
+    """Composable node descriptions; one that is not known is kept as such (reported when loaded)."""
     if value is None:
         return ()
     items = value if isinstance(value, (list, tuple)) else [value]
-    found = []
-    for item in items:
-        if not isinstance(item, Component):
-            raise LaunchError(f"composable node description not known statically ({_why(item)})")
-        found.append(item)
-    return tuple(found)
+    unknown = [opaque(f"composable node description not known statically ({_why(item)})") for item in items
+               if not isinstance(item, Component)]
+    return tuple(item for item in items if isinstance(item, Component)) + \
+        tuple(Component(where=where, pkg=reason, plugin=reason) for reason in unknown)
 
 
 # -- the API ------------------------------------------------------------------------------
@@ -370,12 +369,11 @@ def _node(c: CallSite, container: bool = False) -> object:
                 params=params(c.kwargs.get("parameters"), c.line), remaps=_remaps(c.kwargs.get("remappings"), c.line),
                 arguments=_arguments(c.kwargs.get("arguments"), c.line),
                 ros_arguments=_arguments(ros_arguments, c.line) if ros_arguments is not None else None,
-                components=_components(c.kwargs.get("composable_node_descriptions"), c.line) if container else ())
+                components=_components(c.kwargs.get("composable_node_descriptions"), c.where()) if container else ())
 
 
 def _component(c: CallSite) -> object:
-    own = c.kwargs.get("condition")
-    return Component(where=c.where(), conditions=(own,) if isinstance(own, Condition) else (),
+    return Component(where=c.where(), conditions=c.conditions(),
                      pkg=to_parts(c.kwargs.get("package"), c.line), plugin=to_parts(c.kwargs.get("plugin"), c.line),
                      name=optional_parts(c.kwargs.get("name"), c.line),
                      namespace=optional_parts(c.kwargs.get("namespace"), c.line),
@@ -387,7 +385,7 @@ def _load(c: CallSite) -> object:
     target = c.arg(1, "target_container")
     return LoadComponents(where=c.where(), conditions=c.conditions(),
                           target=target if isinstance(target, Node) else to_parts(target, c.line),
-                          components=_components(c.arg(0, "composable_node_descriptions"), c.line))
+                          components=_components(c.arg(0, "composable_node_descriptions"), c.where()))
 
 
 def _group(c: CallSite) -> object:
