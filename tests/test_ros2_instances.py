@@ -3,6 +3,9 @@ them, and their parameters (direct ones, and parameter-file entries whose node k
 
 from __future__ import annotations
 
+from pathlib import Path
+
+from archlog.analysis import analyse
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary
@@ -42,3 +45,21 @@ def test_parameters_reach_the_nodes_whose_key_matches() -> None:
     assert {k: v[0] for k, v in config.params.items()} == {
         "/robot/talker/rate": 10, "/robot/talker/use_sim_time": True, "/robot/talker/topic": "news",
         "/talker/rate": 10, "/talker/use_sim_time": True, "/talker/topic": "news", "/talker/qos.depth": 5}
+
+
+def test_the_first_matching_remap_wins_in_ros2(tmp_path: Path) -> None:
+    """rcl applies the first rule that matches: a set_remap in scope comes before the node's own."""
+    pkg = tmp_path / "src" / "chat"
+    (pkg / "chat").mkdir(parents=True)
+    (pkg / "package.xml").write_text('<package format="3"><name>chat</name><export><build_type>ament_python'
+                                     '</build_type></export></package>')
+    (pkg / "setup.py").write_text('from setuptools import setup\nsetup(name="chat", entry_points={"console_scripts": '
+                                  '["listener = chat.listener:main"]})\n')
+    (pkg / "chat" / "listener.py").write_text(
+        "import rclpy\nfrom std_msgs.msg import String\n\n\ndef main():\n    rclpy.init()\n"
+        "    node = rclpy.create_node('listener')\n    node.create_subscription(String, 'chatter', print, 10)\n")
+    launch = tmp_path / "chat.launch.xml"
+    launch.write_text('<launch>\n  <set_remap from="chatter" to="/from_scope"/>\n  <node pkg="chat" exec="listener">\n'
+                      '    <remap from="chatter" to="/from_node"/>\n  </node>\n</launch>\n')
+    analysis = analyse([tmp_path], [str(launch)], {}, [])
+    assert [row[1:3] for row in analysis.store.rows("subscriber")] == [("/listener", "/from_scope")]

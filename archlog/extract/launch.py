@@ -69,6 +69,7 @@ class LaunchNode:
     # ROS 2: parameters as (node-name pattern, dotted name, value, element); the pattern is "" for
     # parameters given to this node directly, else a parameter file's node key ("/**", "/ns/talker")
     parameters: list[tuple[str, str, object, Element]] = field(default_factory=list)
+    ros2: bool = False  # remaps then apply first-match-wins, as rcl does (roslaunch's last one wins)
 
     @property
     def kind(self) -> tuple[str, str]:

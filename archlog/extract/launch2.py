@@ -450,7 +450,7 @@ class Ros2Launch:
         remaps = arg_remaps + self._scope_remaps(ctx) + self._remaps(action.remaps, action.where, ctx)
         params = arg_params + self._scope_params(ctx) + self._params(action.params, action.where, ctx)
         node = LaunchNode(elem, pkg, exe, full, namespace or "", remaps, ctx.condition, shlex.join(words), declared=full,
-                          chain=ctx.chain, parameters=params)
+                          chain=ctx.chain, parameters=params, ros2=True)
         self.config.nodes.append(node)
         self._launched[id(action)] = full
         for component in action.components:
@@ -629,7 +629,7 @@ class Ros2Launch:
         params = self._scope_params(ctx, key) + self._params(component.params, component.where, ctx, key)
         self.config.nodes.append(LaunchNode(elem, pkg, plugin, full, namespace or "", remaps, ctx.condition,
                                             plugin=plugin, manager=manager, declared=full, chain=ctx.chain,
-                                            parameters=params))
+                                            parameters=params, ros2=True))
 
 
 def dialect_of(path: Path) -> str:

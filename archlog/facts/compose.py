@@ -90,7 +90,8 @@ def add_near_names(store: FactStore, threshold: float) -> None:
 
 
 def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig) -> None:
-    remaps = names.resolve_remaps([(src, dst) for src, dst, _ in node.remaps], node.namespace, node.name)
+    pairs = [(src, dst) for src, dst, _ in node.remaps]
+    remaps = names.resolve_remaps(pairs[::-1] if node.ros2 else pairs, node.namespace, node.name)
     for src, dst, elem in node.remaps:
         store.add("remap", elem.id, node.name, names.resolve(src, node.namespace, node.name),
                   names.resolve(dst, node.namespace, node.name))
