@@ -1,9 +1,11 @@
 """Benchmark: C++ extraction per translation unit, cold (empty result cache) and warm, and the
-share of API calls fully resolved.
+share of API calls fully resolved, per system (each PATH is one), for roscpp and rclcpp apart.
 
     python bench/cpp_bench.py [PATH...]
 
-Uses a fresh cache folder; the one-time PCH build for ros/ros.h is timed separately.
+Uses a fresh cache folder; the one-time PCH builds (ros/ros.h, the rclcpp stand-in) count in the
+first system's setup and first translation unit. A translation unit is one source file read for
+one executable class (a component library's file is read once per component it registers).
 """
 
 from __future__ import annotations
@@ -16,45 +18,56 @@ import time
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.summary import Port
 from archlog.extract.workspace import Workspace
+
+sys.path.insert(0, str(Path(__file__).parent))
+from python_bench import resolution  # noqa: E402  (one definition of "resolved" for every extractor)
 
 ROOT = Path(__file__).resolve().parent.parent
 
 
 def main() -> None:
-    roots = [Path(p) for p in sys.argv[1:]] or [ROOT / "corpus" / "ros1"]
+    roots = [Path(p) for p in sys.argv[1:]] or [ROOT / "corpus" / "ros1", ROOT / "corpus" / "cpp_ros2"]
     with tempfile.TemporaryDirectory() as cache:
         os.environ["ARCHLOG_CACHE_DIR"] = cache
-        from archlog.extract.cpp import CppEnvironment, extract_cpp
-        from archlog.extract.msg_headers import generated_headers
-
-        sink = DiagnosticSink()
-        jobs = []
         for root in roots:
-            workspace = Workspace([root], sink)
-            start = time.perf_counter()
-            env = CppEnvironment([d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
-                                 generated_headers(workspace, sink))
-            setup = time.perf_counter() - start
-            jobs += [(source, exe, env) for p in workspace.packages.values() for exe in p.executables.values()
-                     if exe.lang == "cpp" for source in exe.sources if source.is_file()]
-        print(f"environment (PCH build, message headers): {setup:.2f} s (once per machine / workspace content)")
-        cold, warm, ports = [], [], []
-        for source, exe, env in jobs:
-            for times in (cold, warm):
-                start = time.perf_counter()
-                summary = extract_cpp([source], exe.package, exe.name, env, {}, sink)
-                times.append(time.perf_counter() - start)
-            ports += [p for p in summary.ports if p.kind != "timer"]
-    from python_bench import known  # same definition of "resolved" as for Python
+            system(root)
 
-    resolved = [p for p in ports if known(p.name) and (known(p.handle_ns) or str(p.name).startswith(("/", "~")))
-                and (p.kind.startswith("param") or known(p.type))]
-    print(f"{len(jobs)} translation units: cold median {statistics.median(cold):.3f} s (max {max(cold):.3f}), "
-          f"warm median {statistics.median(warm) * 1000:.1f} ms")
-    print(f"{len(ports)} API calls, {len(resolved)} fully resolved ({100 * len(resolved) / max(len(ports), 1):.1f}%)")
+
+def system(root: Path) -> None:
+    from archlog.extract.cpp import CppEnvironment, extract_cpp, is_ros2_source
+    from archlog.extract.msg_headers import generated_headers
+
+    sink = DiagnosticSink()
+    start = time.perf_counter()
+    workspace = Workspace([root], sink)
+    env = CppEnvironment([d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
+                         generated_headers(workspace, sink), workspace.roots)
+    setup = time.perf_counter() - start
+    units = sorted({(source, exe.cls): exe for p in workspace.packages.values() for exe in p.executables.values()
+                    if exe.lang == "cpp" for source in exe.sources if source.is_file()}.items(), key=str)
+    cold: list[float] = []
+    warm: list[float] = []
+    ports: dict[str, list[Port]] = {"roscpp": [], "rclcpp": []}
+    incomplete = 0
+    for (source, cls), exe in units:
+        for times in (cold, warm):
+            begin = time.perf_counter()
+            summary = extract_cpp([source], exe.package, exe.name, env, {}, sink, cls)
+            times.append(time.perf_counter() - begin)
+        family = "rclcpp" if is_ros2_source(source, env) else "roscpp"
+        ports[family] += [p for p in summary.ports if p.kind != "timer"]
+        incomplete += summary.incomplete is not None
+    print(f"{root.name}: {len(units)} translation units, setup {setup:.2f} s (workspace, environment, PCH)")
+    if units:
+        print(f"  cold median {statistics.median(cold):.3f} s (max {max(cold):.3f}, total {sum(cold):.1f} s), "
+              f"warm median {statistics.median(warm) * 1000:.1f} ms; {incomplete} incomplete; "
+              f"{len(sink.items)} diagnostics")
+    for family, found in ports.items():
+        if found:
+            print(f"  {family}: {resolution(found)}")
 
 
 if __name__ == "__main__":
-    sys.path.insert(0, str(Path(__file__).parent))
     main()

@@ -115,3 +115,19 @@ def test_ros2_components_ament_executables_and_cmake_functions(tmp_path: Path) -
         "fleet::Charger": ("fleet::Charger", ["odometer.cpp", "common.cpp"], 13),
         "fleet::Probe": ("fleet::Probe", ["probe.cpp"], 3),
     }
+
+
+def test_ament_executables_get_the_sources_of_the_libraries_they_link(tmp_path: Path) -> None:
+    manifest = MANIFEST.format("depot").replace("</license>", "</license><buildtool_depend>ament_cmake</buildtool_depend>")
+    package(tmp_path, "depot", {
+        "package.xml": manifest,
+        "CMakeLists.txt": "project(depot)\nadd_library(depot_core src/loader.cpp src/scheduler.cpp src/geometry.cpp)\n"
+                          "add_executable(loader src/loader_main.cpp)\ntarget_link_libraries(loader PRIVATE depot_core)\n",
+        "src/loader_main.cpp": "int main() { auto node = std::make_shared<depot::Loader>(); }\n",
+        "src/loader.cpp": "Loader::Loader(const rclcpp::NodeOptions & options)\n: Node(\"loader\", options) {}\n",
+        "src/scheduler.cpp": "Scheduler::Scheduler()\n: rclcpp::Node(\"scheduler\") {}\n",
+        "src/geometry.cpp": "double area() { return 1.0; }\n",
+    })
+    loader = Workspace([tmp_path], DiagnosticSink()).packages["depot"].executables["loader"]
+    assert [s.name for s in loader.sources] == ["loader_main.cpp", "loader.cpp", "geometry.cpp"]
+

@@ -66,10 +66,12 @@ class CppEnvironment:
     interfaces: Interfaces = field(default_factory=Interfaces)
 
     def __post_init__(self) -> None:
-        system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots()
+        system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
+            [d for d in ("/usr/include/eigen3",) if Path(d).is_dir()]
         includes = [str(p) for p in self.workspace_includes if p.is_dir()]
         includes += [str(self.generated)] if self.generated else []
-        self.args = ["-x", "c++", "-std=c++17", "-Wno-everything", *(f"-I{d}" for d in includes + system)]
+        self.args = ["-x", "c++", "-std=c++17", "-Wno-everything", "-ferror-limit=0",
+                     *(f"-I{d}" for d in includes + system)]
         rdir = resource_dir()
         if rdir:
             self.args += ["-resource-dir", rdir]
@@ -135,11 +137,11 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
                                              "error"))
         result.incomplete = f"{shown}: could not be parsed"
         return result
-    errors = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error and d.location.file
-              and Path(d.location.file.name) == source]
-    gaps = [d for d in errors if stand_ins and _stand_in_gap(d, stand_ins)]
-    errors = [d for d in errors if d not in gaps and not (gaps and _cascade(d, gaps, source))]
-    result = walk(tu, source, shown, incomplete_ast=bool(errors or gaps), cls=cls, ros2=scan.ros2)
+    everywhere = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error]
+    gaps = [d for d in everywhere if stand_ins and _stand_in_gap(d, stand_ins)]
+    genuine = [d for d in everywhere if d not in gaps and not (gaps and _cascade(d, gaps, source))]
+    errors = [d for d in genuine if d.location.file and Path(d.location.file.name) == source]
+    result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2)
     result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
     result.missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
     result.missing += [n for n in scan.missing + scan.dual if n not in result.missing]
@@ -150,13 +152,21 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
                                              "from the tokens", "warning"))
         if result.fallback_lines:
             result.incomplete = f"{shown}:{first.location.line}: does not compile"
+    elif result.fallback_lines and genuine:  # the code compiles, what it includes does not
+        first, line = genuine[0], min(result.fallback_lines)
+        where = f"{Path(first.location.file.name).name}:{first.location.line}: " if first.location.file else ""
+        result.diagnostics.append(Diagnostic(shown, line, "cpp-compile",
+                                             f"C++ does not compile ({where}{first.spelling}); calls here were read "
+                                             "from the tokens", "warning"))
+        result.incomplete = f"{shown}:{line}: read from the tokens"
     elif result.fallback_lines:
-        first = next(d for d in gaps if d.location.line in result.fallback_lines) if any(
-            d.location.line in result.fallback_lines for d in gaps) else gaps[0]
-        result.diagnostics.append(Diagnostic(shown, first.location.line, "cpp-stand-in",
+        own = [d for d in gaps if d.location.file and Path(d.location.file.name) == source]
+        first = next((d for d in own if d.location.line in result.fallback_lines), (own or gaps)[0])
+        line = first.location.line if own else min(result.fallback_lines)
+        result.diagnostics.append(Diagnostic(shown, line, "cpp-stand-in",
                                              f"archlog's stand-in ROS 2 headers lack what this line uses "
                                              f"({first.spelling}); its calls were read from the tokens", "note"))
-        result.incomplete = f"{shown}:{first.location.line}: read from the tokens"
+        result.incomplete = f"{shown}:{line}: read from the tokens"
     return result
 
 
@@ -200,6 +210,11 @@ def _parse_ros2(index: ci.Index, source: Path, env: CppEnvironment,
             break
         wanted += more
     return tu, used
+
+
+def is_ros2_source(source: Path, env: CppEnvironment) -> bool:
+    """ROS 2 code: the file or a workspace header it includes uses rclcpp or ROS 2 interfaces."""
+    return _scan(source, env).ros2
 
 
 @dataclass

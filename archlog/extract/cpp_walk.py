@@ -101,6 +101,7 @@ class _Walker(RclcppWalker):
         self.result = FileResult()
         self.handles: dict[tuple, Value] = {}
         self.param_vars: dict[tuple, Value] = {}
+        self.bindings: dict[tuple, ci.Cursor] = {}  # parameter -> argument, while reading a call's callee
         self.call_sites: dict[tuple, list[ci.Cursor]] = {}
         self.spans: list[tuple[int, int]] | None = None
         self.loops: dict[tuple, ci.Cursor] = {}
@@ -247,6 +248,8 @@ class _Walker(RclcppWalker):
         key = self.key(decl)
         if key in self.param_vars:
             return self.param_vars[key]
+        if key in self.bindings:
+            return self.value(self.bindings[key], depth + 1)
         if decl is None:
             return self.unknown(expr)
         if decl.kind == K.PARM_DECL:

@@ -92,6 +92,13 @@ def node_class(decl: ci.Cursor | None, depth: int = 0) -> bool:
     return False
 
 
+def node_method(ref: ci.Cursor, owner: str) -> bool:
+    """A method of rclcpp's node classes, or one of a class derived from them that wraps it
+    (nav2::LifecycleNode::create_publisher)."""
+    return owner in NODE_CLASSES or (ref.kind in (K.CXX_METHOD, K.FUNCTION_TEMPLATE) and
+                                     node_class(ref.semantic_parent))
+
+
 def is_node_type(type_: ci.Type) -> bool:
     """A node, or a pointer, reference or smart pointer to one."""
     spelling = type_.get_canonical().spelling
@@ -140,6 +147,24 @@ def parameter_names(function: ci.Cursor) -> list[str]:
     return [c.spelling for c in function.get_children() if c.kind == K.PARM_DECL]
 
 
+def derives_from_qos(cls: ci.Cursor | None, depth: int = 0) -> bool:
+    """A class derived (directly or not) from rclcpp::QoS, other than rclcpp's own presets."""
+    if cls is None or depth > 6 or qualified(cls).startswith("rclcpp::"):
+        return False
+    definition = cls.get_definition() or cls
+    return any(qualified(base.referenced) == "rclcpp::QoS" or derives_from_qos(base.referenced, depth + 1)
+               for base in definition.get_children() if base.kind == K.CXX_BASE_SPECIFIER and base.referenced)
+
+
+def default_argument(function: ci.Cursor, index: int) -> ci.Cursor | None:
+    """The default value of a function's parameter, as declared (None when it has none)."""
+    params = [c for c in function.get_children() if c.kind == K.PARM_DECL]
+    if index >= len(params):
+        return None
+    value = [c for c in params[index].get_children() if c.kind not in SKIP]
+    return value[-1] if value else None
+
+
 def binary_operator(expr: ci.Cursor) -> str:
     """The operator of a BINARY_OPERATOR cursor (libclang does not spell it)."""
     children = list(expr.get_children())
@@ -157,6 +182,7 @@ class RclcppWalker:
     file: str
     call_sites: dict[tuple, list[ci.Cursor]]
     param_vars: dict[tuple, Value]
+    bindings: dict[tuple, ci.Cursor]
 
     # -- preparation: what later calls need to know about the whole file --------------------------
     def prepare_ros2(self, cursors: list[ci.Cursor]) -> None:
@@ -295,7 +321,7 @@ class RclcppWalker:
                 return False
         elif ref.kind == K.CONSTRUCTOR and owner in CONSTRUCTED_ROS2:
             self.constructed_ros2(call, owner, args, ref.semantic_parent)
-        elif owner in NODE_CLASSES and name in ENTITIES:
+        elif name in ENTITIES and node_method(ref, owner):
             self.entity(call, ref, ENTITIES[name], args, self.node_ns(self.object_of(call)), name)
         elif (owner, name) in FREE_FUNCTIONS and args:
             self.entity(call, ref, FREE_FUNCTIONS[(owner, name)], args, self.node_ns(args[0]), name)
@@ -307,10 +333,9 @@ class RclcppWalker:
             self.parameter_read(call, name, args)
         elif owner in NODE_CLASSES and name in PARAMETER_WRITES and args:
             self.parameter_write(call, args)
-        elif owner in NODE_CLASSES and name in ("create_wall_timer", "create_timer") and args:
-            self.add("timer", call, self.period(args[0]), "", "")
-        elif owner == "rclcpp" and name in ("create_timer", "create_wall_timer") and len(args) > 2:
-            self.add("timer", call, self.period(args[0 if name == "create_wall_timer" else -2]), "", "")
+        elif name in ("create_wall_timer", "create_timer") and (node_method(ref, owner) or owner == "rclcpp") and \
+                "period" in (params := parameter_names(ref)) and params.index("period") < len(args):
+            self.add("timer", call, self.period(args[params.index("period")]), "", "")
         elif ref.kind == K.CONSTRUCTOR and owner in ("rclcpp::Rate", "rclcpp::WallRate", "rclcpp::GenericRate") \
                 and args:
             hz = number(self.value(args[0])) if isinstance(self.value(args[0]), str) else None
@@ -389,8 +414,9 @@ class RclcppWalker:
         qos: tuple[tuple[str, str], ...] = ()
         if kind in ("publisher", "subscriber"):
             at = next((params.index(p) for p in QOS_PARAMETERS if p in params), -1)
+            given = args[at] if 0 <= at < len(args) else default_argument(ref, at) if at >= 0 else None
             default = "default" if "image_transport" in qualified(ref.semantic_parent) else None
-            qos = self.qos(args[at] if 0 <= at < len(args) else None, call, default)
+            qos = self.qos(given, call, default)
         self.add(kind, call, topic, type_, handle, qos=qos)
         if method.endswith(("Camera", "camera_publisher", "camera_subscription")):
             self.add(kind, call, camera_info(topic), "sensor_msgs/msg/CameraInfo", handle, qos=qos)
@@ -563,6 +589,8 @@ class RclcppWalker:
             return qos
         if ref.kind == K.CONSTRUCTOR and owner == "rclcpp::QoS":
             return self.qos_constructed(args, depth, text)
+        if ref.kind == K.CONSTRUCTOR and derives_from_qos(ref.semantic_parent):
+            return self.qos_subclass(ref, args, depth, text)
         if owner == "rclcpp::QoS" and ref.spelling in ("get_rmw_qos_profile",):
             obj = self.object_of(expr)
             return self.qos_value(obj, depth + 1) if obj is not None else Qos.unknown(text)
@@ -576,6 +604,38 @@ class RclcppWalker:
         if ref.kind in (K.FUNCTION_DECL, K.CXX_METHOD) and (body := self.single_return(ref)) is not None:
             return self.qos_value(body, depth + 1)
         return Qos.unknown(text)
+
+    def qos_subclass(self, ctor: ci.Cursor, args: list[ci.Cursor], depth: int, text: str) -> Qos:
+        """A class derived from rclcpp::QoS (nav2::qos::LatchedPublisherQoS): its constructor's
+        base initializer, with the arguments (or defaults) bound to its parameters, then the
+        builder calls its body makes on `this`."""
+        definition = ctor.get_definition()
+        if definition is None:
+            return Qos.unknown(text)
+        params = [c for c in definition.get_children() if c.kind == K.PARM_DECL]
+        bound = {self.key(p): args[i] if i < len(args) else default_argument(definition, i)
+                 for i, p in enumerate(params)}
+        if any(value is None for value in bound.values()):
+            return Qos.unknown(text)
+        children = list(definition.get_children())
+        body = next((c for c in children if c.kind == K.COMPOUND_STMT), None)
+        base = next((c for c in children if c.kind in (K.CALL_EXPR, K.UNEXPOSED_EXPR)
+                     and (body is None or c.extent.start.offset < body.extent.start.offset)), None)
+        self.bindings.update(bound)
+        try:
+            qos = self.qos_value(base, depth + 1).copy() if base is not None else Qos.unknown(text)
+            for stmt in body.get_children() if body is not None else []:
+                call = strip(stmt)
+                root = self.chain_root(call) if call.kind == K.CALL_EXPR and call.referenced is not None and \
+                    qualified(call.referenced.semantic_parent) == "rclcpp::QoS" else None
+                if root is not None and root.kind == K.CXX_THIS_EXPR:
+                    qos = self.replay(qos, call, depth + 1)
+                else:
+                    qos.unread.append(text)
+        finally:
+            for key in bound:
+                self.bindings.pop(key, None)
+        return qos
 
     def depth_qos(self, expr: ci.Cursor, text: str) -> Qos:
         qos = Qos.preset("default")
@@ -822,7 +882,7 @@ def text_qos(text: str) -> tuple[tuple[str, str], ...]:
     """QoS from the text of an argument, for calls the AST lost: a depth, rclcpp::QoS(n),
     QoS(KeepLast(n)), QoS(KeepAll()), a preset class or rmw profile, then builder calls."""
     text = text.strip()
-    head = re.match(r"^(?:rclcpp::)?(\w+)\s*(?:\((.*?)\))?\s*(?=\.|$)", text)
+    head = re.match(r"^(?:rclcpp::)?(\w+)\s*(?:\((.*?)\)|\{(.*?)\})?\s*(?=\.|$)", text)
     if re.fullmatch(r"\d+", text):
         qos = Qos.preset("default")
         qos.initialise("keep_last", text, text)
@@ -830,8 +890,8 @@ def text_qos(text: str) -> tuple[tuple[str, str], ...]:
     if head is None or head.group(1) not in PRESET_NAMES:
         return Qos.unknown(text).facts()
     qos = Qos.preset(PRESET_NAMES[head.group(1)])
-    inner = (head.group(2) or "").strip()
-    last = re.fullmatch(r"(?:rclcpp::)?KeepLast\(\s*(\d+)\s*\)\)?|(\d+)", inner)
+    inner = (head.group(2) or head.group(3) or "").strip()
+    last = re.fullmatch(r"(?:rclcpp::)?KeepLast\s*[({]\s*(\d+)\s*[)}]\)?|(\d+)", inner)
     if head.group(1) == "QoS":
         if last is None and "KeepAll" not in inner:
             return Qos.unknown(text).facts()

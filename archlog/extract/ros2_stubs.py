@@ -1,7 +1,7 @@
 """Stand-in headers for ROS 2 C++ code when its headers are not installed.
 
 Two kinds: the client libraries (rclcpp, rclcpp_lifecycle, rclcpp_action, rclcpp_components,
-tf2_ros, image_transport, message_filters, diagnostic_updater, rmw) are declared once, by hand,
+tf2_ros, image_transport, message_filters, diagnostic_updater, bondcpp, rmw) are declared once, by hand,
 in `stand_ins/archlog_ros2/*.hpp` with their real qualified names and signatures; a missing
 `#include "rclcpp/node.hpp"` gets a one-line header forwarding to them. Message, service and
 action headers (`std_msgs/msg/string.hpp`) are generated: the struct templates rosidl would
@@ -11,8 +11,8 @@ core interfaces below, Debian's ROS 1 definitions of the common packages) and wi
 name as the code spells it otherwise.
 
 Only missing includes get stand-ins. ROS 1 headers of packages that exist in both ROS versions
-under the same include names (tf2_ros, image_transport, message_filters, diagnostic_updater)
-do not count as present for ROS 2 code. The headers of one translation unit go to a folder named
+under the same include names (tf2_ros, image_transport, message_filters, diagnostic_updater,
+bondcpp) do not count as present for ROS 2 code. The headers of one translation unit go to a folder named
 after their content, searched before every other include folder.
 """
 
@@ -33,9 +33,9 @@ API_DIR = Path(__file__).with_name("stand_ins")
 API = {"rclcpp": "rclcpp", "rmw": "rclcpp", "rcl": "rclcpp", "rclcpp_lifecycle": "rclcpp_lifecycle",
        "rclcpp_action": "rclcpp_action", "rclcpp_components": "rclcpp_components", "tf2_ros": "tf2_ros",
        "image_transport": "image_transport", "message_filters": "message_filters",
-       "diagnostic_updater": "diagnostic_updater"}
+       "diagnostic_updater": "diagnostic_updater", "bondcpp": "bondcpp"}
 # ROS 1 packages whose headers have the same include names as in ROS 2
-DUAL = {"tf2_ros", "image_transport", "message_filters", "diagnostic_updater"}
+DUAL = {"tf2_ros", "image_transport", "message_filters", "diagnostic_updater", "bondcpp"}
 INTERFACE_INCLUDE = re.compile(r"^(\w+)/(msg|srv|action)/(\w+)\.hpp$")
 ROS2_MARKERS = re.compile(r'^\s*#\s*include\s*[<"](?:rclcpp\w*/|\w+/(?:msg|srv|action)/\w+\.hpp)', re.M)
 _INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)

@@ -18,6 +18,8 @@ from archlog.extract.cmake import commands
 
 SKIP_DIRS = {"build", "devel", "install", "log", "node_modules", "__pycache__"}
 _REGISTER_NODE = re.compile(r"^[ \t]*RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)", re.M)
+_NODE_CONSTRUCTOR = re.compile(r"\b(\w+)::\1\s*\([^)]*\)\s*:\s*(?:[\w:]*::)?(?:Node|LifecycleNode)\s*\(")
+_LINK_WORDS = {"PRIVATE", "PUBLIC", "INTERFACE", "debug", "optimized", "general"}
 _LIBRARY_WORDS = {"SHARED", "STATIC", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL", "WIN32", "MACOSX_BUNDLE",
                   "NO_TARGET_LINK_LIBRARIES", "PRIVATE", "PUBLIC", "INTERFACE"}
 SOURCE_SUFFIXES = {".cpp", ".cc", ".cxx", ".c++", ".C"}
@@ -35,6 +37,7 @@ class Executable:
     sources: list[Path]
     line: int = 0
     cls: str | None = None
+    target: str = ""  # the CMake target it is built from
 
 
 @dataclass
@@ -45,6 +48,8 @@ class Package:
     plugin_xml: list[str] = field(default_factory=list)
     include_dirs: list[Path] = field(default_factory=list)
     libraries: dict[str, list[Path]] = field(default_factory=dict)
+    ament: bool = False  # a ROS 2 package (built with ament_cmake or ament_python)
+    links: dict[str, list[str]] = field(default_factory=dict)  # CMake target -> libraries it links
 
 
 def share_dirs() -> list[Path]:
@@ -98,17 +103,19 @@ class Workspace:
             parsed = parse_package(str(manifest))
             name = parsed.name
             plugin_xml = [e.attributes["plugin"] for e in parsed.exports if "plugin" in e.attributes]
+            ament = any(d.name.startswith("ament_") for d in parsed.buildtool_depends) or any(
+                e.tagname == "build_type" and (e.content or "").startswith("ament_") for e in parsed.exports)
         except (InvalidPackage, Exception) as exc:  # catkin_pkg raises several error types
             match = re.search(r"<name>\s*([^<\s]+)\s*</name>", manifest.read_text(errors="replace"))
             self.diagnostics.add(self.display(manifest), 1, "package-xml", f"invalid package.xml: {_first_line(exc)}")
             if not match:
                 return
-            name, plugin_xml = match.group(1), []
+            name, plugin_xml, ament = match.group(1), [], False
         if name in self.packages:
             self.diagnostics.add(self.display(manifest), 1, "duplicate-package",
                                  f"package {name} also found at {self.display(self.packages[name].path)}; using the first")
             return
-        package = Package(name, folder, plugin_xml=plugin_xml)
+        package = Package(name, folder, plugin_xml=plugin_xml, ament=ament)
         self.packages[name] = package
         self._cmake_executables(package)
         self._entry_points(package)
@@ -118,6 +125,26 @@ class Workspace:
 
     def _cmake_executables(self, package: Package) -> None:
         self._cmake_dir(package, package.path, {"CMAKE_CURRENT_SOURCE_DIR": str(package.path)}, depth=0)
+        if package.ament:
+            self._linked_sources(package)
+
+    @staticmethod
+    def _linked_sources(package: Package) -> None:
+        """ROS 2 packages often build the node class into a library of their own that the
+        executable links (target_link_libraries): its sources belong to the executable, except
+        those defining a node class the executable's own sources never name."""
+        for exe in package.executables.values():
+            if exe.lang != "cpp" or exe.cls is not None:
+                continue
+            own = "\n".join(s.read_text(errors="replace") for s in exe.sources if s.is_file())
+            pending, seen = list(package.links.get(exe.target, [])), set()
+            while pending:
+                library = pending.pop(0)
+                if library in package.libraries and library not in seen:
+                    seen.add(library)
+                    exe.sources += [s for s in package.libraries[library] if s not in exe.sources
+                                    and all(re.search(rf"\b{c}\b", own) for c in _node_classes(s))]
+                    pending += package.links.get(library, [])
 
     def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int) -> None:
         """Read one CMakeLists.txt; add_subdirectory() folders inherit a copy of the variables."""
@@ -136,7 +163,8 @@ class Workspace:
                     "IMPORTED" not in c.args and "ALIAS" not in c.args:
                 target = c.args[0]
                 name = output_names.get(target, target)
-                package.executables[name] = Executable(package.name, name, "cpp", _sources(folder, c.args), c.line)
+                package.executables[name] = Executable(package.name, name, "cpp", _sources(folder, c.args), c.line,
+                                                       target=target)
             elif c.name in ("add_library", "cuda_add_library", "ament_auto_add_library") and c.args:
                 package.libraries[c.args[0]] = _sources(folder, c.args)
             elif c.name == "target_sources" and c.args:
@@ -146,6 +174,8 @@ class Workspace:
                 exe = package.executables.get(output_names.get(c.args[0], c.args[0]))
                 if exe is not None and exe.cls is None:
                     exe.sources += extra
+            elif c.name == "target_link_libraries" and c.args:
+                package.links.setdefault(c.args[0], []).extend(a for a in c.args[1:] if a not in _LINK_WORDS)
             elif c.name in ("rclcpp_components_register_node", "rclcpp_components_register_nodes") and c.args:
                 self._registered_components(package, c.name, c.args, c.line)
             elif c.name == "include_directories":
@@ -251,6 +281,12 @@ def manifests(root: Path) -> list[Path]:
             found.append(Path(dirpath) / "package.xml")
             dirnames[:] = []
     return found
+
+
+def _node_classes(source: Path) -> list[str]:
+    """Node classes a C++ file defines: constructors whose base initializer is a Node."""
+    text = source.read_text(errors="replace") if source.is_file() else ""
+    return sorted(set(_NODE_CONSTRUCTOR.findall(text)))
 
 
 def registered_components(text: str) -> list[tuple[str, int]]:

@@ -43,6 +43,19 @@
 #include "rcl_interfaces/msg/parameter_descriptor.hpp"
 #include "rcl_interfaces/msg/set_parameters_result.hpp"
 
+// rclcpp/version.h: the API declared here is Jazzy's
+#define RCLCPP_VERSION_MAJOR (28)
+#define RCLCPP_VERSION_MINOR (1)
+#define RCLCPP_VERSION_PATCH (0)
+#define RCLCPP_VERSION_STR "28.1.0"
+#define RCLCPP_VERSION_GTE(major, minor, patch) ( \
+    (major < RCLCPP_VERSION_MAJOR) ? true : \
+    (major > RCLCPP_VERSION_MAJOR) ? false : \
+    (minor < RCLCPP_VERSION_MINOR) ? true : \
+    (minor > RCLCPP_VERSION_MINOR) ? false : \
+    (patch < RCLCPP_VERSION_PATCH) ? true : \
+    (patch > RCLCPP_VERSION_PATCH) ? false : true)
+
 #define RCLCPP_PUBLIC
 #define RCLCPP_LOCAL
 #define RCLCPP_PUBLIC_TYPE
@@ -320,11 +333,25 @@ public:
   static Time max(rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
 };
 
+struct PreShutdownCallbackHandle
+{
+  std::weak_ptr<std::function<void()>> callback;
+};
+struct OnShutdownCallbackHandle
+{
+  std::weak_ptr<std::function<void()>> callback;
+};
+
 class Context
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Context)
   bool is_valid() const;
+  bool shutdown(const std::string & reason);
+  OnShutdownCallbackHandle add_on_shutdown_callback(std::function<void()> callback);
+  bool remove_on_shutdown_callback(const OnShutdownCallbackHandle & callback_handle);
+  PreShutdownCallbackHandle add_pre_shutdown_callback(std::function<void()> callback);
+  bool remove_pre_shutdown_callback(const PreShutdownCallbackHandle & callback_handle);
 };
 
 class Clock
@@ -704,12 +731,33 @@ struct QOSOfferedIncompatibleQoSInfo
   int last_policy_kind;
 };
 using QOSRequestedIncompatibleQoSInfo = QOSOfferedIncompatibleQoSInfo;
+using QOSDeadlineOfferedCallbackType = std::function<void (QOSDeadlineOfferedInfo &)>;
+using QOSDeadlineRequestedCallbackType = std::function<void (QOSDeadlineRequestedInfo &)>;
+using QOSLivelinessChangedCallbackType = std::function<void (QOSLivelinessChangedInfo &)>;
+using QOSLivelinessLostCallbackType = std::function<void (QOSLivelinessLostInfo &)>;
+using QOSOfferedIncompatibleQoSCallbackType = std::function<void (QOSOfferedIncompatibleQoSInfo &)>;
+using QOSRequestedIncompatibleQoSCallbackType = std::function<void (QOSRequestedIncompatibleQoSInfo &)>;
+struct QOSMessageLostInfo
+{
+  size_t total_count;
+  size_t total_count_change;
+};
+using QOSMessageLostCallbackType = std::function<void (QOSMessageLostInfo &)>;
+struct IncompatibleTypeInfo
+{
+  int32_t total_count;
+  int32_t total_count_change;
+};
+using IncompatibleTypeCallbackType = std::function<void (IncompatibleTypeInfo &)>;
+using PublisherMatchedCallbackType = std::function<void (MatchedInfo &)>;
+using SubscriptionMatchedCallbackType = std::function<void (MatchedInfo &)>;
 struct PublisherEventCallbacks
 {
   std::function<void (QOSDeadlineOfferedInfo &)> deadline_callback;
   std::function<void (QOSLivelinessLostInfo &)> liveliness_callback;
   std::function<void (QOSOfferedIncompatibleQoSInfo &)> incompatible_qos_callback;
   std::function<void (MatchedInfo &)> matched_callback;
+  IncompatibleTypeCallbackType incompatible_type_callback;
 };
 struct SubscriptionEventCallbacks
 {
@@ -717,6 +765,8 @@ struct SubscriptionEventCallbacks
   std::function<void (QOSLivelinessChangedInfo &)> liveliness_callback;
   std::function<void (QOSRequestedIncompatibleQoSInfo &)> incompatible_qos_callback;
   std::function<void (MatchedInfo &)> matched_callback;
+  QOSMessageLostCallbackType message_lost_callback;
+  IncompatibleTypeCallbackType incompatible_type_callback;
 };
 enum class QosPolicyKind { AvoidRosNamespaceConventions, Deadline, Depth, Durability, History, Lifespan, Liveliness,
   LivelinessLeaseDuration, Reliability };
@@ -902,6 +952,10 @@ public:
   virtual const char * get_namespace() const = 0;
   virtual const char * get_fully_qualified_name() const = 0;
   virtual rclcpp::CallbackGroup::SharedPtr get_default_callback_group() = 0;
+  virtual rclcpp::CallbackGroup::SharedPtr create_callback_group(
+    rclcpp::CallbackGroupType group_type, bool automatically_add_to_executor_with_node = true) = 0;
+  virtual bool get_use_intra_process_default() const = 0;
+  virtual rclcpp::Context::SharedPtr get_context() = 0;
 };
 #define ARCHLOG_NODE_INTERFACE(Name) \
   class Name \
@@ -910,7 +964,13 @@ public: \
     RCLCPP_SMART_PTR_ALIASES_ONLY(Name) \
     virtual ~Name(); \
   };
-ARCHLOG_NODE_INTERFACE(NodeClockInterface)
+class NodeClockInterface
+{
+public:
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeClockInterface)
+  virtual ~NodeClockInterface();
+  virtual rclcpp::Clock::SharedPtr get_clock() = 0;
+};
 ARCHLOG_NODE_INTERFACE(NodeGraphInterface)
 ARCHLOG_NODE_INTERFACE(NodeLoggingInterface)
 ARCHLOG_NODE_INTERFACE(NodeServicesInterface)
@@ -926,6 +986,23 @@ public:
   RCLCPP_SMART_PTR_ALIASES_ONLY(NodeParametersInterface)
   virtual ~NodeParametersInterface();
   virtual bool has_parameter(const std::string & name) const = 0;
+  virtual const rclcpp::ParameterValue & declare_parameter(
+    const std::string & name, const rclcpp::ParameterValue & default_value,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor(),
+    bool ignore_override = false) = 0;
+  virtual const rclcpp::ParameterValue & declare_parameter(
+    const std::string & name, rclcpp::ParameterType type,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor(),
+    bool ignore_override = false) = 0;
+  virtual void undeclare_parameter(const std::string & name) = 0;
+  virtual std::vector<rclcpp::Parameter> get_parameters(const std::vector<std::string> & names) const = 0;
+  virtual rclcpp::Parameter get_parameter(const std::string & name) const = 0;
+  virtual bool get_parameter(const std::string & name, rclcpp::Parameter & parameter) const = 0;
+  virtual std::vector<rcl_interfaces::msg::SetParametersResult> set_parameters(
+    const std::vector<rclcpp::Parameter> & parameters) = 0;
+  virtual const std::map<std::string, rclcpp::ParameterValue> & get_parameter_overrides() const = 0;
 };
 struct OnSetParametersCallbackHandle
 {
@@ -1164,6 +1241,11 @@ template<typename NodeT, typename CallbackT>
 typename rclcpp::GenericTimer<CallbackT>::SharedPtr create_timer(
   NodeT node, rclcpp::Clock::SharedPtr clock, rclcpp::Duration period, CallbackT && callback,
   rclcpp::CallbackGroup::SharedPtr group = nullptr);
+template<typename DurationRepT, typename DurationT, typename CallbackT>
+typename rclcpp::GenericTimer<CallbackT>::SharedPtr create_timer(
+  rclcpp::Clock::SharedPtr clock, std::chrono::duration<DurationRepT, DurationT> period, CallbackT callback,
+  rclcpp::CallbackGroup::SharedPtr group, node_interfaces::NodeBaseInterface * node_base,
+  node_interfaces::NodeTimersInterface * node_timers, bool autostart = true);
 template<typename DurationRepT, typename DurationT, typename CallbackT>
 typename rclcpp::WallTimer<CallbackT>::SharedPtr create_wall_timer(
   std::chrono::duration<DurationRepT, DurationT> period, CallbackT callback, rclcpp::CallbackGroup::SharedPtr group,

@@ -111,6 +111,33 @@ class MessageFilterBase
 {
 public:
   virtual ~MessageFilterBase();
+  virtual void clear() = 0;
+  virtual void setTargetFrame(const std::string & target_frame) = 0;
+  virtual void setTolerance(const rclcpp::Duration & tolerance) = 0;
+};
+
+template<class M, class BufferT = tf2_ros::Buffer>
+class MessageFilter : public MessageFilterBase
+{
+public:
+  using MConstPtr = std::shared_ptr<const M>;
+  template<class F, class TimeRepT = double, class TimeT = std::ratio<1>>
+  MessageFilter(
+    F & f, BufferT & buffer, const std::string & target_frame, uint32_t queue_size,
+    const rclcpp::node_interfaces::NodeLoggingInterface::SharedPtr & node_logging,
+    const rclcpp::node_interfaces::NodeClockInterface::SharedPtr & node_clock,
+    std::chrono::duration<TimeRepT, TimeT> buffer_timeout = std::chrono::duration<TimeRepT, TimeT>::max());
+  template<class NodeT, class TimeRepT = double, class TimeT = std::ratio<1>>
+  MessageFilter(
+    BufferT & buffer, const std::string & target_frame, uint32_t queue_size, const NodeT & node,
+    std::chrono::duration<TimeRepT, TimeT> buffer_timeout = std::chrono::duration<TimeRepT, TimeT>::max());
+  void clear() override;
+  void setTargetFrame(const std::string & target_frame) override;
+  void setTolerance(const rclcpp::Duration & tolerance) override;
+  template<class F>
+  void connectInput(F & f);
+  template<typename C>
+  void registerCallback(const C & callback);
 };
 }  // namespace tf2_ros
 
