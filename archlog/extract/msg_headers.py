@@ -18,9 +18,10 @@ DRIVER = Path(__file__).with_name("gencpp_driver.py")
 
 
 def generated_headers(workspace: Workspace, diagnostics: DiagnosticSink) -> Path | None:
-    """An include folder with headers for every workspace message, or None when there are none
-    (or gencpp is not installed: then ports using them are read without their types)."""
-    files = [(p.name, f) for p in workspace.packages.values() for kind in ("msg", "srv", "action")
+    """An include folder with headers for every workspace message of ROS 1 packages, or None when
+    there are none (or gencpp is not installed: then ports using them are read without their
+    types). ROS 2 packages' interfaces get stand-ins from their definitions instead (ros2_stubs.py)."""
+    files = [(p.name, f) for p in workspace.packages.values() if not p.ament for kind in ("msg", "srv", "action")
              for f in sorted((p.path / kind).glob(f"*.{kind}"))]
     if not files:
         return None
