@@ -56,6 +56,7 @@ _RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "get_
                "create_timer"}
 _PARAMETER_VALUES = {"value", "string_value", "integer_value", "double_value", "bool_value"}
 _KIND = {ast.AugAssign: "augmented assignment", ast.For: "loop variable", ast.With: "with target"}
+_BRANCHING = (ast.If, ast.For, ast.While, ast.Try, ast.AsyncFor, ast.Match)
 
 
 def extract_python(path: Path, package: str, executable: str, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
@@ -342,26 +343,30 @@ class _Extractor:
 
     def parameter(self, scope: _Function, name: str, at: ast.expr, depth: int) -> Value:
         """A parameter takes the value all call sites in the file pass (or its default)."""
+        values = {self.value(passed, depth + 1, caller) if passed is not None else self.unknown(at)
+                  for passed, caller in self.arguments(scope, name)}
+        if len(values) == 1:
+            return next(iter(values))
+        return self.unknown(at, "call sites pass different values" if values else "parameter not passed in this file")
+
+    def arguments(self, scope: _Function, name: str) -> list[tuple[ast.expr | None, _Function | None]]:
+        """What each call site in the file passes for a parameter (its default when it passes
+        nothing), with the caller's scope; the default alone when no call site is in the file."""
         args = scope.node.args
         positional = [a.arg for a in args.args]
         if scope.cls and positional and positional[0] in ("self", "cls"):
             positional = positional[1:]
         defaults = dict(zip([a.arg for a in args.args][len(args.args) - len(args.defaults):], args.defaults))
         defaults.update({a.arg: d for a, d in zip(args.kwonlyargs, args.kw_defaults) if d is not None})
-        values = set()
+        found: list[tuple[ast.expr | None, _Function | None]] = []
         for call, _bound in self.calls.get((scope.cls, scope.node.name), []):
             passed = next((kw.value for kw in call.keywords if kw.arg == name), None)
             if passed is None and name in positional and positional.index(name) < len(call.args):
                 passed = call.args[positional.index(name)]
-            if passed is None:
-                passed = defaults.get(name)
-            caller = self.function_of(call)
-            values.add(self.value(passed, depth + 1, caller) if passed is not None else self.unknown(at))
-        if not values and name in defaults:
-            values.add(self.value(defaults[name], depth + 1, scope))
-        if len(values) == 1:
-            return next(iter(values))
-        return self.unknown(at, "call sites pass different values" if values else "parameter not passed in this file")
+            found.append((passed if passed is not None else defaults.get(name), self.function_of(call)))
+        if not found and name in defaults:
+            found.append((defaults[name], scope))
+        return found
 
     def function_of(self, node: ast.AST) -> _Function | None:
         for function in self.functions.values():
@@ -537,11 +542,18 @@ class _Extractor:
                         f"QoSPresetProfiles.{str(expr.args[0].value).upper()}")):
                 return Qos.preset(preset)
         if isinstance(expr, ast.Name) and (assigned := self.assigned(expr, scope)):
-            qos = self.qos_value(assigned[-1], depth + 1, scope if assigned is not self.module_assigns.get(expr.id)
-                                 else None, line).copy()
-            for target, value in self.attribute_sets(expr.id, scope, line):
-                self.qos_set(qos, target, value, scope)
+            where = None if assigned == [e for e in self.module_assigns.get(expr.id, []) if isinstance(e, ast.expr)] \
+                else scope
+            qos = self.one_qos([(value, where) for value in assigned], depth, line, text)
+            for target, value, conditional in self.attribute_sets(expr.id, where, line):
+                self.qos_set(qos, target, value, where)
+                if conditional:
+                    qos.set(target, None, ast.unparse(value))
             return qos
+        if isinstance(expr, ast.Name) and scope is not None and expr.id in [a.arg for a in scope.node.args.args +
+                                                                            scope.node.args.kwonlyargs]:
+            passed = [(e, caller) for e, caller in self.arguments(scope, expr.id) if e is not None]
+            return self.one_qos(passed, depth, line, text) if passed else Qos.unknown(text)
         if _is_self_attr(expr) and scope is not None and scope.cls and \
                 (values := self.class_attrs.get(scope.cls, {}).get(expr.attr)):
             last = values[-1]
@@ -554,18 +566,29 @@ class _Extractor:
             return qos
         return Qos.unknown(text)
 
+    def one_qos(self, sources: list[tuple[ast.expr, _Function | None]], depth: int, line: int, text: str) -> Qos:
+        """The QoS several expressions agree on (if/else branches, call sites), else unknown."""
+        found = [self.qos_value(e, depth + 1, where, getattr(e, "lineno", line)) for e, where in sources]
+        if found and all(q.facts() == found[0].facts() for q in found):
+            return found[0].copy()
+        return Qos.unknown(text)
+
     def assigned(self, expr: ast.Name, scope: _Function | None) -> list[ast.expr]:
         """The values assigned to a name, in its function or else at module level."""
         found = scope.assigns.get(expr.id) if scope is not None else None
         found = found if found else self.module_assigns.get(expr.id, [])
         return [e for e in found if isinstance(e, ast.expr)]
 
-    def attribute_sets(self, variable: str, scope: _Function | None, line: int) -> list[tuple[str, ast.expr]]:
-        """`variable.policy = value` statements before `line`, in the function (or module)."""
+    def attribute_sets(self, variable: str, scope: _Function | None, line: int) -> list[tuple[str, ast.expr, bool]]:
+        """`variable.policy = value` statements before `line`, in the function (or module), and
+        whether they run only under a condition (in an if, a loop, a try)."""
         body = scope.node.body if scope is not None else self.tree.body
-        return [(target.attr, node.value) for node in _in_scope(body) if isinstance(node, ast.Assign)
-                and node.lineno < line for target in node.targets if isinstance(target, ast.Attribute)
-                and isinstance(target.value, ast.Name) and target.value.id == variable]
+        conditional = {id(n) for block in _in_scope(body) if isinstance(block, _BRANCHING)
+                       for child in ast.iter_child_nodes(block) for n in _in_scope([child])}
+        return [(target.attr, node.value, id(node) in conditional) for node in _in_scope(body)
+                if isinstance(node, ast.Assign) and node.lineno < line for target in node.targets
+                if isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name)
+                and target.value.id == variable]
 
     def qos_profile(self, call: ast.Call, scope: _Function | None) -> Qos:
         """QoSProfile(history=..., depth=..., reliability=..., ...): rmw's default profile for

@@ -62,6 +62,7 @@ _CHRONO = re.compile(r"^std::(?:__\w+::)?chrono::duration<[^,<>]+(?:,\s*std::(?:
                      r"(?:,\s*(\d+)[lLuU]*)?>)?\s*>$")
 _CONDITIONAL = (K.IF_STMT, K.FOR_STMT, K.WHILE_STMT, K.DO_STMT, K.SWITCH_STMT, K.CXX_FOR_RANGE_STMT,
                 K.CONDITIONAL_OPERATOR, K.CASE_STMT, K.DEFAULT_STMT)
+_PARAMETER_HELPER = re.compile(r"^(?:declare|get)_\w*param", re.I)
 _INFINITE = Fraction(9223372036)
 _RMW_UNSPECIFIED = {"RMW_DURATION_UNSPECIFIED", "RMW_QOS_DEADLINE_DEFAULT", "RMW_QOS_LIFESPAN_DEFAULT",
                     "RMW_QOS_LIVELINESS_LEASE_DURATION_DEFAULT", "RMW_QOS_DEADLINE_BEST_AVAILABLE",
@@ -156,6 +157,18 @@ def derives_from_qos(cls: ci.Cursor | None, depth: int = 0) -> bool:
                for base in definition.get_children() if base.kind == K.CXX_BASE_SPECIFIER and base.referenced)
 
 
+def parameter_helper(ref: ci.Cursor) -> tuple[int, int | None] | None:
+    """A function wrapping rclcpp's parameter API (nav2's declare_parameter_if_not_declared,
+    declare_or_get_parameter...): the positions of its name and default value, by their names."""
+    if not _PARAMETER_HELPER.match(ref.spelling) or qualified(ref.semantic_parent) in NODE_CLASSES:
+        return None
+    params = parameter_names(ref)
+    at = next((params.index(p) for p in ("parameter_name", "param_name", "name") if p in params), None)
+    if at is None:
+        return None
+    return at, next((params.index(p) for p in ("default_value", "value", "default") if p in params), None)
+
+
 def default_argument(function: ci.Cursor, index: int) -> ci.Cursor | None:
     """The default value of a function's parameter, as declared (None when it has none)."""
     params = [c for c in function.get_children() if c.kind == K.PARM_DECL]
@@ -212,14 +225,13 @@ class RclcppWalker:
     def prepare_call(self, call: ci.Cursor) -> None:
         ref, args = call.referenced, written_args(call)
         owner = qualified(ref.semantic_parent)
-        if call.spelling == "declare_parameter" and len(args) > 1 and \
-                (owner in NODE_CLASSES or owner == "nav2_util"):
-            offset = 1 if owner == "nav2_util" else 0
-            if len(args) > offset + 1 and isinstance(name := self.value(args[offset]), str):
-                self.declared.setdefault(name, args[offset + 1])
-        elif call.spelling == "declare_parameter_if_not_declared" and len(args) > 2 and \
-                isinstance(name := self.value(args[1]), str):
-            self.declared.setdefault(name, args[2])
+        helper = parameter_helper(ref)
+        if call.spelling == "declare_parameter" and owner in NODE_CLASSES and len(args) > 1 and \
+                isinstance(name := self.value(args[0]), str):
+            self.declared.setdefault(name, args[1])
+        elif helper is not None and helper[1] is not None and len(args) > max(helper[0], helper[1]) and \
+                isinstance(name := self.value(args[helper[0]]), str):
+            self.declared.setdefault(name, args[helper[1]])
         elif call.spelling in ("operator=",) and len(args) == 2 and (sub := self.sub_node_call(args[1])) is not None:
             target = strip(args[0])
             if target.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR):
@@ -331,6 +343,12 @@ class RclcppWalker:
             self.constructed_ros2(call, owner, args, ref.semantic_parent)
         elif owner in NODE_CLASSES and name in PARAMETER_READS and args:
             self.parameter_read(call, name, args)
+        elif (helper := parameter_helper(ref)) is not None and helper[0] < len(args):
+            at, default = helper
+            given = args[default] if default is not None and default < len(args) else None
+            pname = self.value(args[at])
+            fallback = given if given is not None else self.declared.get(pname) if isinstance(pname, str) else None
+            self.add("param_read", call, pname, "", "~", self.value(fallback) if fallback is not None else None)
         elif owner in NODE_CLASSES and name in PARAMETER_WRITES and args:
             self.parameter_write(call, args)
         elif name in ("create_wall_timer", "create_timer") and (node_method(ref, owner) or owner == "rclcpp") and \
@@ -491,6 +509,10 @@ class RclcppWalker:
             else:
                 default = args[-1] if name == "get_parameter_or" and len(args) > 1 else None
             return self.parameter_value(pname, default, expr)
+        if (helper := parameter_helper(expr.referenced)) is not None and helper[0] < len(args) and \
+                isinstance(pname := self.value(args[helper[0]], depth + 1), str):
+            given = args[helper[1]] if helper[1] is not None and helper[1] < len(args) else None
+            return self.parameter_value(pname, given, expr)
         if owner in ("rclcpp::Parameter", "rclcpp::ParameterValue") and (name.startswith("as_") or name in (
                 "get_value", "get", "get_parameter_value")):
             obj = self.object_of(expr)

@@ -45,8 +45,17 @@ class Watchdog(Node):
         self.create_subscription(UInt32, 'beat_short', self.on_beat,
                                  QoSPresetProfiles.get_from_short_key('services_default'))
         self.create_subscription(UInt32, 'beat_computed', self.on_beat, self.pick_profile())
+        self.feed_pub = self.make_feed('feed', QoSProfile(depth=2))
+
+        flaky = QoSProfile(depth=4)
+        if self.get_parameter('strict').value:
+            flaky.reliability = QoSReliabilityPolicy.BEST_EFFORT
+        self.flaky_pub = self.create_publisher(UInt32, 'flaky', flaky)
         self.timer = self.create_timer(timeout, self.check)
         self.last = None
+
+    def make_feed(self, topic, profile):
+        return self.create_publisher(UInt32, topic, profile)
 
     def pick_profile(self):
         return qos_profile_sensor_data if self.get_parameter('strict').value else qos_profile_system_default
