@@ -68,3 +68,19 @@ def test_near_miss_on_a_dangling_publisher_whose_counterpart_is_connected() -> N
     [finding] = ENGINE.run(store)[1]
     assert (finding.rule.id, finding.location.line, finding.values["role"]) == ("AL102", 3, "publishes")
     assert [r.line for r in finding.related] == [2]
+
+
+def test_unreachable_required_input_lists_what_it_silences() -> None:
+    """AL601 is reported once at the root, listing the outputs held back, the near-miss publishers
+    and the nodes silenced downstream (the list columns of its header)."""
+    from pathlib import Path
+
+    from archlog.queries.rule_tests import load_facts
+
+    case = Path(__file__).resolve().parent.parent / "archlog/rules/builtin/tests/AL601_required_input_unreachable"
+    [finding] = [f for f in ENGINE.run(load_facts(case / "facts.json"))[1] if f.rule.id == "AL601"]
+    assert finding.values["outputs"] == "/trajectory"
+    assert finding.values["near"] == "/odom_pos"
+    assert finding.values["silenced"] == "/follower"
+    assert (finding.location.file, finding.location.line) == ("lattice.cpp", 20)
+    assert [(r.file, r.line) for r in finding.related] == [("lattice.cpp", 40)]

@@ -29,6 +29,57 @@ class Port:
     condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
 
 
+@dataclass(frozen=True)
+class Site:
+    """A port's call in the source: publish calls and state writes name the port they belong to
+    (a publisher, or the timer, subscriber or service whose callback reaches them) by its site."""
+
+    file: str
+    line: int
+
+
+TRIGGERS = ("timer", "loop", "callback", "startup", "unknown")
+# state values: what a guard tests and what a write makes true; "?" is a value not known statically
+STATE_VALUES = ("true", "false", "set", "unset", "empty", "nonempty", "?")
+
+
+@dataclass(frozen=True)
+class Guard:
+    """A condition on every path to a publish: state variable `var` must hold `value`
+    (true/false, set/unset for a pointer or None, empty/nonempty for a container, or a constant)."""
+
+    var: str
+    value: str
+    file: str
+    line: int
+
+
+@dataclass(frozen=True)
+class Publish:
+    """One publish call, one way it is reached: a timer or loop, the callback of `source` (a
+    subscriber or service port), start-up code, or unknown; with the guards on that path."""
+
+    publisher: Site | None
+    file: str
+    line: int
+    trigger: str
+    source: Site | None = None
+    guards: tuple[Guard, ...] = ()
+    period: Value | None = None  # a loop's period in seconds (trigger "loop")
+
+
+@dataclass(frozen=True)
+class StateWrite:
+    """A state variable set to `value`: by the callback of `source`, or at start-up (initial
+    value, constructor) when `source` is None."""
+
+    var: str
+    value: str
+    source: Site | None
+    file: str
+    line: int
+
+
 @dataclass
 class NodeSummary:
     """The ports of one node executable and its default name (ros::init / rospy.init_node)."""
@@ -43,3 +94,5 @@ class NodeSummary:
     name_file: str = ""
     name_line: int = 0
     namespace: Value = ""
+    publishes: list[Publish] = field(default_factory=list)  # behavior: how each publish call is reached
+    writes: list[StateWrite] = field(default_factory=list)

@@ -10,7 +10,8 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.configured import configured_ports
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
 from archlog.extract.models import UNSET
-from archlog.extract.summary import NodeSummary, Port
+from archlog.extract.summary import NodeSummary, Port, Site
+from archlog.facts.behavior import Sites, add_behavior
 from archlog.extract.workspace import Workspace
 from archlog.facts.similarity import near_pairs
 from archlog.facts.store import FactStore
@@ -97,9 +98,11 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
                   names.resolve(dst, node.namespace, node.name))
         store.locate(elem.id, elem.file, elem.line)
     ports = [e for p in summary.ports if _present(p, node, config) for e in _each(p, node, config)]
+    sites: Sites = {}
     for port in [q for p in ports for q in [p, *action_topics(p)]]:
         pid = store.new_id("p")
         store.locate(pid, port.file, port.line, port.column)
+        sites.setdefault(Site(port.file, port.line), []).append((port.kind, pid))
         for policy, value in port.qos:
             store.add("qos", pid, policy, value)
             if policy in QOS_DURATIONS and (micros := _microseconds(value)) is not None:
@@ -123,6 +126,7 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
             else:
                 store.add(port.kind, pid, node.name, after, _type_name(_single(_bind(port.type, node, config))))
             store.add("port_source_name", pid, before)
+    add_behavior(store, node.name, summary, sites, lambda value: _single(_bind(value, node, config)))
 
 
 # actionlib (ROS 1): the topics under an action's namespace, as seen from the server

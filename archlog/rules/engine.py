@@ -90,6 +90,11 @@ class Engine:
         for rule in self.ruleset.rules:
             for atom in ctl.symbolic_atoms.by_signature(rule.predicate, len(rule.columns)):
                 values = {c: store.from_term(a) for c, a in zip(rule.columns, atom.symbol.arguments)}
+                for name, (relation, column) in rule.lists.items():
+                    key = atom.symbol.arguments[rule.columns.index(column)]
+                    items = {render(store.from_term(row.symbol.arguments[1]))
+                             for row in ctl.symbolic_atoms.by_signature(relation, 2) if row.symbol.arguments[0] == key}
+                    values[name] = ", ".join(sorted(items)) or "none"
                 result.append(_finding(rule, values, store))
         return sorted(result, key=lambda f: (f.location.file, f.location.line, f.rule.id, f.message))
 

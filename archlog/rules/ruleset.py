@@ -52,6 +52,9 @@ class Rule:
     precision: str = "high"
     file: str = ""
     line: int = 0
+    # name -> (relation, column): the second arguments of the relation's binary rows whose first
+    # argument is the finding's value in that column, listed in the finding (e.g. nodes silenced)
+    lists: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
 @dataclass
@@ -130,8 +133,15 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
             raise RuleError(file, line, f"location column '{col}' is not a column of {head.group(1)}")
     if meta["severity"] not in SEVERITIES:
         raise RuleError(file, line, f"severity must be one of {', '.join(SEVERITIES)}")
+    lists = {}
+    for name, spec in (meta.get("lists") or {}).items():
+        match = _HEAD.match(str(spec))
+        if not match or match.group(2).strip() not in columns:
+            raise RuleError(file, line, f"list '{name}' must look like relation(column), with a column of "
+                            f"{head.group(1)}")
+        lists[str(name)] = (match.group(1), match.group(2).strip())
     try:
-        str(meta["message"]).format(**{c: "" for c in columns})
+        str(meta["message"]).format(**{c: "" for c in [*columns, *lists]})
     except (KeyError, IndexError, ValueError) as exc:
         raise RuleError(file, line, f"message template uses an unknown column: {exc}") from None
     return Rule(
@@ -139,5 +149,5 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
         message=str(meta["message"]), predicate=head.group(1), columns=columns, location=meta["location"],
         related=list(related), description=str(meta.get("description", "")).strip(),
         help=str(meta.get("help", "")).strip(), tags=list(meta.get("tags", [])),
-        precision=str(meta.get("precision", "high")), file=file, line=line,
+        precision=str(meta.get("precision", "high")), file=file, line=line, lists=lists,
     )
