@@ -65,8 +65,6 @@ FIXED_SETTERS = {
     "durability_volatile": ("durability", "volatile"), "transient_local": ("durability", "transient_local"),
     "durability_best_available": ("durability", "best_available"), "keep_all": ("history", "keep_all"),
 }
-# builder methods (and rclpy attributes / QoSProfile keywords) that take the policy's value
-SETTERS = ("history", "depth", "keep_last", "reliability", "durability", "liveliness", *DURATIONS)
 _INFINITE = Fraction(9223372036)  # rmw's RMW_DURATION_INFINITE is 9223372036 s 854775807 ns
 
 

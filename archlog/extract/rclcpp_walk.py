@@ -42,7 +42,8 @@ PARAMETER_WRITES = ("set_parameter", "set_parameters", "set_parameters_atomicall
 # parameter names of the API that hold a port's name and its QoS
 NAME_PARAMETERS = ("topic_name", "service_name", "name", "base_topic", "topic")
 QOS_PARAMETERS = ("qos", "qos_profile", "custom_qos", "queue_size")
-# classes whose construction creates ports: (kind, topic, type, QoS builder text as tf2_ros has it)
+# classes whose construction creates ports: (kind, topic, type, the library's QoS: rclcpp::QoS(depth)
+# with these policies changed)
 TF2 = {
     "tf2_ros::TransformBroadcaster": [("publisher", "/tf", "tf2_msgs/msg/TFMessage", Qos({"depth": "100"}))],
     "tf2_ros::StaticTransformBroadcaster": [("publisher", "/tf_static", "tf2_msgs/msg/TFMessage",
@@ -84,7 +85,7 @@ def node_class(decl: ci.Cursor | None, depth: int = 0) -> bool:
     """rclcpp::Node, rclcpp_lifecycle::LifecycleNode, or a class derived from one of them."""
     if decl is None or depth > 8:
         return False
-    if decl.kind == K.CLASS_TEMPLATE or decl.kind in (K.CLASS_DECL, K.STRUCT_DECL):
+    if decl.kind in (K.CLASS_DECL, K.STRUCT_DECL, K.CLASS_TEMPLATE):
         if qualified(decl) in NODE_CLASSES:
             return True
         definition = decl.get_definition() or decl
@@ -98,22 +99,6 @@ def node_method(ref: ci.Cursor, owner: str) -> bool:
     (nav2::LifecycleNode::create_publisher)."""
     return owner in NODE_CLASSES or (ref.kind in (K.CXX_METHOD, K.FUNCTION_TEMPLATE) and
                                      node_class(ref.semantic_parent))
-
-
-def is_node_type(type_: ci.Type) -> bool:
-    """A node, or a pointer, reference or smart pointer to one."""
-    spelling = type_.get_canonical().spelling
-    if "rclcpp::Node" in spelling or "rclcpp_lifecycle::LifecycleNode" in spelling:
-        return True
-    pointee = type_.get_pointee()
-    target = pointee if pointee.kind != ci.TypeKind.INVALID else type_
-    declaration = target.get_canonical().get_declaration()
-    if declaration.kind == K.NO_DECL_FOUND:
-        return False
-    if qualified(declaration) in ("std::shared_ptr", "std::unique_ptr", "std::weak_ptr") and \
-            target.get_num_template_arguments() > 0:
-        declaration = target.get_template_argument_type(0).get_canonical().get_declaration()
-    return node_class(declaration)
 
 
 def strip(expr: ci.Cursor) -> ci.Cursor:
@@ -232,7 +217,7 @@ class RclcppWalker:
         elif helper is not None and helper[1] is not None and len(args) > max(helper[0], helper[1]) and \
                 isinstance(name := self.value(args[helper[0]]), str):
             self.declared.setdefault(name, args[helper[1]])
-        elif call.spelling in ("operator=",) and len(args) == 2 and (sub := self.sub_node_call(args[1])) is not None:
+        elif call.spelling == "operator=" and len(args) == 2 and (sub := self.sub_node_call(args[1])) is not None:
             target = strip(args[0])
             if target.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR):
                 self.sub_nodes[self.key(target.referenced)] = sub
@@ -240,18 +225,15 @@ class RclcppWalker:
             for ctor in cls.get_children():
                 if ctor.kind == K.CONSTRUCTOR:
                     self.call_sites.setdefault(self.key(ctor.canonical), []).append(call)
-        elif ref.kind == K.CXX_METHOD and ref.spelling == "get_parameter" and owner in NODE_CLASSES and \
-                len(args) == 2 and isinstance(name := self.value(args[0]), str):
-            target = next((c for c in args[1].walk_preorder() if c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)),
-                          None)
-            if target is not None:
-                self.param_vars[self.key(target.referenced)] = self.parameter_value(name, None, call)
-        elif ref.spelling == "get_parameter_or" and owner in NODE_CLASSES and len(args) == 3 and \
+        elif ref.spelling in ("get_parameter", "get_parameter_or") and owner in NODE_CLASSES and \
+                len(args) == (2 if ref.spelling == "get_parameter" else 3) and \
                 isinstance(name := self.value(args[0]), str):
+            # get_parameter("name", variable), get_parameter_or("name", variable, alternative)
             target = next((c for c in args[1].walk_preorder() if c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)),
                           None)
             if target is not None:
-                self.param_vars[self.key(target.referenced)] = self.parameter_value(name, args[2], call)
+                self.param_vars[self.key(target.referenced)] = self.parameter_value(
+                    name, args[2] if len(args) == 3 else None, call)
 
     def statements(self, block: ci.Cursor, conditional: bool) -> None:
         """Record the statements of a function body that change a QoS object, and whether they
@@ -323,7 +305,7 @@ class RclcppWalker:
         """Read one call if it is ROS 2 API; True when it was."""
         if ref.kind == K.CONSTRUCTOR and node_class(ref.semantic_parent):
             self.node_constructed(call, args, ref)
-        elif name in FACTORIES or (name == "make_shared" and owner in NODE_CLASSES):
+        elif name in FACTORIES:
             cls = self.factory_class(call)
             if cls is not None and qualified(cls) in NODE_CLASSES:
                 self.node_constructed(call, args, None)
