@@ -281,6 +281,22 @@ def diff(paths, launches, args, models, rule_paths, config_path, profile, near_m
     sys.exit(1 if any(r["only_recovered"] or r["only_observed"] for r in result.values()) else 0)
 
 
+@main.command()
+@_system_options
+@click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
+def behavior(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, fmt) -> None:
+    """Print each node's behavior: state, and the triggers, guards and required inputs of its outputs."""
+    from archlog.reports.behavior import behavior_model, print_behavior
+
+    analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
+                                      near_miss_threshold)
+    model = behavior_model(analysis.store, Session(analysis.store, ruleset, config).ctl)
+    if fmt == "json":
+        sys.stdout.write(json.dumps({"nodes": model}, indent=1) + "\n")
+    else:
+        print_behavior(model, Console(soft_wrap=True))
+
+
 @main.command("test-rules")
 @click.argument("folders", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False, path_type=Path))
 @click.option("--update", is_flag=True, help="Write the .expected files from the current results.")
