@@ -14,6 +14,7 @@ from archlog.rules.ruleset import load_rules
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "corpus" / "ros1"
 CORPUS_ROS2 = ROOT / "corpus" / "ros2"
+CORPUS_BEHAVIOR = ROOT / "corpus" / "behavior"  # ROS 1 systems with expected behavior models (issue 9)
 SHARED = ROOT.parent / "shared"
 
 

@@ -6,12 +6,13 @@ from pathlib import Path
 
 import pytest
 
-from conftest import CORPUS, CORPUS_ROS2, corpus_cases, finding_keys, load_case, run_case
+from conftest import CORPUS, CORPUS_BEHAVIOR, CORPUS_ROS2, corpus_cases, finding_keys, load_case, run_case
 
-CASES = corpus_cases(CORPUS) + corpus_cases(CORPUS_ROS2)
+CASES = corpus_cases(CORPUS) + corpus_cases(CORPUS_ROS2) + corpus_cases(CORPUS_BEHAVIOR)
 
 
-@pytest.mark.parametrize(("corpus", "least"), [(CORPUS, 8), (CORPUS_ROS2, 6)], ids=["ros1", "ros2"])
+@pytest.mark.parametrize(("corpus", "least"), [(CORPUS, 8), (CORPUS_ROS2, 6), (CORPUS_BEHAVIOR, 7)],
+                         ids=["ros1", "ros2", "behavior"])
 def test_corpus_has_buggy_and_clean_twins(corpus: Path, least: int) -> None:
     cases = {p.parent for p in corpus_cases(corpus)}
     assert len(cases) >= least

@@ -15,15 +15,20 @@ import socket
 import subprocess
 import tempfile
 import time
+import threading
 import xmlrpc.client
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from collections.abc import Iterator
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from archlog import observe
 
 ROSCORE = Path("/usr/bin/roscore")
 ROSLAUNCH = Path("/usr/bin/roslaunch")
+ROSTOPIC = Path("/usr/bin/rostopic")
+SYSTEM_PYTHON = Path("/usr/bin/python3")  # the one Debian's rospy imports under
+MONITOR = Path(__file__).resolve().parent / "topic_monitor.py"
 
 _POLL = 0.2  # seconds between master polls
 _LAUNCH_GRACE = 3.0  # SIGINT -> SIGKILL grace for roslaunch (and its nodes)
@@ -68,6 +73,103 @@ def running_system(
     ``expect_nodes`` non-infrastructure nodes. Raises RuntimeError if roscore or
     roslaunch fails, or if ``timeout`` expires first.
     """
+    with live_system(workspace_src, launch_files, args, expect_nodes, settle, timeout) as system:
+        yield system.uri, system.graph
+
+
+@dataclass
+class LiveSystem:
+    """A launched system on its private master: more ROS processes can be started in it (they
+    are stopped with it), topics watched and fed."""
+
+    uri: str
+    graph: LiveGraph
+    env: dict[str, str]
+    logs: Path
+    processes: list[subprocess.Popen] = field(default_factory=list)
+
+    def spawn(self, cmd: list[str], name: str) -> subprocess.Popen:
+        """Start a process in the system's environment (its output goes to `name`.log)."""
+        proc = _spawn(cmd, self.env, self.logs / f"{name}.log")
+        self.processes.append(proc)
+        return proc
+
+    def log(self, name: str) -> str:
+        return _tail(self.logs / f"{name}.log")
+
+    def publish(self, topic: str, type_: str, message: str, rate: float = 5.0) -> subprocess.Popen:
+        """Publish `message` (YAML, as rostopic takes it) on `topic` at `rate` Hz until the system stops."""
+        return self.spawn([str(ROSTOPIC), "pub", "-r", str(rate), topic, type_, message],
+                          f"pub{len(self.processes)}")
+
+    def monitor(self, topics: list[str], connect_timeout: float = 10.0) -> TopicMonitor:
+        """Count the messages on `topics` from now on (a rospy subscriber in a subprocess)."""
+        env = dict(self.env, ARCHLOG_MONITOR_CONNECT=str(connect_timeout))
+        with open(self.logs / "monitor.log", "wb") as log:
+            proc = subprocess.Popen([str(SYSTEM_PYTHON), str(MONITOR), *topics], env=env, stdin=subprocess.PIPE,
+                                    stdout=subprocess.PIPE, stderr=log, start_new_session=True)
+        self.processes.append(proc)
+        return TopicMonitor(proc, topics, self.logs / "monitor.log")
+
+
+class TopicMonitor:
+    """Message counts per topic, as the monitor subprocess reports them (timed on arrival here)."""
+
+    def __init__(self, proc: subprocess.Popen, topics: list[str], log: Path) -> None:
+        self.proc, self.topics, self.log = proc, list(topics), log
+        self._lock = threading.Lock()
+        self._counts: dict[str, int] = {t: 0 for t in topics}
+        self._ready = threading.Event()
+        self.unconnected: list[str] = []
+        self._reader = threading.Thread(target=self._read, daemon=True)
+        self._reader.start()
+
+    def _read(self) -> None:
+        assert self.proc.stdout is not None
+        for raw in self.proc.stdout:
+            words = raw.decode(errors="replace").split()
+            if words[:1] == ["msg"] and len(words) == 2:
+                with self._lock:
+                    self._counts[words[1]] = self._counts.get(words[1], 0) + 1
+            elif words[:1] == ["ready"]:
+                self.unconnected = words[1:]
+                self._ready.set()
+
+    def wait_ready(self, timeout: float) -> None:
+        """Block until every subscription has connected (or the monitor gave up on some: see
+        `unconnected`); RuntimeError if the monitor dies or does not answer in time."""
+        end = time.monotonic() + timeout
+        while not self._ready.wait(_POLL):
+            if self.proc.poll() is not None:
+                raise RuntimeError(f"topic monitor exited with code {self.proc.returncode}:\n{_tail(self.log)}")
+            if time.monotonic() > end:
+                raise RuntimeError(f"topic monitor not ready after {timeout} s:\n{_tail(self.log)}")
+
+    def counts(self) -> dict[str, int]:
+        with self._lock:
+            return dict(self._counts)
+
+    def wait_until(self, done: Callable[[dict[str, int]], bool], timeout: float) -> dict[str, int]:
+        """Poll the counts until `done(counts)` or `timeout` seconds; returns the last counts."""
+        end = time.monotonic() + timeout
+        while True:
+            counts = self.counts()
+            if done(counts) or time.monotonic() > end:
+                return counts
+            time.sleep(_POLL / 2)
+
+
+@contextmanager
+def live_system(
+    workspace_src: Path,
+    launch_files: list[Path],
+    args: dict[str, str] | None = None,
+    expect_nodes: int | None = None,
+    settle: float = 3.0,
+    timeout: float = 30.0,
+) -> Iterator[LiveSystem]:
+    """`running_system`, yielding the live system itself; every process started through it is
+    stopped (and anything left with its ROS_HOME killed) on exit."""
     deadline = time.monotonic() + timeout
     tmp = Path(tempfile.mkdtemp(prefix="archlog-rosgraph-"))
     port = _free_port()
@@ -75,6 +177,7 @@ def running_system(
     env = _ros_env(tmp, uri, Path(workspace_src))
     core_log, launch_log = tmp / "roscore.log", tmp / "roslaunch.log"
     core = launch = None
+    system: LiveSystem | None = None
     try:
         core = _spawn([str(ROSCORE), "-p", str(port)], env, core_log)
         master = _wait_for_master(uri, core, core_log, deadline)
@@ -84,8 +187,12 @@ def running_system(
         cmd += [str(f) for f in launch_files]
         cmd += [f"{k}:={v}" for k, v in (args or {}).items()]
         launch = _spawn(cmd, env, launch_log)
-        yield uri, _wait_for_graph(master, launch, launch_log, known_launchers, expect_nodes, settle, deadline)
+        graph = _wait_for_graph(master, launch, launch_log, known_launchers, expect_nodes, settle, deadline)
+        system = LiveSystem(uri, graph, env, tmp)
+        yield system
     finally:
+        for proc in reversed(system.processes if system else []):
+            _stop(proc, 1.0)
         _stop(launch, _LAUNCH_GRACE)
         _stop(core, _CORE_GRACE)
         _kill_leftovers(tmp)
