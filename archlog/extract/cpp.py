@@ -29,7 +29,7 @@ import clang.cindex as ci
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cache import ResultCache, cache_dir, key
 from archlog.extract.cpp_walk import FileResult, walk
-from archlog.extract.ros2_stubs import API, API_DIR, DUAL, INTERFACE_INCLUDE, Interfaces, is_ros2, \
+from archlog.extract.ros2_stubs import API_DIR, DUAL, INTERFACE_INCLUDE, Interfaces, is_ros2, library_for, \
     library_interfaces, spelled_types, stand_in_dir
 from archlog.extract.stub_headers import stub_dir
 from archlog.extract.summary import NodeSummary
@@ -197,15 +197,14 @@ def _parse_ros2(index: ci.Index, source: Path, env: CppEnvironment,
     for _attempt in range(2):
         folder = stand_in_dir(wanted, scan.spellings, env.interfaces, exists)
         used = ([str(folder)] if folder else []) + [str(API_DIR)]
-        stand_in_rclcpp = any(n.split("/", 1)[0] in API for n in wanted) and \
+        stand_in_rclcpp = any(library_for(n) for n in wanted) and \
             not any(exists(n) for n in ["rclcpp/rclcpp.hpp", *library_interfaces("rclcpp")])
         pch = _rclcpp_pch() if stand_in_rclcpp else None
         tu = index.parse(str(source), args=[f"-I{f}" for f in used] + env.args + env.file_args(source)
                          + (["-include-pch", str(pch), "-Xclang", "-fno-validate-pch"] if pch else []),
                          options=_KEEP_GOING)
         more = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))
-                and (m.group(1).split("/", 1)[0] in API or INTERFACE_INCLUDE.match(m.group(1)))
-                and m.group(1) not in wanted]
+                and (library_for(m.group(1)) or INTERFACE_INCLUDE.match(m.group(1))) and m.group(1) not in wanted]
         if not more:  # else: included by an installed header, found only while parsing
             break
         wanted += more

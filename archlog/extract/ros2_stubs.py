@@ -1,7 +1,8 @@
 """Stand-in headers for ROS 2 C++ code when its headers are not installed.
 
 Two kinds: the client libraries (rclcpp, rclcpp_lifecycle, rclcpp_action, rclcpp_components,
-tf2_ros, image_transport, message_filters, diagnostic_updater, bondcpp, rmw) are declared once, by hand,
+tf2, tf2_ros, image_transport, message_filters, diagnostic_updater, bondcpp, rmw, sensor_msgs'
+helpers) are declared once, by hand,
 in `stand_ins/archlog_ros2/*.hpp` with their real qualified names and signatures; a missing
 `#include "rclcpp/node.hpp"` gets a one-line header forwarding to them. Message, service and
 action headers (`std_msgs/msg/string.hpp`) are generated: the struct templates rosidl would
@@ -33,7 +34,11 @@ API_DIR = Path(__file__).with_name("stand_ins")
 API = {"rclcpp": "rclcpp", "rmw": "rclcpp", "rcl": "rclcpp", "rclcpp_lifecycle": "rclcpp_lifecycle",
        "rclcpp_action": "rclcpp_action", "rclcpp_components": "rclcpp_components", "tf2_ros": "tf2_ros",
        "image_transport": "image_transport", "message_filters": "message_filters",
-       "diagnostic_updater": "diagnostic_updater", "bondcpp": "bondcpp"}
+       "diagnostic_updater": "diagnostic_updater", "bondcpp": "bondcpp", "tf2": "tf2", "tf2_geometry_msgs": "tf2"}
+# C++ helpers of interface packages (whose other headers are interfaces)
+HELPERS = {"sensor_msgs/point_cloud2_iterator.hpp": "sensor_msgs", "sensor_msgs/image_encodings.hpp": "sensor_msgs"}
+# tf2 headers that ROS 1 has with the same content under a .h name
+_TF2_SAME_AS_ROS1 = re.compile(r"^tf2/(LinearMath/\w+|exceptions)\.hpp$")
 # ROS 1 packages whose headers have the same include names as in ROS 2
 DUAL = {"tf2_ros", "image_transport", "message_filters", "diagnostic_updater", "bondcpp"}
 INTERFACE_INCLUDE = re.compile(r"^(\w+)/(msg|srv|action)/(\w+)\.hpp$")
@@ -163,14 +168,16 @@ def stand_in_dir(missing: Iterable[str], spellings: set[str], interfaces: Interf
     """A folder with stand-ins for the missing ROS 2 includes (and the interfaces they need), or
     None when none of them is a ROS 2 library or interface header."""
     files: dict[str, str] = {}
-    pending = [name for name in missing if name.split("/", 1)[0] in API or INTERFACE_INCLUDE.match(name)]
+    pending = [name for name in missing if library_for(name) or INTERFACE_INCLUDE.match(name)]
     while pending:
         include = pending.pop()
         if include in files:
             continue
-        library = API.get(include.split("/", 1)[0])
+        library = library_for(include)
         if library is not None:
-            files[include] = f'// archlog stand-in\n#include "archlog_ros2/{library}.hpp"\n'
+            same = _TF2_SAME_AS_ROS1.match(include)
+            files[include] = f"// archlog stand-in\n#include <tf2/{same.group(1)}.h>\n" if same else \
+                f'// archlog stand-in\n#include "archlog_ros2/{library}.hpp"\n'
             needed = library_interfaces(library)
         else:
             match = INTERFACE_INCLUDE.match(include)
@@ -183,6 +190,11 @@ def stand_in_dir(missing: Iterable[str], spellings: set[str], interfaces: Interf
     if not (folder / ".done").is_file():
         _write_folder(folder, files)
     return folder
+
+
+def library_for(include: str) -> str | None:
+    """The library stand-in declaring what an include provides, if it is a ROS 2 library header."""
+    return HELPERS.get(include) or API.get(include.split("/", 1)[0])
 
 
 def spelled_types(texts: Iterable[str]) -> set[str]:

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 #include <cinttypes>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -17,6 +18,8 @@
 #include <functional>
 #include <future>
 #include <iostream>
+#include <limits>
+#include <list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -29,6 +32,7 @@
 #include <tuple>
 #include <type_traits>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -1187,6 +1191,8 @@ public:
     PreSetParametersCallbackHandle::PreSetParametersCallbackType callback);
   PostSetParametersCallbackHandle::SharedPtr add_post_set_parameters_callback(
     PostSetParametersCallbackHandle::PostSetParametersCallbackType callback);
+  void remove_pre_set_parameters_callback(const PreSetParametersCallbackHandle * const handler);
+  void remove_post_set_parameters_callback(const PostSetParametersCallbackHandle * const handler);
 
   std::vector<std::string> get_node_names() const;
   std::map<std::string, std::vector<std::string>> get_topic_names_and_types() const;

@@ -171,6 +171,14 @@ public:
   rcl_interfaces::msg::ParameterDescriptor describe_parameter(const std::string & name) const;
   OnSetParametersCallbackHandle::SharedPtr add_on_set_parameters_callback(OnParametersSetCallbackType callback);
   void remove_on_set_parameters_callback(const OnSetParametersCallbackHandle * const handler);
+  rclcpp::node_interfaces::PreSetParametersCallbackHandle::SharedPtr add_pre_set_parameters_callback(
+    rclcpp::node_interfaces::PreSetParametersCallbackHandle::PreSetParametersCallbackType callback);
+  rclcpp::node_interfaces::PostSetParametersCallbackHandle::SharedPtr add_post_set_parameters_callback(
+    rclcpp::node_interfaces::PostSetParametersCallbackHandle::PostSetParametersCallbackType callback);
+  void remove_pre_set_parameters_callback(
+    const rclcpp::node_interfaces::PreSetParametersCallbackHandle * const handler);
+  void remove_post_set_parameters_callback(
+    const rclcpp::node_interfaces::PostSetParametersCallbackHandle * const handler);
 
   std::vector<std::string> get_node_names() const;
   size_t count_publishers(const std::string & topic_name) const;

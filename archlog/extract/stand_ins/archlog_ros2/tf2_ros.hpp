@@ -3,19 +3,10 @@
 #define ARCHLOG_ROS2_TF2_ROS_HPP_
 
 #include "archlog_ros2/rclcpp.hpp"
+#include "archlog_ros2/tf2.hpp"
 #include "geometry_msgs/msg/transform_stamped.hpp"
 #include "tf2_msgs/msg/tf_message.hpp"
 
-namespace tf2
-{
-class BufferCore;
-using Duration = std::chrono::nanoseconds;
-using TimePoint = std::chrono::time_point<std::chrono::system_clock, Duration>;
-static const TimePoint TimePointZero = TimePoint(Duration::zero());
-Duration durationFromSec(double t_sec);
-TimePoint timeFromSec(double t_sec);
-double timeToSec(const TimePoint & timepoint);
-}  // namespace tf2
 
 namespace tf2_ros
 {
