@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 
 from archlog.diagnostics import Diagnostic
-from archlog.extract.summary import NodeSummary
+from archlog.extract.summary import NodeSummary, Publish, Site
 from archlog.values import Alternatives, Concat, ParamRef, Unknown, Value
 
 
@@ -32,4 +32,22 @@ def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
         handle = f" handle {json.dumps(plain(p.handle_ns))}" if p.handle_ns else ""
         lines.append(f"{p.line}: {p.kind} {json.dumps(plain(p.name))} {json.dumps(plain(p.type))}{handle}{extra}")
     lines += [f"diagnostic {d.line}: {d.severity} {d.code}" for d in diagnostics]
+    lines += [describe_publish(p) for p in summary.publishes]
+    lines += [f"write {w.line} {w.var}={w.value}" + (f" by {_site(w.source, w.file)}" if w.source else "")
+              for w in summary.writes]
     return "\n".join(lines) + "\n"
+
+
+def describe_publish(p: Publish) -> str:
+    """`publish LINE -> PUBLISHER trigger KIND [SOURCE] [period SECONDS] [guards VAR=VALUE@LINE...]`;
+    sites are lines of the same file (file:line otherwise), ? when not known."""
+    text = f"publish {p.line} -> {_site(p.publisher, p.file) if p.publisher else '?'} trigger {p.trigger}"
+    text += f" {_site(p.source, p.file)}" if p.source else ""
+    text += f" period {json.dumps(plain(p.period))}" if p.period is not None else ""
+    guards = " ".join(f"{g.var}={g.value}@{g.line}" if g.file == p.file else f"{g.var}={g.value}@{g.file}:{g.line}"
+                      for g in p.guards)
+    return text + (f" guards {guards}" if guards else "")
+
+
+def _site(site: Site, file: str) -> str:
+    return str(site.line) if site.file == file else f"{site.file}:{site.line}"
