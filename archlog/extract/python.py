@@ -86,6 +86,8 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
             summary.incomplete = f"{shown}:{lost[0]}: a line with ROS calls could not be read"
     extractor = _Extractor(summary, shown, tree)
     extractor.run()
+    from archlog.extract.python_behavior import recover_behavior  # built on this module
+    summary.publishes, summary.writes = recover_behavior(extractor, diagnostics)
     for line, message in extractor.notes:
         diagnostics.add(shown, line, "python-several-nodes", message, "note")
     summary.ports = _without_untyped_duplicates(summary.ports)
