@@ -40,7 +40,7 @@ def test_text_shows_the_state_machine() -> None:
     out = io.StringIO()
     print_behavior(model(), Console(file=out, width=200, no_color=True))
     text = out.getvalue()
-    assert "state has_pose_ = false, set true by /odom_pose (lattice.cpp:30)" in text
+    assert "state has_pose_ = false; on /odom_pose: true (lattice.cpp:30)" in text
     assert "publishes at lattice.cpp:40 on a timer every 0.1 s when has_pose_=true" in text
     assert "publishes at follower.py:15 when /trajectory arrives" in text
     assert "requires /odom_pose" in text

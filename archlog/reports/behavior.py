@@ -53,9 +53,8 @@ def print_behavior(model: Model, console: Console) -> None:
     for node in model:
         console.print(f"[bold]{node['node']}[/bold] ({node['source']})")
         for state in node["state"]:
-            sets = "; ".join(f"{s['value']} by {s['by']} ({s['file']}:{s['line']})" for s in state["set_by"])
-            console.print(f"  state {state['var']} = {state['initial'] or '?'}" + (f", set {sets}" if sets else ""),
-                          markup=False)
+            sets = "".join(f"; on {s['by']}: {s['value']} ({s['file']}:{s['line']})" for s in state["set_by"])
+            console.print(f"  state {state['var']} = {state['initial'] or '?'}{sets}", markup=False)
         for output in node["outputs"]:
             console.print(f"  output {output['name']} ({output['type']}) {output['file']}:{output['line']}",
                           markup=False)
