@@ -3,8 +3,12 @@ of the workspace, so that roslaunch can start them (it finds executables inside 
 
 from __future__ import annotations
 
+import atexit
+import hashlib
 import shutil
 import subprocess
+import tempfile
+import threading
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
@@ -36,8 +40,36 @@ def _compile(package, executable) -> str | None:
     extra = [flag for needle, flags in OPTIONAL_LIBS.items() if needle in text for flag in flags.split()]
     out = package.path / "bin" / executable.name
     out.parent.mkdir(exist_ok=True)
-    includes = [f"-I{package.path / 'include'}", *(f"-I{d}" for d in package.include_dirs)]
+    include_dirs = [package.path / "include", *package.include_dirs]
+    includes = [f"-I{d}" for d in include_dirs]
     command = ["g++", "-std=c++17", "-O0", "-w", *includes, *map(str, executable.sources), "-o", str(out),
                *extra, *LIBS]
+    cached = _cache_path(package.path, executable.sources, include_dirs, [*extra, *LIBS])
+    if cached.is_file():  # the same sources, headers and flags were built in this session
+        shutil.copy2(cached, out)
+        return None
     result = subprocess.run(command, capture_output=True, text=True, timeout=600, check=False)
-    return None if result.returncode == 0 else f"g++ failed for {executable.name}:\n{result.stderr[-3000:]}"
+    if result.returncode != 0:
+        return f"g++ failed for {executable.name}:\n{result.stderr[-3000:]}"
+    shutil.copy2(out, cached)
+    return None
+
+
+_cache_lock = threading.Lock()
+_cache_dir: list[Path] = []
+
+
+def _cache_path(root: Path, sources: list[Path], include_dirs: list[Path], flags: list[str]) -> Path:
+    """Where a build of these sources is kept for this process (twins share their C++ code): keyed by
+    the sources' and package headers' paths relative to the package and their contents, and the flags."""
+    digest = hashlib.sha256("\0".join(flags).encode())
+    headers = sorted(p for d in include_dirs if d.is_dir() and d.is_relative_to(root) for p in d.rglob("*")
+                     if p.is_file())
+    for path in [*sources, *headers]:
+        digest.update(str(path.relative_to(root) if path.is_relative_to(root) else path).encode() + b"\0")
+        digest.update(path.read_bytes() + b"\0")
+    with _cache_lock:
+        if not _cache_dir:
+            _cache_dir.append(Path(tempfile.mkdtemp(prefix="archlog-cpp-build-")))
+            atexit.register(shutil.rmtree, _cache_dir[0], True)
+    return _cache_dir[0] / digest.hexdigest()

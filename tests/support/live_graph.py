@@ -191,9 +191,7 @@ def live_system(
         system = LiveSystem(uri, graph, env, tmp)
         yield system
     finally:
-        for proc in reversed(system.processes if system else []):
-            _stop(proc, 1.0)
-        _stop(launch, _LAUNCH_GRACE)
+        _stop_together([*(system.processes if system else []), launch], _LAUNCH_GRACE)
         _stop(core, _CORE_GRACE)
         _kill_leftovers(tmp)
         shutil.rmtree(tmp, ignore_errors=True)  # errors already carry the log tail
@@ -244,6 +242,19 @@ def _stop(proc: subprocess.Popen | None, grace: float) -> None:
             proc.wait(wait)
     with contextlib.suppress(ProcessLookupError):  # the leader may be gone while group members linger
         os.killpg(proc.pid, signal.SIGKILL)
+
+
+def _stop_together(procs: list[subprocess.Popen | None], grace: float) -> None:
+    """`_stop` for several processes at once: SIGINT every group, one shared grace, SIGKILL the rest."""
+    alive = [p for p in procs if p is not None and p.poll() is None]
+    for proc in alive:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, signal.SIGINT)
+    end = time.monotonic() + grace
+    while any(p.poll() is None for p in alive) and time.monotonic() < end:
+        time.sleep(0.05)
+    for proc in procs:
+        _stop(proc, 0.0)
 
 
 def _kill_leftovers(tmp: Path) -> None:
