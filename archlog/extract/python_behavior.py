@@ -164,6 +164,8 @@ class _Behavior:
                     for target in node.targets:
                         if isinstance(target, ast.Name) and target.id in self.local_names(frame.func)[1]:
                             self.global_values.setdefault(target.id, []).append((node.value, frame))
+        self.instantiated = {n.func.id for n in ast.walk(ex.tree) if isinstance(n, ast.Call)
+                             and isinstance(n.func, ast.Name) and n.func.id in ex.class_attrs}
         self.kinds: dict[str, set[str]] = {}
         self.mutable: set[str] = set()  # state assigned inside functions
         self._classify()
@@ -660,11 +662,18 @@ class _Behavior:
                 if startup == ((name == "main" and frame.cls is None and frame.outer is None) or name == "__init__"):
                     self.enter(replace(frame, called=True), _Context("startup" if startup else "unknown", None))
 
-    def register(self, call: ast.Call, frame: _Frame) -> None:
-        """A call that registers callbacks: each callback is an entry with the port's site."""
+    def register(self, call: ast.Call, frame: _Frame, exact: bool = False) -> None:
+        """A call that registers callbacks: each callback is an entry with the port's site. In a
+        base class, it registers once for each class of the file made from it (then `exact`)."""
         name = self.ex.qualified(call.func) or ""
         method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
         spec = _REGISTRATIONS.get(name) or _RCLPY_REGISTRATIONS.get(method)
+        if frame.cls and not exact and (spec or method in _LATER_REGISTRATIONS):
+            concrete = [c for c in [frame.cls, *self.descendants(frame.cls)] if c in self.instantiated]
+            if concrete and concrete != [frame.cls]:
+                for cls in concrete:
+                    self.register(call, replace(frame, cls=cls), exact=True)
+                return
         if spec:
             site = Site(self.file, call.lineno)
             if not any(site in self.sites[k] for k in _SOURCE_KINDS):
