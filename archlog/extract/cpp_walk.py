@@ -452,7 +452,7 @@ class _Walker(RclcppWalker):
         covered = {p.line for p in self.result.ports}
         text = Path(self.source).read_text(errors="replace")
         if self.ros2:
-            self.ros2_fallback(text, covered)
+            self.ros2_fallback(text, covered, tu)
             return
         handles = {m.group(1): unquote(m.group(2)) if m.group(2) else ""
                    for m in re.finditer(r"NodeHandle\s+(\w+)\s*(?:\(\s*(\"[^\"]*\")\s*\))?", text)}

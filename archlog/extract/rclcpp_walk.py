@@ -12,13 +12,16 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from fractions import Fraction
+from pathlib import Path
 
 import clang.cindex as ci
 
 from archlog.diagnostics import Diagnostic
+from archlog.extract.cache import cache_dir
 from archlog.extract.cpp_ast import (K, SKIP, camera_info, qualified, ros2_type, ros_type, type_from_spelling,
                                      unquote, written_args)
 from archlog.extract.qos import FIXED_SETTERS, PRESET_NAMES, Qos, number, seconds_text
+from archlog.extract.ros2_stubs import API_DIR
 from archlog.extract.summary import Port
 from archlog.values import ParamRef, Unknown, Value, concat
 
@@ -820,10 +823,11 @@ class RclcppWalker:
         return owner(a) == owner(b)
 
     # -- when the AST is incomplete ---------------------------------------------------------------
-    def ros2_fallback(self, text: str, covered: set[int]) -> None:
+    def ros2_fallback(self, text: str, covered: set[int], tu: ci.TranslationUnit) -> None:
         """Read rclcpp entity calls, action servers/clients and the node's name from the text of
-        lines where the AST produced nothing."""
-        aliases = {m.group(1) or m.group(4): m.group(2) or m.group(3) for m in _ALIAS.finditer(text)}
+        lines where the AST produced nothing (type aliases from the file and the workspace headers
+        it includes)."""
+        aliases = type_aliases([text, *_workspace_header_texts(tu)])
         sub_nodes = {m.group(1): unquote(m.group(2)) for m in re.finditer(
             r"(\w+)\s*=\s*(?:this\s*->\s*)?create_sub_node\s*\(\s*(\"[^\"]*\")", text)}
         for match in [*_ENTITY_FALLBACK.finditer(text), *_ACTION_FALLBACK.finditer(text)]:
@@ -858,7 +862,30 @@ _ENTITY_FALLBACK = re.compile(
 _ACTION_FALLBACK = re.compile(
     r"\brclcpp_action::(?P<method>create_server|create_client)\s*<\s*(?P<type>[\w:]+)[^>;]*>\s*\(\s*[^,;]+?,\s*"
     r"(?P<name>\"(?:[^\"\\]|\\.)*\"|[\w:.>\-]+)")
-_ALIAS = re.compile(r"\busing\s+(\w+)\s*=\s*(?:typename\s+)?([\w:]+)\s*;|\btypedef\s+([\w:]+)\s+(\w+)\s*;")
+_ALIAS = re.compile(r"\busing\s+(\w+)\s*=\s*(?:typename\s+)?([\w:]+)\s*;|\btypedef\s+([\w:]+)\s+(\w+)\s*;"
+                    r"|\busing\s+((?:\w+::)+(\w+))\s*;")
+
+
+def type_aliases(texts: list[str]) -> dict[str, str]:
+    """`using X = a::b::C;`, `typedef a::b::C X;` and `using a::b::C;` in C++ texts: name -> type."""
+    found: dict[str, str] = {}
+    for text in texts:
+        for m in _ALIAS.finditer(text):
+            found.setdefault(m.group(1) or m.group(4) or m.group(6), m.group(2) or m.group(3) or m.group(5))
+    return found
+
+
+def _workspace_header_texts(tu: ci.TranslationUnit) -> list[str]:
+    """The texts of the headers a unit includes that are not installed ones nor stand-ins."""
+    texts = []
+    for include in tu.get_includes():
+        name = include.include.name
+        if not name.startswith(("/usr/", "/opt/", str(cache_dir()), str(API_DIR))):
+            try:
+                texts.append(Path(name).read_text(errors="replace"))
+            except OSError:
+                continue
+    return texts
 _NODE_FALLBACK = re.compile(r"[:,]\s*(?:rclcpp::Node|Node|(?:rclcpp_lifecycle::)?LifecycleNode)\s*\(\s*(\"[^\"]+\")")
 
 
