@@ -19,7 +19,7 @@ from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.summary import Port
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace import Executable, Workspace, registered_components
 
 sys.path.insert(0, str(Path(__file__).parent))
 from python_bench import resolution  # noqa: E402  (one definition of "resolved" for every extractor)
@@ -47,6 +47,10 @@ def system(root: Path) -> None:
     setup = time.perf_counter() - start
     units = sorted({(source, exe.cls): exe for p in workspace.packages.values() for exe in p.executables.values()
                     if exe.lang == "cpp" for source in exe.sources if source.is_file()}.items(), key=str)
+    if not workspace.packages:  # loose files (corpus/cpp_ros2): each is a unit, a component as its class
+        units = [((source, cls), Executable("bench", source.stem, "cpp", [source], 0, cls))
+                 for source in sorted(root.rglob("*.cpp"))
+                 for cls in [next(iter(registered_components(source.read_text())), (None,))[0]]]
     cold: list[float] = []
     warm: list[float] = []
     ports: dict[str, list[Port]] = {"roscpp": [], "rclcpp": []}
