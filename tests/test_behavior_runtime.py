@@ -14,7 +14,7 @@ import functools
 import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import pytest
@@ -24,7 +24,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.workspace import Workspace
 from archlog.observe import Architecture, compare, from_facts
 from conftest import CORPUS_BEHAVIOR, corpus_cases, load_case, requires_ros, run_case
-from support.behavior import Model, analysis_behavior, case_dir, expected_behavior, silenced_outputs
+from support.behavior import Key, Model, Output, analysis_behavior, case_dir, expected_behavior, silenced_outputs
 from support.build_cpp import build_workspace
 from support.live_graph import live_system
 
@@ -93,8 +93,9 @@ def _observe(variant: Path) -> Observation:
             monitor = system.monitor(topics, connect_timeout=CONNECT)
             monitor.wait_ready(CONNECT + 10)
             phases.append(("connected", time.monotonic() - start))
-            if feed is None:  # clean twin: wait until every output has published
-                before = monitor.wait_until(lambda c: all(c[t] for t in topics), SILENCE + START)
+            if feed is None:  # clean twin: wait until every output that requires an input has published
+                needed = {k[1] for model in (expected, recovered) for k, out in model.items() if out.requires}
+                before = monitor.wait_until(lambda c: all(c[t] for t in needed), SILENCE + START)
                 phases.append(("all published", time.monotonic() - start))
             else:
                 time.sleep(SILENCE)
@@ -110,19 +111,19 @@ def _observe(variant: Path) -> Observation:
     return Observation(before, after, unconnected, graph, architecture, tuple(phases))
 
 
-def _check_buggy(model: Model, feed: str, seen: Observation) -> list[str]:
+def _check_buggy(model: Model, feed: str, seen: Observation) -> list[tuple[Key, str]]:
     """What the observation contradicts in a model's classification of the buggy system."""
     held = silenced_outputs(model)
     problems = []
     for key in sorted(model):
         topic = key[1]
         if key in held and seen.before[topic]:
-            problems.append(f"{key} classified as requiring {sorted(model[key].requires)} but published "
-                            f"{seen.before[topic]} messages while {feed} was not")
+            problems.append((key, f"classified as requiring {sorted(model[key].requires)} but published "
+                                  f"{seen.before[topic]} messages while {feed} was not"))
         if key not in held and not seen.before[topic]:
-            problems.append(f"{key} classified as free but silent for {SILENCE} s without {feed}")
+            problems.append((key, f"classified as free but silent for {SILENCE} s without {feed}"))
         if key in held and not seen.after[topic]:
-            problems.append(f"{key} did not start within {START} s of feeding {feed}")
+            problems.append((key, f"did not start within {START} s of feeding {feed}"))
     return problems
 
 
@@ -145,13 +146,32 @@ def test_recovered_classification_holds_at_runtime(variant: Path) -> None:
     assert _check_buggy(recovered, load_case(variant)["feed"]["topic"], seen) == []
 
 
+def test_runtime_check_rejects_wrong_classifications() -> None:
+    """The check has teeth: on a real observation, a held output classified as free and a free
+    output classified as requiring the missing input are both reported (and nothing else)."""
+    variant = CORPUS_BEHAVIOR / "wait_first_pose" / "buggy"
+    feed = load_case(variant)["feed"]["topic"]
+    seen = observe(variant)
+    expected, _recovered, _arch = _models(variant)
+    held, free = ("/speed_profiler", "/speed_profile"), ("/vehicle_sim", "/odom")
+    assert held in silenced_outputs(expected) and free in set(expected) - silenced_outputs(expected)
+    wrong: dict[Key, Output] = dict(expected)
+    wrong[held] = replace(expected[held], requires=frozenset())
+    wrong[free] = replace(expected[free], requires=frozenset({feed}))
+    problems = _check_buggy(wrong, feed, seen)
+    assert sorted(key for key, _why in problems) == sorted([held, free]), problems
+
+
 @pytest.mark.parametrize("variant", CLEAN, ids=case_dir)
-def test_clean_twin_publishes_every_output(variant: Path) -> None:
+def test_clean_twin_publishes_every_output_that_requires_an_input(variant: Path) -> None:
+    """In the clean twin the inputs are delivered: every output classified as requiring one
+    publishes (outputs that require nothing were seen publishing in the buggy twin; some of them
+    only publish while an input is missing, a 'waiting for ...' status)."""
     seen = observe(variant)
     expected, recovered, _arch = _models(variant)
     assert {k[1] for k in expected} & set(seen.unconnected) == set()
-    assert [k for k in sorted(expected) if not seen.before[k[1]]] == []
-    assert [k for k in sorted(recovered) if not seen.before[k[1]]] == []
+    assert [k for k in sorted(expected) if expected[k].requires and not seen.before[k[1]]] == []
+    assert [k for k in sorted(recovered) if recovered[k].requires and not seen.before[k[1]]] == []
     assert silenced_outputs(recovered) == set()
 
 

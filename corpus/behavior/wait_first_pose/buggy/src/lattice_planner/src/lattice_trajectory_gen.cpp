@@ -5,6 +5,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
+#include <std_msgs/String.h>
 
 class LatticeTrajectoryGen {
  public:
@@ -12,6 +13,7 @@ class LatticeTrajectoryGen {
     pnh_.param("rate", rate_hz_, 10.0);
     pnh_.param("horizon", horizon_, 8.0);
     traj_pub_ = nh_.advertise<nav_msgs::Path>("trajectory", 1);
+    status_pub_ = pnh_.advertise<std_msgs::String>("status", 1);
     pose_sub_ = nh_.subscribe("odom_pose", 1, &LatticeTrajectoryGen::poseCallback, this);
   }
 
@@ -21,6 +23,10 @@ class LatticeTrajectoryGen {
       ros::spinOnce();
       if (has_pose_) {
         traj_pub_.publish(makeTrajectory());
+      } else {
+        std_msgs::String status;
+        status.data = "waiting for the first odom_pose";
+        status_pub_.publish(status);
       }
       rate.sleep();
     }
@@ -51,6 +57,7 @@ class LatticeTrajectoryGen {
   ros::NodeHandle nh_;
   ros::NodeHandle pnh_;
   ros::Publisher traj_pub_;
+  ros::Publisher status_pub_;
   ros::Subscriber pose_sub_;
   geometry_msgs::PoseStamped pose_;
   bool has_pose_ = false;
