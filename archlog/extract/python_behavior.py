@@ -661,6 +661,12 @@ class _Behavior:
                 name = getattr(func, "name", "")
                 if startup == ((name == "main" and frame.cls is None and frame.outer is None) or name == "__init__"):
                     self.enter(replace(frame, called=True), _Context("startup" if startup else "unknown", None))
+        walked = {p.line for p in self.publishes}
+        for frame, nodes in [(self.module, self.module_nodes), *self.scopes]:  # past the budget or the depth
+            for node in nodes:
+                if isinstance(node, ast.Call) and node.lineno not in walked and not self.callables(node.func, frame) \
+                        and (sites := self.publish_sites(node, frame)):
+                    self.publish(node, _Context("unknown", None), sites)
 
     def register(self, call: ast.Call, frame: _Frame, exact: bool = False) -> None:
         """A call that registers callbacks: each callback is an entry with the port's site. In a
@@ -838,10 +844,8 @@ class _Behavior:
             if func.attr in _ADDS or func.attr == "clear":  # taking from a container never fills it
                 self.write(var, "nonempty" if func.attr in _ADDS else "empty", ctx, call.lineno)
         targets = self.callables(func, frame)
-        if isinstance(func, ast.Attribute) and func.attr in _PUBLISH_METHODS and not targets:
-            sites: list[Site | None] = list(self.publisher_sites(func.value, frame))  # type: ignore[arg-type]
-            if sites or func.attr == "publish":
-                self.publish(call, ctx, sites or [None])
+        if not targets and (sites := self.publish_sites(call, frame)):
+            self.publish(call, ctx, sites)
         if name in ("threading.Thread", "rospy.on_shutdown"):  # runs a function (with a thread's args)
             callee = _arg(call, 0, "h") if name == "rospy.on_shutdown" else _arg(call, NO_INDEX, "target")
             passed = _arg(call, NO_INDEX, "args") if name == "threading.Thread" else None
@@ -850,6 +854,15 @@ class _Behavior:
                                                else [], [], frame), ctx)
         for target in targets:
             self.enter(self.bind(target, call, frame), ctx)
+
+    def publish_sites(self, call: ast.Call, frame: _Frame) -> list[Site | None]:
+        """For a publish call (`.publish()`, or `.sendTransform()` of a broadcaster) that is not a
+        method of the file, the sites of the publishers it may use (None: not known); else []."""
+        func = call.func
+        if not isinstance(func, ast.Attribute) or func.attr not in _PUBLISH_METHODS:
+            return []
+        sites: list[Site | None] = list(self.publisher_sites(func.value, frame))
+        return sites or ([None] if func.attr == "publish" else [])
 
     def publish(self, call: ast.Call, ctx: _Context, sites: list[Site | None]) -> None:
         trigger, source, period = ctx.trigger, ctx.source, None
