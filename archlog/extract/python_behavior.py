@@ -129,6 +129,8 @@ class _Context:
 
 
 class _Behavior:
+    """One file: its scopes and state variables, then the walk from every entry."""
+
     def __init__(self, ex: _Extractor) -> None:
         self.ex, self.file = ex, ex.file
         self.sites = {kind: {Site(p.file, p.line) for p in ex.summary.ports if p.kind == kind}
@@ -314,9 +316,8 @@ class _Behavior:
     def constant(self, expr: ast.expr, frame: _Frame) -> str | None:
         """The text of a constant: a literal, a module or class constant, an enum-like dotted name."""
         if isinstance(expr, ast.Constant):
-            if isinstance(expr.value, bool):
-                return str(expr.value).lower()
-            return str(expr.value) if isinstance(expr.value, (str, int, float)) else None
+            value = self.ex.value(expr)
+            return value if isinstance(value, str) else None
         if isinstance(expr, ast.UnaryOp) and isinstance(expr.op, ast.USub) and isinstance(expr.operand, ast.Constant) \
                 and isinstance(expr.operand.value, (int, float)):
             return f"-{expr.operand.value}"
@@ -579,8 +580,9 @@ class _Behavior:
             args += [(p, e, f) for p, (e, f) in zip(params[len(params) - len(extra):], extra)]
         return _Frame(target.func, target.cls, tuple(args), target.outer, True)
 
-    def publisher_sites(self, call: ast.Call, frame: _Frame) -> list[Site]:
-        return list(dict.fromkeys(s for c, _f in self.origins(call, frame)
+    def publisher_sites(self, expr: ast.expr, frame: _Frame) -> list[Site]:
+        """The publisher ports (rospy/rclpy publishers, tf broadcasters) an object may be."""
+        return list(dict.fromkeys(s for c, _f in self.origins(expr, frame)
                                   if (s := Site(self.file, c.lineno)) in self.sites["publisher"]))
 
     # -- loops ----------------------------------------------------------------------------
@@ -631,10 +633,10 @@ class _Behavior:
 
     def rate(self, call: ast.Call, frame: _Frame) -> Value | None:
         """Seconds of rospy.Rate(hz) / node.create_rate(hz); a parameter's default folds."""
-        if self.ex.qualified(call.func) != "rospy.Rate" and not (
-                isinstance(call.func, ast.Attribute) and call.func.attr == "create_rate"):
+        rospy = self.ex.qualified(call.func) == "rospy.Rate"
+        if not rospy and not (isinstance(call.func, ast.Attribute) and call.func.attr == "create_rate"):
             return None
-        hz = _arg(call, 0, "hz" if self.ex.qualified(call.func) == "rospy.Rate" else "frequency")
+        hz = _arg(call, 0, "hz" if rospy else "frequency")
         if hz is None:
             return Unknown(ast.unparse(call), self.file, call.lineno)
         value = self.ex.value(hz, scope=self.function(frame))
@@ -664,8 +666,9 @@ class _Behavior:
         walked = {p.line for p in self.publishes}
         for frame, nodes in [(self.module, self.module_nodes), *self.scopes]:  # past the budget or the depth
             for node in nodes:
-                if isinstance(node, ast.Call) and node.lineno not in walked and not self.callables(node.func, frame) \
-                        and (sites := self.publish_sites(node, frame)):
+                if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
+                        node.func.attr in _PUBLISH_METHODS and node.lineno not in walked and \
+                        not self.callables(node.func, frame) and (sites := self.publish_sites(node, frame)):
                     self.publish(node, _Context("unknown", None), sites)
 
     def register(self, call: ast.Call, frame: _Frame, exact: bool = False) -> None:
@@ -789,9 +792,8 @@ class _Behavior:
             return ctx
         if isinstance(stmt, (ast.FunctionDef, ast.AsyncFunctionDef)):
             return ctx
-        if isinstance(stmt, (ast.Assign, ast.AnnAssign, ast.AugAssign)):
-            if stmt.value is not None:
-                self.expression(stmt.value, frame, ctx)
+        if isinstance(stmt, (ast.Assign, ast.AnnAssign, ast.AugAssign)) and stmt.value is not None:
+            self.expression(stmt.value, frame, ctx)
             targets = stmt.targets if isinstance(stmt, ast.Assign) else [stmt.target]
             for target, value in _pairs(targets, stmt.value if not isinstance(stmt, ast.AugAssign) else None):
                 self.assignment(target, value, frame, ctx, stmt.lineno)
