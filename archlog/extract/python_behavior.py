@@ -797,14 +797,24 @@ class _Behavior:
             targets = stmt.targets if isinstance(stmt, ast.Assign) else [stmt.target]
             for target, value in _pairs(targets, stmt.value if not isinstance(stmt, ast.AugAssign) else None):
                 self.assignment(target, value, frame, ctx, stmt.lineno)
-            return ctx
+            return self.received(stmt.value, ctx)
         for child in ast.iter_child_nodes(stmt):
             if isinstance(child, ast.expr):
                 self.expression(child, frame, ctx)
         if isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Call) and \
                 self.ex.qualified(stmt.value.func) in _EXITS:
             return None
-        return ctx
+        return self.received(stmt.value, ctx) if isinstance(stmt, ast.Expr) else ctx
+
+    def received(self, expr: ast.expr, ctx: _Context) -> _Context:
+        """After rospy.wait_for_message(topic) a message has arrived: a state of its own
+        (`wait_for_message@LINE`) that only that subscriber sets guards what follows."""
+        waits = [c for c in self.calls.get(id(expr), []) if self.ex.qualified(c.func) == "rospy.wait_for_message"
+                 and Site(self.file, c.lineno) in self.sites["subscriber"]]
+        for wait in waits:
+            var = f"wait_for_message@{wait.lineno}"
+            self.writes[StateWrite(var, "set", Site(self.file, wait.lineno), self.file, wait.lineno)] = None
+        return ctx.guarded([self.guard(f"wait_for_message@{w.lineno}", "set", w) for w in waits])
 
     def class_body(self, cls: ast.ClassDef, ctx: _Context) -> None:
         """Class attributes are initial values of instance state."""
