@@ -1,11 +1,14 @@
-"""Benchmark: C++ extraction per translation unit, cold (empty result cache) and warm, and the
-share of API calls fully resolved, per system (each PATH is one), for roscpp and rclcpp apart.
+"""Benchmark: C++ extraction per translation unit, cold (empty result cache) and warm, the share
+of API calls fully resolved, and the share of publish calls whose trigger is recovered (behavior:
+timer, loop, callback or start-up on every way the call is reached, none unknown), per system
+(each PATH is one), for roscpp and rclcpp apart; then the behavior totals over all systems.
 
     python bench/cpp_bench.py [PATH...]
 
 Uses a fresh cache folder; the one-time PCH builds (ros/ros.h, the rclcpp stand-in) count in the
 first system's setup and first translation unit. A translation unit is one source file read for
-one executable class (a component library's file is read once per component it registers).
+one executable class (a component library's file is read once per component it registers). A
+publish call is counted once however many executables read it.
 """
 
 from __future__ import annotations
@@ -15,10 +18,11 @@ import statistics
 import sys
 import tempfile
 import time
+from collections import Counter
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.summary import Port
+from archlog.extract.summary import Port, Publish
 from archlog.extract.workspace import Executable, Workspace, registered_components
 
 sys.path.insert(0, str(Path(__file__).parent))
@@ -28,14 +32,31 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def main() -> None:
-    roots = [Path(p) for p in sys.argv[1:]] or [ROOT / "corpus" / "ros1", ROOT / "corpus" / "cpp_ros2"]
+    roots = [Path(p) for p in sys.argv[1:]] or [ROOT / "corpus" / d for d in ("ros1", "ros2", "cpp_ros2", "behavior")]
+    calls: dict[tuple[str, int], list[Publish]] = {}
     with tempfile.TemporaryDirectory() as cache:
         os.environ["ARCHLOG_CACHE_DIR"] = cache
         for root in roots:
-            system(root)
+            calls.update({(f"{root}/{file}", line): ways for (file, line), ways in system(root).items()})
+    if len(roots) > 1:
+        print(f"all systems: {behavior(calls)}")
 
 
-def system(root: Path) -> None:
+def behavior(calls: dict[tuple[str, int], list[Publish]]) -> str:
+    """Publish calls, those whose trigger is recovered on every way, those whose publisher is
+    known, those with a guard, and the ways by trigger."""
+    if not calls:
+        return "no publish calls"
+    recovered = sum(all(w.trigger != "unknown" for w in ways) for ways in calls.values())
+    publisher = sum(any(w.publisher is not None for w in ways) for ways in calls.values())
+    guarded = sum(any(w.guards for w in ways) for ways in calls.values())
+    triggers = Counter(t for ways in calls.values() for t, _source in {(w.trigger, w.source) for w in ways})
+    return (f"{len(calls)} publish calls, trigger recovered on {recovered} ({100 * recovered / len(calls):.1f}%), "
+            f"publisher known on {publisher} ({100 * publisher / len(calls):.1f}%), {guarded} guarded; ways: "
+            + ", ".join(f"{t} {n}" for t, n in sorted(triggers.items())))
+
+
+def system(root: Path) -> dict[tuple[str, int], list[Publish]]:
     from archlog.extract.cpp import CppEnvironment, extract_cpp, is_ros2_source
     from archlog.extract.msg_headers import generated_headers
 
@@ -54,6 +75,7 @@ def system(root: Path) -> None:
     cold: list[float] = []
     warm: list[float] = []
     ports: dict[str, list[Port]] = {"roscpp": [], "rclcpp": []}
+    calls: dict[str, dict[tuple[str, int], list[Publish]]] = {"roscpp": {}, "rclcpp": {}}
     incomplete = 0
     for (source, cls), exe in units:
         for times in (cold, warm):
@@ -62,6 +84,9 @@ def system(root: Path) -> None:
             times.append(time.perf_counter() - begin)
         family = "rclcpp" if is_ros2_source(source, env) else "roscpp"
         ports[family] += [p for p in summary.ports if p.kind != "timer"]
+        for publish in summary.publishes:
+            ways = calls[family].setdefault((publish.file, publish.line), [])
+            ways += [publish] if publish not in ways else []
         incomplete += summary.incomplete is not None
     print(f"{root.name}: {len(units)} translation units, setup {setup:.2f} s (workspace, environment, PCH)")
     if units:
@@ -71,6 +96,8 @@ def system(root: Path) -> None:
     for family, found in ports.items():
         if found:
             print(f"  {family}: {resolution(found)}")
+            print(f"  {family} behavior: {behavior(calls[family])}")
+    return {**calls["roscpp"], **calls["rclcpp"]}
 
 
 if __name__ == "__main__":

@@ -1,6 +1,6 @@
 """Extraction on CodeQL-style fixtures, compared with their .expected files: rospy/rclpy in
-corpus/python, rclcpp in corpus/cpp_ros2 (a file registering a component is read as that
-component: only its class is the node).
+corpus/python, roscpp in corpus/cpp_ros1, rclcpp in corpus/cpp_ros2 (a file registering a
+component is read as that component: only its class is the node).
 
 Set ARCHLOG_UPDATE_EXPECTED=1 to rewrite the .expected files (then review the diff)."""
 
@@ -21,7 +21,7 @@ from archlog.extract.workspace import registered_components
 from conftest import ROOT
 from support.describe import describe
 
-FOLDERS = ("python", "cpp_ros2")
+FOLDERS = ("python", "cpp_ros1", "cpp_ros2")
 FIXTURES = sorted(p for folder in FOLDERS for p in (ROOT / "corpus" / folder).iterdir() if p.suffix != ".expected")
 
 
@@ -43,6 +43,7 @@ def test_enough_fixtures() -> None:
     assert sum(n.startswith("rclpy_") for n in names) >= 10
     assert sum(n.startswith("rospy_") for n in names) >= 4
     assert sum(n.startswith("rclcpp_") for n in names) >= 10
+    assert sum(n.startswith("roscpp_") for n in names) >= 6
 
 
 @pytest.mark.parametrize("fixture", FIXTURES, ids=lambda p: p.name)

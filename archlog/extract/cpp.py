@@ -78,8 +78,8 @@ class CppEnvironment:
         self.pch = _ros_pch(system, rdir)
         self.per_file = _compile_commands(self.roots)
         self.interfaces = Interfaces.index(m.parent for root in self.roots for m in manifests(root))
-        self.fingerprint = key(json.dumps(self.parse_args()), *_tree_stamp(self.workspace_includes),
-                               *self.interfaces.stamp(), _stand_in_stamp())
+        self.fingerprint = key(json.dumps(self.parse_args()), *map(str, self.roots),  # roots: whose headers are read
+                               *_tree_stamp(self.workspace_includes), *self.interfaces.stamp(), _stand_in_stamp())
 
     def parse_args(self, source: Path | None = None) -> list[str]:
         pch = ["-include-pch", str(self.pch), "-Xclang", "-fno-validate-pch"] if self.pch else []
@@ -121,7 +121,17 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             result = _parse(index, source, name, env, cls)
             cache.put(cache_key, result)
         _merge(summary, result, diagnostics)
+    _settle_behavior(summary)
     return summary
+
+
+def _settle_behavior(summary: NodeSummary) -> None:
+    """Across the files of an executable: a call another file knows how it is reached is not
+    also reached in an unknown way; only the writes of variables some publish call depends on."""
+    known = {(p.file, p.line) for p in summary.publishes if p.trigger != "unknown"}
+    summary.publishes = [p for p in summary.publishes if p.trigger != "unknown" or (p.file, p.line) not in known]
+    guarded = {g.var for p in summary.publishes for g in p.guards}
+    summary.writes = [w for w in summary.writes if w.var in guarded]
 
 
 def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
@@ -141,7 +151,8 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     gaps = [d for d in everywhere if stand_ins and _stand_in_gap(d, stand_ins)]
     genuine = [d for d in everywhere if d not in gaps and not (gaps and _cascade(d, gaps, source))]
     errors = [d for d in genuine if d.location.file and Path(d.location.file.name) == source]
-    result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2)
+    result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2,
+                  workspace=tuple(str(root.resolve()) for root in env.roots))
     result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
     result.missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
     result.missing += [n for n in scan.missing + scan.dual if n not in result.missing]
@@ -349,7 +360,9 @@ def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
 
 
 def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink) -> None:
-    summary.ports += result.ports
+    summary.ports += [p for p in result.ports if p not in summary.ports]  # a header's code is read with each file
+    summary.publishes += [p for p in result.publishes if p not in summary.publishes]
+    summary.writes += [w for w in result.writes if w not in summary.writes]
     if result.default_name is not None and summary.default_name is None:
         summary.default_name, summary.anonymous = result.default_name, result.anonymous
         summary.name_file, summary.name_line = result.name_file, result.name_line

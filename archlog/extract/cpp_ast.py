@@ -3,7 +3,9 @@ qualified names, written arguments, literals, ROS message types from C++ types, 
 
 from __future__ import annotations
 
+import ctypes
 import re
+from collections.abc import Callable
 
 import clang.cindex as ci
 
@@ -123,3 +125,44 @@ def assignments(decl: ci.Cursor) -> list[ci.Cursor] | None:
                     return None
                 found.append(operands[-1])
     return found
+
+
+# clang's operator kinds (CXBinaryOperatorKind, CXUnaryOperatorKind), by position
+_BINARY = ("", ".*", "->*", "*", "/", "%", "+", "-", "<<", ">>", "<=>", "<", ">", "<=", ">=", "==", "!=", "&", "^",
+           "|", "&&", "||", "=", "*=", "/=", "%=", "+=", "-=", "<<=", ">>=", "&=", "^=", "|=", ",")
+_UNARY = ("", "++", "--", "++", "--", "&", "*", "+", "-", "~", "!", "__real", "__imag", "__extension__", "co_await")
+
+
+def _operator_kind(name: str) -> Callable[[ci.Cursor], int] | None:
+    """libclang's clang_getCursor{Binary,Unary}OperatorKind (libclang 17 and later), else None."""
+    try:
+        function = getattr(ci.conf.lib, name)
+    except AttributeError:
+        return None
+    function.argtypes, function.restype = [ci.Cursor], ctypes.c_int
+    return function
+
+
+_BINARY_KIND = _operator_kind("clang_getCursorBinaryOperatorKind")
+_UNARY_KIND = _operator_kind("clang_getCursorUnaryOperatorKind")
+
+
+def binary_operator(expr: ci.Cursor) -> str:
+    """The operator of a BINARY_OPERATOR or COMPOUND_ASSIGNMENT_OPERATOR cursor ("=", "&&", "==")."""
+    if _BINARY_KIND is not None:
+        kind = _BINARY_KIND(expr)
+        return _BINARY[kind] if 0 < kind < len(_BINARY) else ""
+    children = list(expr.get_children())
+    if not children:
+        return ""
+    end = children[0].extent.end.offset
+    return next((t.spelling for t in expr.get_tokens() if t.extent.start.offset >= end), "")
+
+
+def unary_operator(expr: ci.Cursor) -> str:
+    """The operator of a UNARY_OPERATOR cursor ("!", "++", "*", "&", "-")."""
+    if _UNARY_KIND is not None:
+        kind = _UNARY_KIND(expr)
+        return _UNARY[kind] if 0 < kind < len(_UNARY) else ""
+    words = [t.spelling for t in expr.get_tokens()]
+    return words[0] if words and not words[0][0].isalnum() else words[-1] if words else ""

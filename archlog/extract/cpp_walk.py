@@ -16,11 +16,14 @@ import clang.cindex as ci
 
 from archlog import names
 from archlog.diagnostics import Diagnostic
+from archlog.extract.cache import cache_dir
+from archlog.extract.cpp_behavior import read_behavior
 from archlog.extract.cpp_ast import (K, SKIP, assignments, camera_info, default_constructed, is_rvalue, period,
                                      qualified, ros_type, template_arg_type, type_from_spelling, unquote,
                                      written_args)
 from archlog.extract.rclcpp_walk import RclcppWalker
-from archlog.extract.summary import Port
+from archlog.extract.ros2_stubs import API_DIR
+from archlog.extract.summary import Port, Publish, StateWrite
 from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
 
 
@@ -82,13 +85,15 @@ class FileResult:
     fallback_lines: list[int] = field(default_factory=list)
     depends: list[tuple[str, int]] = field(default_factory=list)
     missing: list[str] = field(default_factory=list)
+    publishes: list[Publish] = field(default_factory=list)
+    writes: list[StateWrite] = field(default_factory=list)
 
 
 def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool, cls: str | None = None,
-         ros2: bool = False) -> FileResult:
+         ros2: bool = False, workspace: tuple[str, ...] = ()) -> FileResult:
     """Read one parsed file; with `cls`, only that class's methods (and free functions) count.
     `ros2`: the file is ROS 2 code (rclcpp_walk.py reads its API)."""
-    walker = _Walker(source, shown, cls, ros2)
+    walker = _Walker(source, shown, cls, ros2, workspace or (str(source.parent),))
     walker.walk(tu.cursor)
     if incomplete_ast:
         walker.token_fallback(tu)
@@ -96,8 +101,10 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
 
 
 class _Walker(RclcppWalker):
-    def __init__(self, source: Path, shown: str, cls: str | None = None, ros2: bool = False) -> None:
+    def __init__(self, source: Path, shown: str, cls: str | None = None, ros2: bool = False,
+                 workspace: tuple[str, ...] = ()) -> None:
         self.source, self.file, self.cls, self.ros2 = str(source), shown, cls, ros2
+        self.workspace = tuple(folder.rstrip("/") + "/" for folder in workspace)  # whose headers' code is read
         self.result = FileResult()
         self.handles: dict[tuple, Value] = {}
         self.param_vars: dict[tuple, Value] = {}
@@ -105,6 +112,7 @@ class _Walker(RclcppWalker):
         self.call_sites: dict[tuple, list[ci.Cursor]] = {}
         self.spans: list[tuple[int, int]] | None = None
         self.loops: dict[tuple, ci.Cursor] = {}
+        self.port_calls: dict[ci.Cursor, list[str]] = {}  # the call that made each port (cpp_behavior.py)
 
     @staticmethod
     def key(decl: ci.Cursor | None) -> tuple | None:
@@ -116,14 +124,24 @@ class _Walker(RclcppWalker):
         loc = cursor.location
         return loc.file is not None and loc.file.name == self.source
 
+    def shown(self, cursor: ci.Cursor) -> str:
+        """The file of a cursor as files are shown: a header relative to the folder the file is
+        shown from."""
+        path = cursor.location.file.name if cursor.location.file is not None else self.source
+        if path == self.source:
+            return self.file
+        root = self.source[: len(self.source) - len(self.file)] if self.source.endswith(self.file) else ""
+        return path[len(root):] if root and path.startswith(root) else path
+
     def unknown(self, cursor: ci.Cursor, why: str = "") -> Unknown:
         text = " ".join(t.spelling for t in cursor.get_tokens())[:120] or cursor.spelling
-        return Unknown(text + (f" ({why})" if why else ""), self.file, cursor.location.line)
+        return Unknown(text + (f" ({why})" if why else ""), self.shown(cursor), cursor.location.line)
 
     # -- traversal ------------------------------------------------------------------------
     def walk(self, root: ci.Cursor) -> None:
         cursors = [c for top in root.get_children() if self.in_main(top) for c in top.walk_preorder()
                    if self.in_main(c)]
+        cursors += self.header_code(cursors)
         for cursor in cursors:
             if cursor.kind == K.CALL_EXPR and cursor.referenced is not None:
                 self.call_sites.setdefault(self.key(cursor.referenced.canonical), []).append(cursor)
@@ -136,9 +154,40 @@ class _Walker(RclcppWalker):
                 self.member_inits(cursor)
         if self.ros2:
             self.prepare_ros2(cursors)
-        for cursor in self.relevant(cursors):
+        kept = self.relevant(cursors)
+        for cursor in kept:
             if cursor.kind == K.CALL_EXPR:
                 self.call(cursor)
+        self.result.publishes, self.result.writes = read_behavior(self, kept, self.port_calls)
+
+    def header_code(self, cursors: list[ci.Cursor]) -> list[ci.Cursor]:
+        """The cursors of definitions in the workspace's own headers that the file's code uses
+        (base class constructors, inline methods), and of the methods those use or register as
+        callbacks, transitively."""
+        found: list[ci.Cursor] = []
+        seen: set[tuple | None] = set()
+        pending = [c.referenced for c in cursors if c.kind == K.CALL_EXPR]
+        while pending and len(seen) < 4000:
+            decl = pending.pop()
+            if decl is None or (decl_key := self.key(decl.canonical)) in seen:
+                continue
+            seen.add(decl_key)
+            definition = decl.get_definition()
+            if definition is None or not self.workspace_header(definition):
+                continue
+            body = list(definition.walk_preorder())
+            found += body
+            pending += [c.referenced for c in body if c.kind in (K.CALL_EXPR, K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)
+                        and c.referenced is not None and c.referenced.kind in _CALLABLE]
+        return found
+
+    def workspace_header(self, definition: ci.Cursor) -> bool:
+        """A definition in a header of the workspace (not the file itself, not a generated header
+        or one of archlog's stand-ins)."""
+        file = definition.location.file
+        if file is None or file.name == self.source or not file.name.startswith(self.workspace):
+            return False
+        return not file.name.startswith((str(cache_dir()), str(API_DIR)))
 
     def relevant(self, cursors: list[ci.Cursor]) -> list[ci.Cursor]:
         """All cursors, or for a nodelet class only those inside its methods and free functions."""
@@ -302,8 +351,8 @@ class _Walker(RclcppWalker):
             return ""
         if owner in (NODE_HANDLE, "ros::param") and name == "param" and len(args) == 2 and is_rvalue(args[1]):
             handle = self.handle_of(next(expr.get_children())) if owner == NODE_HANDLE else ""
-            return ParamRef(self.value(args[0], depth + 1), self.value(args[1], depth + 1), handle, self.file,
-                            expr.location.line)
+            return ParamRef(self.value(args[0], depth + 1), self.value(args[1], depth + 1), handle,
+                            self.shown(expr), expr.location.line)
         if owner == NODE_HANDLE and name in ("resolveName", "getNamespace"):
             return self.handle_of(next(expr.get_children())) if name == "getNamespace" else self.value(args[0], depth + 1)
         if name in ("basic_string", "string", "c_str", "str") or (name == "" and len(args) == 1):
@@ -332,7 +381,7 @@ class _Walker(RclcppWalker):
                      "", "")
         elif owner == "ros" and name == "init" and len(args) >= 3:
             self.result.default_name = self.value(args[2])
-            self.result.name_file, self.result.name_line = self.file, call.location.line
+            self.result.name_file, self.result.name_line = self.shown(call), call.location.line
             self.result.anonymous = len(args) > 3 and "AnonymousName" in " ".join(
                 t.spelling for t in args[3].get_tokens())
         elif (owner, name) in METHODS and args:
@@ -395,7 +444,7 @@ class _Walker(RclcppWalker):
             key = self.key(target.referenced) if target is not None else None
             if key is not None:
                 fallback = default if default is not None else self.unknown(call, "parameter without default")
-                self.param_vars[key] = ParamRef(pname, fallback, handle, self.file, call.location.line)
+                self.param_vars[key] = ParamRef(pname, fallback, handle, self.shown(call), call.location.line)
 
     def duration(self, expr: ci.Cursor) -> Value:
         """Seconds of a ros::Duration(x) / ros::Rate(hz) argument."""
@@ -436,20 +485,20 @@ class _Walker(RclcppWalker):
             for option in name.options:
                 self.add(kind, call, option, type_, handle, default, queue, qos)
             return
-        loc = call.location
+        loc, file = call.location, self.shown(call)
+        self.port_calls.setdefault(call, []).append(kind)
         if isinstance(name, str) and name.startswith("~") and call.referenced is not None and \
                 qualified(call.referenced.semantic_parent) == NODE_HANDLE:
             self.result.diagnostics.append(Diagnostic(
-                self.file, loc.line, "cpp-private-name",
+                file, loc.line, "cpp-private-name",
                 f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
                 "(the node dies at start-up); use a NodeHandle(\"~\") instead", "error", loc.column))
-        self.result.ports.append(Port(kind, name, type_, self.file, loc.line, loc.column, handle, default, qos,
-                                      queue))
+        self.result.ports.append(Port(kind, name, type_, file, loc.line, loc.column, handle, default, qos, queue))
 
     # -- when the AST is incomplete -------------------------------------------------------------
     def token_fallback(self, tu: ci.TranslationUnit) -> None:
         """Read NodeHandle calls from the text of lines where the AST produced no port."""
-        covered = {p.line for p in self.result.ports}
+        covered = {p.line for p in self.result.ports if p.file == self.file}
         text = Path(self.source).read_text(errors="replace")
         if self.ros2:
             self.ros2_fallback(text, covered, tu)
@@ -485,6 +534,9 @@ def _callback_type(text: str, start: int) -> str | None:
         return None
     signature = re.search(rf"\b{callback.group(1)}\s*\(\s*(?:const\s+)?([\w:]+)", text)
     return type_from_spelling(signature.group(1)) if signature else None
+
+
+_CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)
 
 
 def _is_handle_type(type_: ci.Type) -> bool:

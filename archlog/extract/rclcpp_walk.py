@@ -18,8 +18,8 @@ import clang.cindex as ci
 
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cache import cache_dir
-from archlog.extract.cpp_ast import (K, SKIP, camera_info, qualified, ros2_type, ros_type, type_from_spelling,
-                                     unquote, written_args)
+from archlog.extract.cpp_ast import (K, SKIP, binary_operator, camera_info, qualified, ros2_type, ros_type,
+                                     type_from_spelling, unquote, written_args)
 from archlog.extract.qos import FIXED_SETTERS, PRESET_NAMES, Qos, number, seconds_text
 from archlog.extract.ros2_stubs import API_DIR
 from archlog.extract.summary import Port
@@ -166,18 +166,9 @@ def default_argument(function: ci.Cursor, index: int) -> ci.Cursor | None:
     return value[-1] if value else None
 
 
-def binary_operator(expr: ci.Cursor) -> str:
-    """The operator of a BINARY_OPERATOR cursor (libclang does not spell it)."""
-    children = list(expr.get_children())
-    if not children:
-        return ""
-    end = children[0].extent.end.offset
-    return next((t.spelling for t in expr.get_tokens() if t.extent.start.offset >= end), "")
-
-
 class RclcppWalker:
     """Mixed into the C++ walker: everything ROS 2. Uses the walker's value(), unknown(), add(),
-    key(), from_call_sites() and result."""
+    key(), shown(), from_call_sites() and result."""
 
     result: object
     file: str
@@ -385,13 +376,13 @@ class RclcppWalker:
         namespace = next((a for n, a in texts if n in ("namespace_", "namespace", "ns", "node_namespace")), None)
         if self.node_names and value not in self.node_names:
             self.result.diagnostics.append(Diagnostic(
-                self.file, call.location.line, "cpp-several-nodes", f"this file creates several nodes "
+                self.shown(call), call.location.line, "cpp-several-nodes", f"this file creates several nodes "
                 f"({self.node_names[0]}, {value}); archlog reads them as one node named after the first", "note"))
         self.node_names.append(value)
         if self.result.default_name is None:
             self.result.default_name = value
             self.result.namespace = self.value(namespace) if namespace is not None else ""
-            self.result.name_file, self.result.name_line = self.file, call.location.line
+            self.result.name_file, self.result.name_line = self.shown(call), call.location.line
 
     def base_init(self, call: ci.Cursor) -> bool:
         """A call in a constructor's initializer list (a base class initializer)."""
@@ -483,7 +474,7 @@ class RclcppWalker:
         """A value read from a node parameter, with its default (the declaration's, if any)."""
         default = default if default is not None else self.declared.get(name)
         fallback = self.value(default) if default is not None else self.unknown(call, "parameter without default")
-        return ParamRef(name, fallback, "~", self.file, call.location.line)
+        return ParamRef(name, fallback, "~", self.shown(call), call.location.line)
 
     def rclcpp_value(self, expr: ci.Cursor, owner: str, name: str, args: list[ci.Cursor], depth: int) -> Value | None:
         """Values of rclcpp calls: parameters read, ParameterValue(x), get_name(), get_namespace()."""
