@@ -142,6 +142,7 @@ class _Behavior:
         self.arguments: dict[tuple[int, str], list[tuple[ast.expr, _Frame]]] = {}
         self.returned: dict[int, list[ast.expr]] = {}
         self.calls: dict[int, list[ast.Call]] = {}  # expression -> the calls it makes
+        self.resolved: dict[tuple[str, int, _Frame], list] = {}  # memo of origins, callables, classes_of
         self.budget = _BUDGET
         self.module = _Frame(None)
         self.module_nodes = _in_scope(ex.tree.body)
@@ -465,8 +466,22 @@ class _Behavior:
                         found.append((value, self.canonical(self.ex.attr_scope.get(id(value)), cls)))
         return found
 
+    def memo(self, compute: Callable[[ast.expr, _Frame, int], list], expr: ast.expr, frame: _Frame,
+             depth: int) -> list:
+        """A resolution computed once per expression and frame (near the top of a resolution,
+        where the depth limit does not cut it short)."""
+        if depth > 2:
+            return compute(expr, frame, depth)
+        key = (compute.__name__, id(expr), frame)
+        if key not in self.resolved:
+            self.resolved[key] = compute(expr, frame, depth)
+        return self.resolved[key]
+
     def classes_of(self, expr: ast.expr, frame: _Frame, depth: int = 0) -> list[str]:
         """The classes of the file an object may be an instance of."""
+        return self.memo(self._classes_of, expr, frame, depth)
+
+    def _classes_of(self, expr: ast.expr, frame: _Frame, depth: int) -> list[str]:
         if isinstance(expr, ast.Name) and expr.id == "self" and frame.cls:
             return [frame.cls]
         found = list(dict.fromkeys(c.func.id for c, _f in self.origins(expr, frame, depth + 1)
@@ -480,6 +495,9 @@ class _Behavior:
     def origins(self, expr: ast.expr, frame: _Frame, depth: int = 0) -> list[tuple[ast.Call, _Frame]]:
         """The calls that may have made the object an expression holds: a constructor, or what a
         function of the file returns."""
+        return self.memo(self._origins, expr, frame, depth)
+
+    def _origins(self, expr: ast.expr, frame: _Frame, depth: int) -> list[tuple[ast.Call, _Frame]]:
         if depth > 10:
             return []
         if isinstance(expr, ast.Call):
@@ -500,7 +518,11 @@ class _Behavior:
 
     def callables(self, expr: ast.expr, frame: _Frame, depth: int = 0) -> list[_Target]:
         """The functions of the file a callee expression may be: methods (with overrides in
-        subclasses), module and nested functions, lambdas, functools.partial, constructors."""
+        subclasses), module and nested functions, lambdas, functools.partial, constructors, and
+        callables stored in attributes."""
+        return self.memo(self._callables, expr, frame, depth)
+
+    def _callables(self, expr: ast.expr, frame: _Frame, depth: int) -> list[_Target]:
         if depth > 10:
             return []
         if isinstance(expr, ast.Lambda):
@@ -514,9 +536,11 @@ class _Behavior:
                 owner = self.owner_class(frame)
                 bases = self.lineage(owner)[1:] if owner else []
                 return self.methods(bases, expr.attr, frame.cls, overrides=False)
-            return [t for cls in self.classes_of(value, frame, depth + 1)
-                    for t in self.methods([cls], "run" if expr.attr == "start" and self.is_thread(cls) else expr.attr,
-                                          cls)]
+            found = [t for cls in self.classes_of(value, frame, depth + 1)
+                     for t in self.methods([cls], "run" if expr.attr == "start" and self.is_thread(cls) else expr.attr,
+                                           cls)]
+            return found or [t for e, f in self.attribute_values(expr, frame, depth + 1)  # a stored callable
+                             for t in self.callables(e, f, depth + 1)]
         if not isinstance(expr, ast.Name):
             return []
         name = expr.id
