@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import ast
 import operator
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, replace
 
 from archlog.diagnostics import DiagnosticSink
@@ -194,7 +194,7 @@ class _Behavior:
     def _add_scope(self, frame: _Frame) -> None:
         func = frame.func
         assert func is not None
-        nodes = _in_scope([func.body] if isinstance(func, ast.Lambda) else func.body)
+        nodes = _in_scope([func.body] if isinstance(func, ast.Lambda) else func.body)  # type: ignore[list-item]
         declared = {name for n in nodes if isinstance(n, ast.Global) for name in n.names}
         stores = {n.id for n in nodes if isinstance(n, ast.Name) and isinstance(n.ctx, (ast.Store, ast.Del))}
         nonlocal_ = {name for n in nodes if isinstance(n, ast.Nonlocal) for name in n.names}
@@ -222,8 +222,10 @@ class _Behavior:
         frame = self.frames.get(id(function.node)) or _Frame(function.node, function.cls)
         return replace(frame, cls=cls or frame.cls)
 
-    def returns(self, func: ast.FunctionDef | ast.AsyncFunctionDef) -> list[ast.expr]:
-        """What a function returns (its return statements' values)."""
+    def returns(self, func: FunctionNode) -> list[ast.expr]:
+        """What a function returns (its return statements' values, a lambda's body)."""
+        if isinstance(func, ast.Lambda):
+            return [func.body]
         if id(func) not in self.returned:
             self.returned[id(func)] = [r.value for r in _in_scope(func.body) if isinstance(r, ast.Return) and r.value]
         return self.returned[id(func)]
@@ -329,7 +331,7 @@ class _Behavior:
         value = self.ex.value(expr, scope=self.function(frame))
         if isinstance(value, str):
             return value
-        root = expr
+        root: ast.expr = expr
         while isinstance(root, ast.Attribute):
             root = root.value
         if isinstance(expr, ast.Attribute) and isinstance(root, ast.Name) and \
@@ -503,7 +505,7 @@ class _Behavior:
         if isinstance(expr, ast.Call):
             if isinstance(expr.func, ast.Name) and expr.func.id in self.ex.class_attrs:
                 return [(expr, frame)]
-            targets = [t for t in self.callables(expr.func, frame, depth + 1) if not isinstance(t.func, ast.Lambda)]
+            targets = self.callables(expr.func, frame, depth + 1)
             if not targets:
                 return [(expr, frame)]
             return [o for t in targets for callee in [self.bind(t, expr, frame)]
@@ -869,7 +871,7 @@ class _Behavior:
     def expression(self, expr: ast.expr, frame: _Frame, ctx: _Context) -> None:
         """The calls an expression makes (not those inside its lambdas)."""
         if id(expr) not in self.calls:
-            self.calls[id(expr)] = [node for node in _in_scope([expr]) if isinstance(node, ast.Call)]
+            self.calls[id(expr)] = [n for n in _in_scope([expr]) if isinstance(n, ast.Call)]  # type: ignore[list-item]
         for call in self.calls[id(expr)]:
             self.call(call, frame, ctx)
 
@@ -932,7 +934,7 @@ def _annotations(func: FunctionNode) -> dict[str, ast.expr]:
     return {a.arg: a.annotation for a in args.posonlyargs + args.args + args.kwonlyargs if a.annotation is not None}
 
 
-def _pairs(targets: list[ast.expr], value: ast.expr | None) -> Iterator[tuple[ast.expr, ast.expr | None]]:
+def _pairs(targets: Sequence[ast.expr], value: ast.expr | None) -> Iterator[tuple[ast.expr, ast.expr | None]]:
     """Each assigned target with its value (tuple unpacking pairs up when the shapes agree)."""
     for target in targets:
         if isinstance(target, (ast.Tuple, ast.List)):
