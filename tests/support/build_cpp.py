@@ -45,18 +45,25 @@ def _compile(package, executable) -> str | None:
     command = ["g++", "-std=c++17", "-O0", "-w", *includes, *map(str, executable.sources), "-o", str(out),
                *extra, *LIBS]
     cached = _cache_path(package.path, executable.sources, include_dirs, [*extra, *LIBS])
-    if cached.is_file():  # the same sources, headers and flags were built in this session
-        shutil.copy2(cached, out)
-        return None
-    result = subprocess.run(command, capture_output=True, text=True, timeout=600, check=False)
-    if result.returncode != 0:
-        return f"g++ failed for {executable.name}:\n{result.stderr[-3000:]}"
-    shutil.copy2(out, cached)
+    with _key_lock(cached.name):  # a twin built at the same time waits for this build
+        if cached.is_file():  # the same sources, headers and flags were built in this session
+            shutil.copy2(cached, out)
+            return None
+        result = subprocess.run(command, capture_output=True, text=True, timeout=600, check=False)
+        if result.returncode != 0:
+            return f"g++ failed for {executable.name}:\n{result.stderr[-3000:]}"
+        shutil.copy2(out, cached)
     return None
 
 
 _cache_lock = threading.Lock()
 _cache_dir: list[Path] = []
+_key_locks: dict[str, threading.Lock] = {}
+
+
+def _key_lock(key: str) -> threading.Lock:
+    with _cache_lock:
+        return _key_locks.setdefault(key, threading.Lock())
 
 
 def _cache_path(root: Path, sources: list[Path], include_dirs: list[Path], flags: list[str]) -> Path:
