@@ -225,3 +225,16 @@ def test_cpp_alternatives_and_loops(tmp_path: Path) -> None:
     got = [(p.line, p.name.options if hasattr(p.name, "options") else p.name) for p in s.ports]
     assert got == [(8, ("front/scan", "rear/scan")), (11, ("mode_fast", "mode_slow")), (12, "left/image"),
                    (12, "right/image"), (14, "cam0/info"), (14, "cam1/info")]
+
+
+def test_classes_nested_in_functions_and_classes_are_read(tmp_path: Path) -> None:
+    """A node class defined inside a function (or another class) used to raise a KeyError."""
+    (tmp_path / "nested.py").write_text(
+        "import rospy\nfrom std_msgs.msg import String\n\n\ndef main():\n    class Relay:\n"
+        "        def __init__(self):\n            self.pub = rospy.Publisher('out', String, queue_size=1)\n\n"
+        "    class Outer:\n        class Inner:\n            def start(self):\n"
+        "                rospy.Subscriber('in', String, print)\n\n"
+        "    rospy.init_node('relay')\n    Relay()\n    Outer.Inner().start()\n")
+    sink = DiagnosticSink()
+    s = extract_python(tmp_path / "nested.py", "demo", "nested.py", "nested.py", sink)
+    assert sorted((p.kind, p.name) for p in s.ports) == [("publisher", "out"), ("subscriber", "in")]

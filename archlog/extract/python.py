@@ -262,7 +262,8 @@ class _Extractor:
         if isinstance(node, ast.ClassDef):
             for child in node.body:
                 if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                    outer, self.scope = self.scope, self.functions[(node.name, child.name)]
+                    outer = self.scope
+                    self.scope = self.functions.get((node.name, child.name)) or _Function(child, node.name)
                     for stmt in child.body:
                         self._visit(stmt)
                     self.scope = outer
