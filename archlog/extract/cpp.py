@@ -28,6 +28,7 @@ import clang.cindex as ci
 
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cache import ResultCache, cache_dir, key
+from archlog.extract.cpp_behavior import FileBehavior, link_files
 from archlog.extract.cpp_walk import FileResult, walk
 from archlog.extract.ros2_stubs import API_DIR, DUAL, INTERFACE_INCLUDE, Interfaces, is_ros2, library_for, \
     library_interfaces, spelled_types, stand_in_dir
@@ -108,6 +109,7 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
     summary = NodeSummary(package, executable, "cpp")
     cache = ResultCache("cpp")
     index: ci.Index | None = None
+    behaviors: list[FileBehavior] = []
     for source in sources:
         name = shown.get(source, str(source))
         if not source.is_file():
@@ -121,13 +123,16 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             result = _parse(index, source, name, env, cls)
             cache.put(cache_key, result)
         _merge(summary, result, diagnostics)
+        behaviors.append(result.behavior)
+    summary.publishes, summary.writes = link_files(behaviors)
     _settle_behavior(summary)
     return summary
 
 
 def _settle_behavior(summary: NodeSummary) -> None:
-    """Across the files of an executable: a call another file knows how it is reached is not
-    also reached in an unknown way; only the writes of variables some publish call depends on."""
+    """A call some file knows how it is reached is not also reached in an unknown way (a
+    header's code read with several files); only the writes of variables some publish call
+    depends on count."""
     known = {(p.file, p.line) for p in summary.publishes if p.trigger != "unknown"}
     summary.publishes = [p for p in summary.publishes if p.trigger != "unknown" or (p.file, p.line) not in known]
     guarded = {g.var for p in summary.publishes for g in p.guards}
@@ -361,8 +366,6 @@ def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
 
 def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink) -> None:
     summary.ports += [p for p in result.ports if p not in summary.ports]  # a header's code is read with each file
-    summary.publishes += [p for p in result.publishes if p not in summary.publishes]
-    summary.writes += [w for w in result.writes if w not in summary.writes]
     if result.default_name is not None and summary.default_name is None:
         summary.default_name, summary.anonymous = result.default_name, result.anonymous
         summary.name_file, summary.name_line = result.name_file, result.name_line
@@ -385,12 +388,14 @@ def _tree_stamp(folders: list[Path]) -> list[str]:
 
 
 def _ros_pch(system: list[str], rdir: str | None) -> Path | None:
-    """A precompiled ros/ros.h for this machine's headers, built once and kept in the cache."""
+    """A precompiled ros/ros.h for this machine's headers, built once and kept in the cache; with
+    boost::bind's placeholders global, as roscpp's headers gave them before Boost 1.73 (ROS 1 code
+    writes boost::bind(&C::cb, this, _1) without including boost/bind.hpp)."""
     header = next((Path(d) / "ros" / "ros.h" for d in system if (Path(d) / "ros" / "ros.h").is_file()), None)
     if header is None or rdir is None:
         return None
-    return _precompiled("ros", "#include <ros/ros.h>\n", [f"-I{d}" for d in system], rdir,
-                        _tree_stamp([header.parent]))
+    prelude = "#define BOOST_BIND_GLOBAL_PLACEHOLDERS\n#include <boost/bind.hpp>\n#include <ros/ros.h>\n"
+    return _precompiled("ros", prelude, [f"-I{d}" for d in system], rdir, _tree_stamp([header.parent]))
 
 
 @lru_cache(maxsize=1)

@@ -15,8 +15,9 @@ made them through assignments, members, containers, function returns and argumen
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 
 import clang.cindex as ci
 
@@ -27,7 +28,7 @@ from archlog.extract.cpp_periods import Periods
 from archlog.extract.cpp_state import (Conditions, StateVar, assigned_value, initial_value, method_value, object_of,
                                        operands, state_var)
 from archlog.extract.rclcpp_walk import strip
-from archlog.extract.summary import Guard, Publish, Site, StateWrite
+from archlog.extract.summary import Guard, Port, Publish, Site, StateWrite
 from archlog.values import Value
 
 SOURCE_KINDS = {"subscriber": "callback", "service_server": "callback", "action_server": "callback",
@@ -37,23 +38,77 @@ _MAX_WAYS = 24
 
 
 @dataclass(frozen=True)
-class _Way:
-    """One way execution reaches a point: what started it, and the guards met on the way."""
+class Way:
+    """One way execution reaches a point: what started it, and the guards met on the way; an
+    unknown way names the functions it enters by (their USRs: another file may call them)."""
 
     trigger: str
     source: Site | None = None
     period: Value | None = None
     guards: tuple[Guard, ...] = ()
+    entry: tuple[str, ...] = ()
 
 
-def read_behavior(host: Host, cursors: list[ci.Cursor],
-                  port_calls: dict[ci.Cursor, list[str]]) -> tuple[list[Publish], list[StateWrite]]:
-    """The publish calls and state writes of one file; `port_calls` maps each call that made a
-    port to the kinds of the ports it made."""
+@dataclass
+class FileBehavior:
+    """What one file says about behavior: its publish calls and state writes; those reached in an
+    unknown way with the functions that way enters (`open`); and the ways this file calls
+    functions it does not define (`calls`, by USR). link_files() joins the files of a node."""
+
+    publishes: list[Publish] = field(default_factory=list)
+    writes: list[StateWrite] = field(default_factory=list)
+    open: list[tuple[Publish | StateWrite, tuple[str, ...]]] = field(default_factory=list)
+    calls: list[tuple[str, Way]] = field(default_factory=list)
+
+
+def read_behavior(host: Host, cursors: list[ci.Cursor], port_calls: dict[ci.Cursor, list[str]],
+                  named: list[tuple[str, Port]], text: bytes | None = None) -> FileBehavior:
+    """The behavior of one file; `port_calls` maps each call that made a port to the kinds of the
+    ports it made, `named` gives ports read from the tokens with the names in their arguments
+    (callbacks among them); `text`: the file's text when its AST is incomplete."""
     behavior = _Behavior(host, port_calls)
     behavior.index.read(cursors)
     behavior.link()
-    return behavior.publishes(), behavior.writes()
+    behavior.link_named(named)
+    if text is not None:
+        behavior.link_text(text)
+    found = FileBehavior()
+    behavior.publishes(found)
+    behavior.writes(found)
+    behavior.calls_out(found)
+    return found
+
+
+def link_files(files: list[FileBehavior]) -> tuple[list[Publish], list[StateWrite]]:
+    """The publish calls and writes of a node's files, where a call or write one file reaches
+    in an unknown way is reached the ways other files call the function it is in."""
+    calls: dict[str, list[Way]] = {}
+    for file in files:
+        for usr, way in file.calls:
+            calls.setdefault(usr, []).append(way)
+    linked = [found for file in files for item, entry in file.open for found in _relink(item, entry, calls)]
+    publishes = [p for file in files for p in file.publishes] + [p for p in linked if isinstance(p, Publish)]
+    writes = [w for file in files for w in file.writes] + [w for w in linked if isinstance(w, StateWrite)]
+    return sorted(_unique(publishes), key=lambda p: (p.file, p.line)), _unique(writes)
+
+
+def _relink(item: Publish | StateWrite, entry: tuple[str, ...], calls: dict[str, list[Way]],
+            depth: int = 0) -> list[Publish | StateWrite]:
+    """An item reached in an unknown way, reached instead the ways other files call its entry
+    (again through unknown ways, a few levels)."""
+    ways = [w for usr in entry for w in calls.get(usr, [])]
+    if not ways or depth > 4:
+        return [item]
+    found: list[Publish | StateWrite] = []
+    for way in ways:
+        if isinstance(item, StateWrite):
+            source = way.source if way.trigger in ("callback", "timer") else None
+            linked: Publish | StateWrite = replace(item, source=source)
+        else:
+            linked = replace(item, trigger=way.trigger, source=way.source, guards=_joined(way.guards, item.guards),
+                             period=way.period if way.trigger == "loop" else item.period)
+        found += _relink(linked, way.entry, calls, depth + 1) if way.trigger == "unknown" else [linked]
+    return found
 
 
 class _Behavior:
@@ -70,8 +125,9 @@ class _Behavior:
         self.roots: dict[tuple, list[tuple[str, Site | None]]] = {}
         self.edges: dict[tuple, list[ci.Cursor]] = {}  # function -> points where it runs besides its calls
         self.launches: dict[tuple, list[tuple[ci.Cursor, int]]] = {}  # function -> (thread launch, its first argument)
+        self.usrs: dict[tuple, str] = {}  # function id -> USR, for callbacks another file may define
         self._overrides: dict[tuple, list[Function]] | None = None
-        self._reach: dict[tuple, list[_Way]] = {}
+        self._reach: dict[tuple, list[Way]] = {}
 
     # -- the call graph ---------------------------------------------------------------------
     def link(self) -> None:
@@ -103,6 +159,35 @@ class _Behavior:
             if fid not in self.roots and fid not in self.edges:
                 self.edges[fid] = [lam]  # runs where it is written (std algorithms, a helper taking it)
 
+    def link_named(self, named: list[tuple[str, Port]]) -> None:
+        """Functions named in the arguments of a port read from the tokens are its callbacks."""
+        for name, port in named:
+            if port.kind in SOURCE_KINDS:
+                for function in self.index.functions:
+                    if function.cursor.spelling == name and function.cursor.kind in FUNCTIONS:
+                        self.roots.setdefault(function.id, []).append((SOURCE_KINDS[port.kind],
+                                                                      Site(port.file, port.line)))
+
+    def link_text(self, text: bytes) -> None:
+        """Calls the AST lost (the file does not compile): a function of the file nothing runs is
+        called where another function's text names it followed by `(`, and is a callback where
+        it is named after `&` (handed to something)."""
+        for function in self.index.functions:
+            cursor = function.cursor
+            if function.file != self.host.source or cursor.kind not in FUNCTIONS or cursor.spelling == "main" or \
+                    self.roots.get(function.id) or self.callers(function):
+                continue
+            named = rb"(&\s*(?:\w+\s*::\s*)*)?\b%s\s*(\()?" % re.escape(cursor.spelling.encode())
+            for match in re.finditer(named, text):
+                offset = match.start()
+                caller = self.index.enclosing_offset(function.file, offset)
+                if caller is None or caller.id == function.id or not (match.group(1) or match.group(2)):
+                    continue
+                if match.group(1):
+                    self.roots.setdefault(function.id, []).append(("callback", None))
+                else:
+                    self.edges.setdefault(function.id, []).append(_innermost(caller.cursor, offset))
+
     def callbacks(self, exprs: Iterable[ci.Cursor], depth: int = 0) -> list[tuple]:
         """The functions and lambdas arguments pass: `&C::cb`, `cb`, a lambda, std::bind(...), a
         local variable holding one of these."""
@@ -116,6 +201,7 @@ class _Behavior:
                 ref = expr.referenced
                 if ref is not None and ref.kind in FUNCTIONS:
                     found.append(self.host.key(ref.canonical))
+                    self.usrs[found[-1]] = ref.get_usr()
                 elif ref is not None and ref.kind == K.VAR_DECL and depth < 4 and \
                         ref.semantic_parent is not None and ref.semantic_parent.kind in DEFINITIONS:
                     found += self.callbacks(self.index.flows.get(self.host.key(ref), []), depth + 1)
@@ -134,11 +220,15 @@ class _Behavior:
         return found
 
     def overridden(self, function: Function) -> list[tuple]:
+        """The ids of the virtual methods of base classes a method overrides."""
+        return [self.host.key(m.canonical) for m in self.bases(function)]
+
+    def bases(self, function: Function) -> list[ci.Cursor]:
         """The virtual methods of base classes a method overrides (by name)."""
         cursor = function.cursor
         if cursor.kind != K.CXX_METHOD or not cursor.is_virtual_method():
             return []
-        found: list[tuple] = []
+        found: list[ci.Cursor] = []
         queue, seen = [cursor.semantic_parent], set()
         while queue and len(seen) < 16:
             cls = queue.pop()
@@ -150,7 +240,7 @@ class _Behavior:
                 if child.kind == K.CXX_BASE_SPECIFIER and child.referenced is not None:
                     base = child.referenced.get_definition() or child.referenced
                     queue.append(base)
-                    found += [self.host.key(m.canonical) for m in base.get_children()
+                    found += [m for m in base.get_children()
                               if m.kind == K.CXX_METHOD and m.spelling == cursor.spelling and m.is_virtual_method()]
         return found
 
@@ -170,45 +260,46 @@ class _Behavior:
         definition = ref.get_definition()
         return leaves or ([definition] if definition is not None else [])
 
-    def reach(self, function: Function, stack: tuple = ()) -> list[_Way]:
+    def reach(self, function: Function, stack: tuple = ()) -> list[Way]:
         """Every way execution enters a function, merged by (trigger, source, period)."""
         if function.id in self._reach:
             return self._reach[function.id]
         if function.id in stack or len(stack) > 12:
             return []
-        ways: list[_Way] = []
+        ways: list[Way] = []
         for fid in [function.id, *self.overridden(function)]:
-            ways += [_Way(trigger, site) for trigger, site in self.roots.get(fid, [])]
+            ways += [Way(trigger, site) for trigger, site in self.roots.get(fid, [])]
         cursor = function.cursor
         if (cursor.kind == K.FUNCTION_DECL and cursor.spelling == "main") or \
                 (cursor.kind == K.CXX_METHOD and cursor.spelling in STARTUP):
-            ways.append(_Way("startup"))
+            ways.append(Way("startup"))
         for point in self.callers(function):
             caller = self.index.enclosing(point)
             if caller is None:  # a global's initializer
-                ways.append(_Way("startup"))
+                ways.append(Way("startup"))
                 continue
             ways += [self.extend(way, caller, point) for way in self.reach(caller, (*stack, function.id))]
-        if not ways:
-            ways.append(_Way("startup" if cursor.kind == K.CONSTRUCTOR else "unknown"))
+        if not ways and cursor.kind == K.CONSTRUCTOR:
+            ways.append(Way("startup"))
+        elif not ways:  # called from another file, maybe
+            entry = (cursor.get_usr(), *(m.get_usr() for m in self.bases(function)))
+            ways.append(Way("unknown", entry=entry if cursor.kind != K.LAMBDA_EXPR else ()))
         merged = _merge(ways)
         self._reach[function.id] = merged
         return merged
 
-    def extend(self, way: _Way, function: Function, point: ci.Cursor) -> _Way:
+    def extend(self, way: Way, function: Function, point: ci.Cursor) -> Way:
         """A way into `function`, carried on to `point` inside it: the guards there, and the
         endless loop around it (for a way not started by a callback)."""
         guards, loop_period, in_loop = self.paths.at(function.id, function.cursor, point)
-        known = {(g.var, g.value) for g in way.guards}
-        merged = way.guards + tuple(g for g in guards if (g.var, g.value) not in known)
         if in_loop and way.trigger in ("startup", "unknown", "loop"):
-            return _Way("loop", None, loop_period, merged)
-        return _Way(way.trigger, way.source, way.period, merged)
+            return Way("loop", None, loop_period, _joined(way.guards, guards))
+        return replace(way, guards=_joined(way.guards, guards))
 
-    def ways_to(self, point: ci.Cursor) -> list[_Way]:
+    def ways_to(self, point: ci.Cursor) -> list[Way]:
         function = self.index.enclosing(point)
         if function is None:
-            return [_Way("startup")]
+            return [Way("startup")]
         return _merge([self.extend(way, function, point) for way in self.reach(function)])
 
     # -- objects made by ports ------------------------------------------------------------------
@@ -261,21 +352,19 @@ class _Behavior:
         return [e for c in definition.walk_preorder() if c.kind == K.RETURN_STMT for e in c.get_children()]
 
     # -- results ------------------------------------------------------------------------------
-    def publishes(self) -> list[Publish]:
-        found: list[Publish] = []
+    def publishes(self, found: FileBehavior) -> None:
         for call in self.index.publishes:
             obj = object_of(call)
             sites = [s for s in self.sites(obj) if "publisher" in self.kinds[s]] if obj is not None else []
             for way in self.ways_to(call):
                 for site in sites or [None]:
-                    found.append(Publish(site, self.host.shown(call), call.location.line, way.trigger, way.source,
-                                         way.guards, way.period if way.trigger == "loop" else None))
-        return found
+                    publish = Publish(site, self.host.shown(call), call.location.line, way.trigger, way.source,
+                                      way.guards, way.period if way.trigger == "loop" else None)
+                    found.open.append((publish, way.entry)) if way.entry else found.publishes.append(publish)
 
-    def writes(self) -> list[StateWrite]:
+    def writes(self, found: FileBehavior) -> None:
         """Writes to members and globals, by the callbacks (or start-up code) that make them, and
         the initial values of every state variable met."""
-        found: list[StateWrite] = []
         set_at_startup: set[str] = set()
         for store in self.index.stores:
             var = state_var(store.target)
@@ -284,23 +373,35 @@ class _Behavior:
                 continue
             self.vars.setdefault(var.name, var)
             function = self.index.enclosing(store.at)
-            ways = self.reach(function) if function is not None else [_Way("startup")]
+            ways = self.reach(function) if function is not None else [Way("startup")]
             choices = [(v, ways) for v in _alternatives(var, store)] or [(value, ways)]
             for value, ways in self.passed_values(var, store, function) or choices:
                 if any(w.trigger == "startup" for w in ways):
                     set_at_startup.add(var.name)
-                for source in _unique(w.source if w.trigger in ("callback", "timer") else None for w in ways):
-                    found.append(StateWrite(var.name, value, source, self.host.shown(store.at),
-                                            store.at.location.line))
+                for way in ways:
+                    write = StateWrite(var.name, value, way.source if way.trigger in ("callback", "timer") else None,
+                                       self.host.shown(store.at), store.at.location.line)
+                    found.open.append((write, way.entry)) if way.entry else found.writes.append(write)
         for name, var in self.vars.items():
             value = initial_value(var)
             if value is None and name not in set_at_startup:
                 value = "?"  # no initializer, and no start-up code here sets it
             if value is not None:
-                found.append(StateWrite(name, value, None, self.host.shown(var.decl), var.decl.location.line))
-        return _unique(found)
+                found.writes.append(StateWrite(name, value, None, self.host.shown(var.decl), var.decl.location.line))
 
-    def passed_values(self, var: StateVar, store: Store, function: Function | None) -> list[tuple[str, list[_Way]]]:
+    def calls_out(self, found: FileBehavior) -> None:
+        """The ways this file runs functions of the workspace it does not define: calls, and
+        callbacks and threads it hands them to."""
+        for call in self.index.calls:
+            ref = call.referenced
+            if self.host.key(ref.canonical) not in self.index.by_id and self.host.workspace_code(ref):
+                found.calls += [(ref.get_usr(), way) for way in self.ways_to(call)]
+        for fid, usr in self.usrs.items():
+            if fid not in self.index.by_id:
+                found.calls += [(usr, Way(trigger, site)) for trigger, site in self.roots.get(fid, [])]
+                found.calls += [(usr, way) for point in self.edges.get(fid, []) for way in self.ways_to(point)]
+
+    def passed_values(self, var: StateVar, store: Store, function: Function | None) -> list[tuple[str, list[Way]]]:
         """`mode_ = mode` in a function that is no callback (`setMode(Mode::kAuto)`): the value
         each call in the file passes, with the ways to that call."""
         value = strip(store.value) if store.op == "=" and store.value is not None else None
@@ -314,6 +415,17 @@ class _Behavior:
             args = written_args(call)
             found.append((assigned_value(var, args[index]) if index < len(args) else "?", self.ways_to(call)))
         return found
+
+
+def _innermost(top: ci.Cursor, offset: int) -> ci.Cursor:
+    """The innermost cursor below `top` whose extent holds an offset."""
+    node = top
+    for _ in range(200):
+        child = next((c for c in node.get_children() if c.extent.start.offset <= offset < c.extent.end.offset), None)
+        if child is None:
+            return node
+        node = child
+    return node
 
 
 def _store_value(var: StateVar, store: Store) -> str | None:
@@ -348,18 +460,25 @@ def _constructor_argument(expr: ci.Cursor) -> ci.Cursor | None:
     return inner
 
 
-def _merge(ways: list[_Way]) -> list[_Way]:
-    """One way per (trigger, source, period), with the guards common to all that were merged."""
-    merged: dict[tuple, _Way] = {}
+def _merge(ways: list[Way]) -> list[Way]:
+    """One way per (trigger, source, period, entry), with the guards common to all that were
+    merged."""
+    merged: dict[tuple, Way] = {}
     for way in ways:
-        key = (way.trigger, way.source, way.period)
+        key = (way.trigger, way.source, way.period, way.entry)
         if key in merged:
             common = {(g.var, g.value) for g in way.guards}
             kept = tuple(g for g in merged[key].guards if (g.var, g.value) in common)
-            merged[key] = _Way(way.trigger, way.source, way.period, kept)
+            merged[key] = replace(way, guards=kept)
         elif len(merged) < _MAX_WAYS:
             merged[key] = way
     return list(merged.values())
+
+
+def _joined(first: tuple[Guard, ...], then: tuple[Guard, ...]) -> tuple[Guard, ...]:
+    """Guards met one after the other (each condition once)."""
+    known = {(g.var, g.value) for g in first}
+    return first + tuple(g for g in then if (g.var, g.value) not in known)
 
 
 def _unique(items: Iterable) -> list:

@@ -26,8 +26,8 @@ PUBLISH_CALLS = {
 }
 # calls registering a callback: on an object that is a port (message_filters, actionlib,
 # dynamic_reconfigure: its callback), or on anything else (a driver's data callback, a parameter
-# callback, a signal: a callback of no port)
-REGISTRATION = re.compile(r"callback|handler|^connect$", re.I)
+# callback, a signal, glutDisplayFunc: a callback of no port)
+REGISTRATION = re.compile(r"callback|handler|func$|^connect$", re.I)
 # calls whose callbacks run because of them (replies to requests), and thread launches
 DEFERRED = ("sendGoal", "async_send_request", "async_send_goal", "async_cancel_goal", "async_get_result")
 THREADS = ("thread", "jthread", "async", "create_thread")
@@ -41,10 +41,12 @@ class Host(Protocol):
     and the file's calls by callee."""
 
     file: str
+    source: str
     call_sites: dict[tuple, list[ci.Cursor]]
 
     def key(self, decl: ci.Cursor | None) -> tuple | None: ...
     def shown(self, cursor: ci.Cursor) -> str: ...
+    def workspace_code(self, decl: ci.Cursor) -> bool: ...
     def value(self, expr: ci.Cursor, depth: int = 0) -> Value: ...
     def seconds(self, expr: ci.Cursor, depth: int = 0) -> Fraction | None: ...
     def unknown(self, cursor: ci.Cursor, why: str = "") -> Unknown: ...
@@ -88,6 +90,7 @@ class FileIndex:
     handoffs: list[ci.Cursor] = field(default_factory=list)
     invocations: list[ci.Cursor] = field(default_factory=list)  # f() on a variable holding a lambda
     lambdas: list[ci.Cursor] = field(default_factory=list)
+    calls: list[ci.Cursor] = field(default_factory=list)  # calls of functions and methods
 
     def read(self, cursors: list[ci.Cursor]) -> None:
         for cursor in cursors:
@@ -133,6 +136,8 @@ class FileIndex:
             self.registrations.append(call)
         if call in self.port_calls and (obj := object_of(call)) is not None:
             self.store(obj, call, "port", call)
+        if call.referenced is not None and call.referenced.kind in FUNCTIONS:
+            self.calls.append(call)
         self.by_reference(call)
 
     def by_reference(self, call: ci.Cursor) -> None:
@@ -143,9 +148,7 @@ class FileIndex:
             return
         args = list(call.get_arguments())
         candidates = [(i, a) for i, a in enumerate(args) if strip(a).kind in (K.MEMBER_REF_EXPR, K.DECL_REF_EXPR)]
-        if not candidates:
-            return
-        params = [c for c in ref.get_children() if c.kind == K.PARM_DECL]
+        params = [c for c in ref.get_children() if c.kind == K.PARM_DECL] if candidates else []
         for index, arg in candidates:
             if index < len(params):
                 type_ = params[index].type
@@ -176,8 +179,12 @@ class FileIndex:
     def enclosing(self, cursor: ci.Cursor) -> Function | None:
         """The innermost function or lambda holding a cursor (other than the cursor itself)."""
         extent = cursor.extent
-        start, end = extent.start.offset, extent.end.offset
-        file = extent.start.file.name if extent.start.file is not None else ""
+        return self.enclosing_offset(extent.start.file.name if extent.start.file is not None else "",
+                                     extent.start.offset, extent.end.offset)
+
+    def enclosing_offset(self, file: str, start: int, end: int | None = None) -> Function | None:
+        """The innermost function or lambda holding a range of a file (other than that range)."""
+        end = start if end is None else end
         best: Function | None = None
         for function in self.functions:
             if function.start <= start and end <= function.end and (function.start, function.end) != (start, end) \

@@ -17,13 +17,13 @@ import clang.cindex as ci
 from archlog import names
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cache import cache_dir
-from archlog.extract.cpp_behavior import read_behavior
+from archlog.extract.cpp_behavior import FileBehavior, read_behavior
 from archlog.extract.cpp_ast import (K, SKIP, assignments, camera_info, default_constructed, is_rvalue, period,
                                      qualified, ros_type, template_arg_type, type_from_spelling, unquote,
                                      written_args)
 from archlog.extract.rclcpp_walk import RclcppWalker
 from archlog.extract.ros2_stubs import API_DIR
-from archlog.extract.summary import Port, Publish, StateWrite
+from archlog.extract.summary import Port
 from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
 
 
@@ -85,8 +85,7 @@ class FileResult:
     fallback_lines: list[int] = field(default_factory=list)
     depends: list[tuple[str, int]] = field(default_factory=list)
     missing: list[str] = field(default_factory=list)
-    publishes: list[Publish] = field(default_factory=list)
-    writes: list[StateWrite] = field(default_factory=list)
+    behavior: FileBehavior = field(default_factory=FileBehavior)
 
 
 def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool, cls: str | None = None,
@@ -97,6 +96,8 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     walker.walk(tu.cursor)
     if incomplete_ast:
         walker.token_fallback(tu)
+    walker.result.behavior = read_behavior(walker, walker.kept, walker.port_calls, walker.named_callbacks,
+                                           source.read_bytes() if incomplete_ast else None)
     return walker.result
 
 
@@ -113,6 +114,8 @@ class _Walker(RclcppWalker):
         self.spans: list[tuple[int, int]] | None = None
         self.loops: dict[tuple, ci.Cursor] = {}
         self.port_calls: dict[ci.Cursor, list[str]] = {}  # the call that made each port (cpp_behavior.py)
+        self.named_callbacks: list[tuple[str, Port]] = []  # functions named in calls read from the tokens
+        self.kept: list[ci.Cursor] = []
 
     @staticmethod
     def key(decl: ci.Cursor | None) -> tuple | None:
@@ -154,11 +157,10 @@ class _Walker(RclcppWalker):
                 self.member_inits(cursor)
         if self.ros2:
             self.prepare_ros2(cursors)
-        kept = self.relevant(cursors)
-        for cursor in kept:
+        self.kept = self.relevant(cursors)
+        for cursor in self.kept:
             if cursor.kind == K.CALL_EXPR:
                 self.call(cursor)
-        self.result.publishes, self.result.writes = read_behavior(self, kept, self.port_calls)
 
     def header_code(self, cursors: list[ci.Cursor]) -> list[ci.Cursor]:
         """The cursors of definitions in the workspace's own headers that the file's code uses
@@ -180,6 +182,10 @@ class _Walker(RclcppWalker):
             pending += [c.referenced for c in body if c.kind in (K.CALL_EXPR, K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)
                         and c.referenced is not None and c.referenced.kind in _CALLABLE]
         return found
+
+    def workspace_code(self, decl: ci.Cursor) -> bool:
+        """A declaration in the file or in a header of the workspace."""
+        return self.in_main(decl) or self.workspace_header(decl)
 
     def workspace_header(self, definition: ci.Cursor) -> bool:
         """A definition in a header of the workspace (not the file itself, not a generated header
@@ -523,6 +529,8 @@ class _Walker(RclcppWalker):
                 Unknown(f"{obj}.{method} (type not readable without the AST)", self.file, line)
             self.result.ports.append(Port(kind, name, type_, self.file, line, 0, handle))
             self.result.fallback_lines.append(line)
+            port = self.result.ports[-1]
+            self.named_callbacks += [(callback, port) for callback in _argument_names(text, match.end())]
 
 
 def _callback_type(text: str, start: int) -> str | None:
@@ -534,6 +542,12 @@ def _callback_type(text: str, start: int) -> str | None:
         return None
     signature = re.search(rf"\b{callback.group(1)}\s*\(\s*(?:const\s+)?([\w:]+)", text)
     return type_from_spelling(signature.group(1)) if signature else None
+
+
+def _argument_names(text: str, start: int) -> list[str]:
+    """The names in a call's further arguments (`&Class::cb`, `cb`, `this`...), from the text."""
+    arguments = text[start: text.find(";", start)]
+    return re.findall(r",\s*&?\s*(?:\w+::)*([A-Za-z_]\w*)\s*(?=[,)])", arguments)
 
 
 _CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)
