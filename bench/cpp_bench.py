@@ -7,8 +7,9 @@ timer, loop, callback or start-up on every way the call is reached, none unknown
 
 Uses a fresh cache folder; the one-time PCH builds (ros/ros.h, the rclcpp stand-in) count in the
 first system's setup and first translation unit. A translation unit is one source file read for
-one executable class (a component library's file is read once per component it registers). A
-publish call is counted once however many executables read it.
+one executable class (a component library's file is read once per component it registers).
+Behavior is measured per executable (its files together: a call in one file may be reached from
+another), a publish call counted once however many executables read it.
 """
 
 from __future__ import annotations
@@ -84,10 +85,14 @@ def system(root: Path) -> dict[tuple[str, int], list[Publish]]:
             times.append(time.perf_counter() - begin)
         family = "rclcpp" if is_ros2_source(source, env) else "roscpp"
         ports[family] += [p for p in summary.ports if p.kind != "timer"]
-        for publish in summary.publishes:
+        incomplete += summary.incomplete is not None
+    executables = {(exe.package, exe.name, cls): exe for (_source, cls), exe in units}
+    for (package, name, cls), exe in executables.items():  # every file read already: from the cache
+        sources = [s for s in exe.sources if s.is_file()]
+        family = "rclcpp" if is_ros2_source(sources[0], env) else "roscpp"
+        for publish in extract_cpp(sources, package, name, env, {}, DiagnosticSink(), cls).publishes:
             ways = calls[family].setdefault((publish.file, publish.line), [])
             ways += [publish] if publish not in ways else []
-        incomplete += summary.incomplete is not None
     print(f"{root.name}: {len(units)} translation units, setup {setup:.2f} s (workspace, environment, PCH)")
     if units:
         print(f"  cold median {statistics.median(cold):.3f} s (max {max(cold):.3f}, total {sum(cold):.1f} s), "

@@ -1,0 +1,130 @@
+"""What archlog may take from the machine it runs on: the workspace is untrusted (it comes from a
+pull request), so reading is confined and the environment is an explicit input.
+
+- Files: only regular files under the analysed paths and the package roots archlog resolves
+  packages from (ROS share and include folders), each under a size cap for its kind; a symlink
+  is followed only when its target stays inside those roots. Anything else raises `Refused`,
+  whose message names the path and never its content.
+- Environment: only variables given with `--env NAME=VALUE`, set in `archlog.toml` (`[env]`), or
+  on `ENV_ALLOWED` are visible; any other reads as unset.
+
+The policy in force is a context variable: `analyse()` installs one for the run with `active()`.
+Outside it (library use, unit tests) every path is inside, and the environment is the allow-list.
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
+from contextvars import ContextVar
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ENV_ALLOWED = ("ROS_DISTRO", "ROS_VERSION", "ROS_PYTHON_VERSION")
+"""Environment variables read from the machine without being given: they name the ROS release,
+which launch files branch on, and hold no secret."""
+
+MiB = 1 << 20
+SIZE_CAPS = {"source": 8 * MiB, "launch": 4 * MiB, "params": 4 * MiB, "build": 4 * MiB,
+             "description": 8 * MiB, "config": 4 * MiB, "message": 1 * MiB}
+"""Largest file archlog reads, per kind of input (bytes)."""
+
+
+class Refused(Exception):
+    """A file archlog will not read. `code` is the diagnostic code: `outside-workspace`,
+    `not-a-file` (directory, device, FIFO, socket, missing) or `too-large`."""
+
+    def __init__(self, code: str, path: Path | str, why: str) -> None:
+        super().__init__(f"{path}: {why}")
+        self.code, self.path = code, str(path)
+
+
+@dataclass(frozen=True)
+class Sandbox:
+    """The roots reading is confined to (None: anywhere), the environment archlog may see, and
+    the size caps per kind."""
+
+    roots: tuple[Path, ...] | None = None
+    env: Mapping[str, str] = field(default_factory=dict)
+    caps: Mapping[str, int] = field(default_factory=lambda: dict(SIZE_CAPS))
+
+    def inside(self, path: Path | str) -> bool:
+        """Whether `path`, with every symlink resolved, lies under a root."""
+        if self.roots is None:
+            return True
+        real = Path(os.path.realpath(path))
+        return any(real == root or real.is_relative_to(root) for root in self.roots)
+
+    def check(self, path: Path | str, kind: str = "source") -> Path:
+        """`path` if archlog may read it as `kind`; raises `Refused` otherwise."""
+        if not self.inside(path):
+            raise Refused("outside-workspace", path, "outside the analysed paths; not read")
+        try:
+            info = os.stat(path)
+        except OSError as exc:
+            raise Refused("not-a-file", path, exc.strerror or "cannot be read") from None
+        if not stat.S_ISREG(info.st_mode):
+            raise Refused("not-a-file", path, "not a regular file; not read")
+        cap = self.caps.get(kind, SIZE_CAPS["source"])
+        if info.st_size > cap:
+            raise Refused("too-large", path, f"{info.st_size} bytes, over the {cap}-byte cap for {kind} files")
+        return Path(path)
+
+    def read_bytes(self, path: Path | str, kind: str = "source") -> bytes:
+        checked = self.check(path, kind)
+        cap = self.caps.get(kind, SIZE_CAPS["source"])
+        try:
+            with open(checked, "rb") as handle:
+                data = handle.read(cap + 1)
+        except OSError as exc:
+            raise Refused("not-a-file", path, exc.strerror or "cannot be read") from None
+        if len(data) > cap:  # grew since it was checked
+            raise Refused("too-large", path, f"over the {cap}-byte cap for {kind} files")
+        return data
+
+    def read_text(self, path: Path | str, kind: str = "source") -> str:
+        """The file's text; bytes that are not UTF-8 become U+FFFD (never an exception)."""
+        return self.read_bytes(path, kind).decode("utf-8", errors="replace")
+
+    def getenv(self, name: str) -> str | None:
+        """An environment variable archlog may see, or None (unset, or not given)."""
+        return self.env.get(name)
+
+
+def machine_env(given: Mapping[str, str] | None = None) -> dict[str, str]:
+    """The environment a run sees: the allow-listed variables of this process, then `given`."""
+    env = {name: os.environ[name] for name in ENV_ALLOWED if name in os.environ}
+    env.update(given or {})
+    return env
+
+
+_current: ContextVar[Sandbox | None] = ContextVar("archlog_sandbox", default=None)
+
+
+def current() -> Sandbox:
+    """The policy in force (outside `active()`: no root confinement, allow-listed environment)."""
+    return _current.get() or Sandbox(None, machine_env())
+
+
+@contextmanager
+def active(sandbox: Sandbox) -> Iterator[Sandbox]:
+    token = _current.set(sandbox)
+    try:
+        yield sandbox
+    finally:
+        _current.reset(token)
+
+
+def read_text(path: Path | str, kind: str = "source") -> str:
+    """Read a file under the policy in force (raises `Refused`)."""
+    return current().read_text(path, kind)
+
+
+def read_bytes(path: Path | str, kind: str = "source") -> bytes:
+    return current().read_bytes(path, kind)
+
+
+def getenv(name: str) -> str | None:
+    return current().getenv(name)
