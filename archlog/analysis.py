@@ -10,7 +10,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from archlog import names
+from archlog import budget, names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.controllers import controller_nodes
 from archlog.extract.cpp import CppEnvironment, extract_cpp
@@ -20,7 +20,7 @@ from archlog.extract.msg_headers import generated_headers
 from archlog.extract.models import BUILTIN_DIR, load_models
 from archlog.extract.python import extract_python
 from archlog.extract.summary import NodeSummary
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace import Workspace, share_dirs
 from archlog.facts.compose import compose, rosrun_config
 from archlog.facts.instances import complete_instances
 from archlog.facts.store import FactStore
@@ -43,8 +43,27 @@ Progress = Callable[[int, int], None]
 
 
 def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models: list[Path],
-            near_threshold: float = 0.5, progress: Progress | None = None) -> Analysis:
-    """Recover the architecture of one system configuration into facts."""
+            near_threshold: float = 0.5, progress: Progress | None = None,
+            env: dict[str, str] | None = None, limits: dict[str, int] | None = None) -> Analysis:
+    """Recover the architecture of one system configuration into facts, reading only inside the
+    analysed paths and package roots, seeing only the environment given in `env` (and the
+    allow-list), and expanding within `limits` (see archlog.sandbox and archlog.budget)."""
+    policy = sandbox.Sandbox(reading_roots(paths, launches, models), sandbox.machine_env(env))
+    with sandbox.active(policy), budget.active(limits or {}):
+        return _analyse(paths, launches, args, models, near_threshold, progress)
+
+
+def reading_roots(paths: list[Path], launches: list[str], models: list[Path]) -> tuple[Path, ...]:
+    """Where a run may read: the analysed paths, files named on the command line, installed
+    package share folders and the system include folders (resolved, symlinks followed)."""
+    given = [*paths, *models, *(Path(spec) for spec in launches if Path(spec).is_file())]
+    system = [*share_dirs(), Path("/usr/include"), Path("/usr/local/include"), Path("/usr/lib/llvm-14"),
+              *Path("/opt/ros").glob("*/include")]
+    return tuple(dict.fromkeys(Path(os.path.realpath(p)) for p in [*given, *system]))
+
+
+def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], models: list[Path],
+             near_threshold: float, progress: Progress | None) -> Analysis:
     timings: dict[str, float] = {}
     clock = time.perf_counter()
     for path in paths:
@@ -120,7 +139,8 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnost
                     [d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
                     generated_headers(workspace, diagnostics), workspace.roots)
                 shown = {s: workspace.display(s) for s in exe.sources}
-                cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, env, exe.cls))
+                cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, env, exe.cls,
+                                        sandbox.current(), dict(budget.current().limits)))
     done = len(summaries)
     for job, result in _run_isolated(cpp_jobs, lambda n: progress(done + n, done + len(cpp_jobs))):
         if result is None:
@@ -143,10 +163,13 @@ class _CppJob:
     executable: str
     env: CppEnvironment
     cls: str | None = None
+    policy: sandbox.Sandbox = field(default_factory=sandbox.current)
+    limits: dict[str, int] = field(default_factory=dict)
 
     def __call__(self) -> tuple[NodeSummary, list]:
         sink = DiagnosticSink()
-        summary = extract_cpp(self.sources, self.package, self.executable, self.env, self.shown, sink, self.cls)
+        with sandbox.active(self.policy), budget.active(self.limits):
+            summary = extract_cpp(self.sources, self.package, self.executable, self.env, self.shown, sink, self.cls)
         return summary, sink.items
 
 
