@@ -14,6 +14,7 @@ from archlog import budget, names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.controllers import controller_nodes
 from archlog.extract.cpp import CppEnvironment, extract_cpp
+from archlog.extract.files import files_under
 from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode
 from archlog.extract.messages import message_files
 from archlog.extract.msg_headers import generated_headers
@@ -55,9 +56,10 @@ def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models
 
 def reading_roots(paths: list[Path], launches: list[str], models: list[Path]) -> tuple[Path, ...]:
     """Where a run may read: the analysed paths, files named on the command line, installed
-    package share folders and the system include folders (resolved, symlinks followed)."""
+    package share folders, the system include folders and archlog's own node models (resolved,
+    symlinks followed)."""
     given = [*paths, *models, *(Path(spec) for spec in launches if Path(spec).is_file())]
-    system = [*share_dirs(), Path("/usr/include"), Path("/usr/local/include"), Path("/usr/lib/llvm-14"),
+    system = [*share_dirs(), BUILTIN_DIR, Path("/usr/include"), Path("/usr/local/include"), Path("/usr/lib/llvm-14"),
               *Path("/opt/ros").glob("*/include")]
     return tuple(dict.fromkeys(Path(os.path.realpath(p)) for p in [*given, *system]))
 
@@ -111,7 +113,7 @@ def resolve_launch(spec: str, workspace: Workspace) -> Path:
     if base is not None and rest:
         if (base / rest).is_file():
             return base / rest
-        matches = sorted(base.rglob(Path(rest).name))
+        matches = [p for p in files_under(base) if p.name == Path(rest).name]
         if matches:
             return matches[0]
     raise ConfigError(f"launch file not found: {spec} (give a path, or PKG/path inside the package)")

@@ -23,6 +23,7 @@ import tomllib
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from archlog import sandbox
 from archlog.diagnostics import SEVERITIES
 from archlog.rules.ruleset import Rule
 
@@ -100,6 +101,8 @@ def load_config(path: Path | None, profile: str | None) -> Config:
         if level not in SEVERITIES:
             raise ConfigError(f"{path}: severity of {rule_id} must be one of {', '.join(SEVERITIES)}")
     for rule_path in config.rule_paths:
+        if not sandbox.Sandbox((base.resolve(),)).inside(rule_path):
+            raise ConfigError(f"{path}: rule path {rule_path} is outside the configuration's folder {base}")
         if not rule_path.exists():
             raise ConfigError(f"{path}: rule path {rule_path} does not exist")
     return config
@@ -107,6 +110,6 @@ def load_config(path: Path | None, profile: str | None) -> Config:
 
 def _read(path: Path) -> dict:
     try:
-        return tomllib.loads(path.read_text(encoding="utf-8"))
-    except (OSError, tomllib.TOMLDecodeError) as exc:
+        return tomllib.loads(sandbox.read_text(path, "config"))
+    except (sandbox.Refused, tomllib.TOMLDecodeError, RecursionError) as exc:
         raise ConfigError(f"{path}: {exc}") from None

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import yaml
 
+from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.command_line import split_options
 from archlog.extract.launch import LaunchConfig, LaunchNode
@@ -62,8 +63,12 @@ def _recorded(node: LaunchNode, words: list[str]) -> list[Port]:
 
 def _rviz(node: LaunchNode, config: Path, diagnostics: DiagnosticSink) -> list[Port]:
     try:
-        data = yaml.load(config.read_text(encoding="utf-8"), Loader=_LineLoader)
-    except (OSError, yaml.YAMLError) as exc:
+        data = yaml.load(sandbox.read_text(config, "config"), Loader=_LineLoader)
+    except sandbox.Refused as exc:
+        diagnostics.add(node.elem.file, node.elem.line, exc.code,
+                        f"rviz configuration not read ({exc}); its displays' topics are unknown", "warning")
+        return []
+    except yaml.YAMLError as exc:
         diagnostics.add(node.elem.file, node.elem.line, "rviz-config",
                         f"rviz configuration {config} cannot be read ({exc}); its displays' topics are unknown",
                         "warning")

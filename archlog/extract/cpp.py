@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import glob
 import json
+import os
 import re
 import shlex
 import shutil
@@ -26,10 +27,12 @@ from pathlib import Path
 
 import clang.cindex as ci
 
+from archlog import sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cache import ResultCache, cache_dir, key
 from archlog.extract.cpp_behavior import FileBehavior, link_files
 from archlog.extract.cpp_walk import FileResult, walk
+from archlog.extract.files import files_under, unreadable
 from archlog.extract.ros2_stubs import API_DIR, DUAL, INTERFACE_INCLUDE, Interfaces, is_ros2, library_for, \
     library_interfaces, spelled_types, stand_in_dir
 from archlog.extract.stub_headers import stub_dir
@@ -69,7 +72,7 @@ class CppEnvironment:
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
             [d for d in ("/usr/include/eigen3",) if Path(d).is_dir()]
-        includes = [str(p) for p in self.workspace_includes if p.is_dir()]
+        includes = [str(p) for p in self.workspace_includes if p.is_dir() and sandbox.current().inside(p)]
         includes += [str(self.generated)] if self.generated else []
         self.args = ["-x", "c++", "-std=c++17", "-Wno-everything", "-ferror-limit=0",
                      *(f"-I{d}" for d in includes + system)]
@@ -88,7 +91,7 @@ class CppEnvironment:
 
     def file_args(self, source: Path | None) -> list[str]:
         """Flags a compile database gives for this file (include paths, defines, standard)."""
-        return self.per_file.get(str(source.resolve()), []) if source is not None else []
+        return self.per_file.get(os.path.realpath(source), []) if source is not None else []
 
     def folders(self, source: Path | None = None) -> list[Path]:
         """The include folders a file is parsed with (its compile database's first)."""
@@ -112,11 +115,20 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
     behaviors: list[FileBehavior] = []
     for source in sources:
         name = shown.get(source, str(source))
-        if not source.is_file():
-            diagnostics.add(name, 1, "cpp-missing", "source file listed in CMakeLists.txt does not exist", "error")
-            summary.incomplete = summary.incomplete or f"{name}: missing"
+        refused = unreadable(source, "source")
+        if refused is not None:
+            missing = refused.code == "missing"
+            diagnostics.add(name, 1, "cpp-missing" if missing else refused.code,
+                            "source file listed in CMakeLists.txt does not exist" if missing else f"not read: {refused}",
+                            "error")
+            summary.incomplete = summary.incomplete or f"{name}: {'missing' if missing else 'not read'}"
             continue
-        cache_key = key(env.fingerprint, name, cls or "", " ".join(env.file_args(source)), source.read_bytes())
+        try:
+            text = sandbox.read_bytes(source, "source")
+        except sandbox.Refused as exc:  # changed since it was checked
+            diagnostics.add(name, 1, exc.code, f"not read: {exc}", "error")
+            continue
+        cache_key = key(env.fingerprint, name, cls or "", " ".join(env.file_args(source)), text)
         result = cache.get(cache_key)
         if not isinstance(result, FileResult) or not _still_valid(result, env):
             index = index or ci.Index.create()
@@ -142,10 +154,7 @@ def _settle_behavior(summary: NodeSummary) -> None:
 def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
     try:
         scan = _scan(source, env)
-        if scan.ros2:
-            tu, stand_ins = _parse_ros2(index, source, env, scan)
-        else:
-            tu, stand_ins = _parse_ros1(index, source, env, scan), []
+        tu, stand_ins = _parse_confined(index, source, env, scan)
     except ci.TranslationUnitLoadError as exc:
         result = FileResult()
         result.diagnostics.append(Diagnostic(shown, 1, "cpp-parse", f"libclang could not parse this file: {exc}",
@@ -159,6 +168,7 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2,
                   workspace=tuple(str(root.resolve()) for root in env.roots))
     result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
+    result.diagnostics += _blocked_includes(tu, source, shown, scan)
     result.missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
     result.missing += [n for n in scan.missing + scan.dual if n not in result.missing]
     if errors:
@@ -186,16 +196,51 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     return result
 
 
+def _parse_confined(index: ci.Index, source: Path, env: CppEnvironment,
+                    scan: _Scan) -> tuple[ci.TranslationUnit, list[str]]:
+    """The unit parsed with every file outside the reading roots (or not a regular file) it
+    includes seen empty by clang: those the scan found beforehand, then any the unit still
+    included (through a macro, say), parsed again without them."""
+    for _attempt in range(3):
+        tu, stand_ins = _parse_ros2(index, source, env, scan) if scan.ros2 else \
+            (_parse_ros1(index, source, env, scan), [])
+        more = [name for inc in tu.get_includes() if not scan.blocks(name := inc.include.name)
+                and not _own(name) and unreadable(name, "source") is not None]
+        if not more:
+            return tu, stand_ins
+        scan.blocked += list(dict.fromkeys(more))
+    raise ci.TranslationUnitLoadError(f"it includes files outside the analysed paths: {', '.join(more)}")
+
+
+def _own(path: Path | str) -> bool:
+    """Headers archlog supplies (stand-ins, generated message headers, precompiled headers) and
+    clang's builtin ones."""
+    return str(path).startswith((str(cache_dir()), str(API_DIR), resource_dir() or str(API_DIR)))
+
+
+def _blocked_includes(tu: ci.TranslationUnit, source: Path, shown: str, scan: _Scan) -> list[Diagnostic]:
+    """A diagnostic for each file the unit includes that clang was given empty, at the line of
+    the source that includes it (directly or through its headers)."""
+    found = []
+    for inc in tu.get_includes():
+        name = inc.include.name
+        if scan.blocks(name) and (refused := unreadable(name, "source")) is not None:
+            line = inc.location.line if inc.source.name == str(source) else 1
+            found.append(Diagnostic(shown, line, refused.code, f"#include not read: {refused}", "warning"))
+    return list(dict.fromkeys(found))
+
+
 def _parse_ros1(index: ci.Index, source: Path, env: CppEnvironment, scan: _Scan) -> ci.TranslationUnit:
     """ROS 1 code: with ros/ros.h precompiled and stand-ins for message headers not installed."""
     stubs = stub_dir(scan.missing)
     extra = [f"-I{stubs}"] if stubs else []
     own = env.file_args(source)
-    tu = _load(index, source, env.parse_args(source) + extra, env.args + own + extra)
+    tu = _load(index, source, env.parse_args(source) + extra, env.args + own + extra, scan.unsaved)
     missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
     more = stub_dir(missing) if missing else None
     if more is not None and not extra:  # found only while parsing (included by a header): again
-        tu = _load(index, source, env.parse_args(source) + [f"-I{more}"], env.args + own + [f"-I{more}"])
+        tu = _load(index, source, env.parse_args(source) + [f"-I{more}"], env.args + own + [f"-I{more}"],
+                   scan.unsaved)
     return tu
 
 
@@ -218,7 +263,7 @@ def _parse_ros2(index: ci.Index, source: Path, env: CppEnvironment,
         pch = _rclcpp_pch() if stand_in_rclcpp else None
         tu = index.parse(str(source), args=[f"-I{f}" for f in used] + env.args + env.file_args(source)
                          + (["-include-pch", str(pch), "-Xclang", "-fno-validate-pch"] if pch else []),
-                         options=_KEEP_GOING)
+                         unsaved_files=scan.unsaved, options=_KEEP_GOING)
         more = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))
                 and (library_for(m.group(1)) or INTERFACE_INCLUDE.match(m.group(1))) and m.group(1) not in wanted]
         if not more:  # else: included by an installed header, found only while parsing
@@ -241,6 +286,15 @@ class _Scan:
     dual: list[str]
     spellings: set[str]
     ros2: bool
+    blocked: list[str] = field(default_factory=list)  # files clang must not read (given empty)
+
+    @property
+    def unsaved(self) -> list[tuple[str, str]]:
+        return [(path, "") for path in self.blocked]
+
+    def blocks(self, path: str) -> bool:
+        """Whether clang was given `path` empty (under any name of the file)."""
+        return os.path.realpath(path) in {os.path.realpath(b) for b in self.blocked}
 
 
 def _scan(source: Path, env: CppEnvironment) -> _Scan:
@@ -248,12 +302,22 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
     queue, seen, texts = [source], {source}, []
     missing: list[str] = []
     dual: list[str] = []
+    args = env.file_args(source)
+    blocked = _refused_includes([word for flag, word in zip(args, args[1:]) if flag == "-include"])
     while queue and len(seen) < 400:
         path = queue.pop(0)
-        text = path.read_text(errors="replace")
+        try:
+            text = path.read_text(errors="replace") if _own(path) else sandbox.read_text(path, "source")
+        except sandbox.Refused:  # a header too large: clang sees it empty
+            blocked.append(str(path))
+            continue
         texts.append(text)
         for name in _INCLUDE.findall(text):
+            refused = _refused_includes([str(folder / name) for folder in [path.parent] + folders])
+            blocked += refused
             found = env.find(name, [path.parent] + folders)
+            if refused and (found is None or str(found) in refused):
+                continue
             if found is None:
                 ros1 = name.split("/", 1)[0] in DUAL and any((f / name).is_file() for f in folders if _ros1_system(f))
                 (dual if ros1 else missing).append(name)
@@ -261,7 +325,13 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
                 seen.add(found)
                 queue.append(found)
     return _Scan(list(dict.fromkeys(missing)), list(dict.fromkeys(dual)), spelled_types(texts),
-                 any(is_ros2(t) for t in texts))
+                 any(is_ros2(t) for t in texts), list(dict.fromkeys(blocked)))
+
+
+def _refused_includes(candidates: list[str]) -> list[str]:
+    """The candidate paths of an include (and -include'd files) that exist but that the sandbox
+    will not read: outside the reading roots, symlinked out, devices, FIFOs, folders."""
+    return [p for p in candidates if os.path.lexists(p) and not _own(p) and unreadable(p, "source") is not None]
 
 
 _STAND_IN_NAME = re.compile(r"\b(?:rclcpp\w*|rmw|rcl|tf2_ros|tf2|image_transport|message_filters|diagnostic_updater|"
@@ -286,7 +356,7 @@ def _cascade(diag: ci.Diagnostic, gaps: list[ci.Diagnostic], source: Path) -> bo
     match = _UNDECLARED.search(diag.spelling)
     if match is None:
         return False
-    lines = source.read_text(errors="replace").splitlines()
+    lines = sandbox.read_text(source, "source").splitlines()
     return any(0 < g.location.line <= len(lines) and re.search(rf"\b{match.group(1)}\b", lines[g.location.line - 1])
                for g in gaps)
 
@@ -311,8 +381,8 @@ def _compile_commands(roots: list[Path]) -> dict[str, list[str]]:
     for root in roots:
         for database in (root / "build" / "compile_commands.json", root / "compile_commands.json"):
             try:
-                entries = json.loads(database.read_text())
-            except (OSError, ValueError):
+                entries = json.loads(sandbox.read_text(database, "build"))
+            except (sandbox.Refused, ValueError, RecursionError):
                 continue
             for entry in entries if isinstance(entries, list) else []:
                 words = entry.get("arguments") or shlex.split(entry.get("command", ""))
@@ -325,9 +395,30 @@ def _compile_commands(roots: list[Path]) -> dict[str, list[str]]:
                     elif word.startswith(_KEPT_FLAGS):
                         kept.append(word)
                         take_next = word in ("-I", "-D", "-U", "-isystem", "-include")
-                source = (directory / entry.get("file", "")).resolve()
-                flags[str(source)] = kept
+                source = Path(os.path.realpath(directory / entry.get("file", "")))
+                flags[str(source)] = _confined(kept, directory)
     return flags
+
+
+def _confined(flags: list[str], directory: Path) -> list[str]:
+    """Compile flags without those naming a folder or file outside the reading roots."""
+    kept: list[str] = []
+    pairs = zip(flags, [*flags[1:], ""])
+    skip = False
+    for flag, following in pairs:
+        if skip:
+            skip = False
+            continue
+        option = next((o for o in ("-isystem", "-include", "-I") if flag.startswith(o)), None)
+        if option is None:
+            kept.append(flag)
+            continue
+        joined = flag[len(option):]
+        path, words = (joined, [flag]) if joined else (following, [flag, following])
+        skip = not joined
+        if sandbox.current().inside(directory / path):
+            kept += words
+    return kept
 
 
 @lru_cache(maxsize=1)
@@ -342,11 +433,12 @@ def _nested_include_roots() -> list[str]:
 _INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 
 
-def _load(index: ci.Index, source: Path, args: list[str], without_pch: list[str]) -> ci.TranslationUnit:
+def _load(index: ci.Index, source: Path, args: list[str], without_pch: list[str],
+          unsaved: list[tuple[str, str]]) -> ci.TranslationUnit:
     try:
-        return index.parse(str(source), args=args, options=_KEEP_GOING)
+        return index.parse(str(source), args=args, unsaved_files=unsaved, options=_KEEP_GOING)
     except ci.TranslationUnitLoadError:
-        return index.parse(str(source), args=without_pch, options=_KEEP_GOING)
+        return index.parse(str(source), args=without_pch, unsaved_files=unsaved, options=_KEEP_GOING)
 
 
 def _mtime(path: str) -> int:
@@ -379,11 +471,10 @@ def _tree_stamp(folders: list[Path]) -> list[str]:
     """(path, size, mtime) of every header under the workspace's include folders."""
     stamps = []
     for folder in folders:
-        if folder.is_dir():
-            for path in sorted(folder.rglob("*")):
-                if path.suffix in _HEADER_SUFFIXES and path.is_file():
-                    stat = path.stat()
-                    stamps.append(f"{path}:{stat.st_size}:{stat.st_mtime_ns}")
+        for path in files_under(folder):
+            if path.suffix in _HEADER_SUFFIXES and path.is_file():
+                stat = path.stat()
+                stamps.append(f"{path}:{stat.st_size}:{stat.st_mtime_ns}")
     return stamps
 
 

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import clang.cindex as ci
 
-from archlog import names
+from archlog import names, sandbox
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cache import cache_dir
 from archlog.extract.cpp_behavior import FileBehavior, read_behavior
@@ -97,7 +97,7 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     if incomplete_ast:
         walker.token_fallback(tu)
     walker.result.behavior = read_behavior(walker, walker.kept, walker.port_calls, walker.named_callbacks,
-                                           source.read_bytes() if incomplete_ast else None)
+                                           sandbox.read_bytes(source, "source") if incomplete_ast else None)
     return walker.result
 
 
@@ -505,7 +505,7 @@ class _Walker(RclcppWalker):
     def token_fallback(self, tu: ci.TranslationUnit) -> None:
         """Read NodeHandle calls from the text of lines where the AST produced no port."""
         covered = {p.line for p in self.result.ports if p.file == self.file}
-        text = Path(self.source).read_text(errors="replace")
+        text = sandbox.read_text(self.source, "source")
         if self.ros2:
             self.ros2_fallback(text, covered, tu)
             return

@@ -10,6 +10,7 @@ would stop with an error, archlog reports a diagnostic at the element and goes o
 from __future__ import annotations
 
 import math
+import os
 import re
 import shlex
 from dataclasses import dataclass, field, replace
@@ -19,10 +20,12 @@ from typing import TYPE_CHECKING
 import yaml
 from lxml import etree
 
-from archlog import names
+from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.substitution import (SubstContext, SubstitutionError, UnknownArg, Unresolved, arithmetic,
-                                          auto_value, substitute)
+from archlog.extract.substitution import (RefusedRead, SubstContext, SubstitutionError, UnknownArg, Unresolved,
+                                          arithmetic, auto_value, read_file, substitute,
+                                          unresolved_code)
+from archlog.extract.files import parse_xml, unreadable
 from archlog.extract.workspace import Workspace
 from archlog.values import Unknown
 
@@ -212,12 +215,12 @@ class LaunchInterpreter:
         if path.suffix in (".py", ".yaml", ".yml"):
             return self._ros2_file(path, scope)
         try:
-            root = etree.parse(str(path), etree.XMLParser(remove_comments=True)).getroot()
+            root = parse_xml(path, "launch", remove_comments=True)
         except etree.XMLSyntaxError as exc:
             self.diagnostics.add(shown, exc.lineno or 1, "launch-xml", f"malformed launch XML: {exc.msg}", "error")
             return False
-        except OSError as exc:
-            self.diagnostics.add(shown, 1, "launch-missing", f"cannot read launch file: {exc}", "error")
+        except sandbox.Refused as exc:
+            self.diagnostics.add(shown, 1, exc.code, f"cannot read launch file: {exc}", "error")
             return False
         if root.tag != "launch":
             self._diag(path, root, "launch-xml", f"root element is <{root.tag}>, not <launch>")
@@ -257,7 +260,9 @@ class LaunchInterpreter:
 
     def _report(self, path: Path, el: etree._Element, exc: SubstitutionError | LaunchError) -> None:
         """The diagnostic for an element roslaunch would reject (or that depends on this machine)."""
-        if isinstance(exc, Unresolved):
+        if isinstance(exc, RefusedRead):
+            self._diag(path, el, exc.code, f"<{el.tag}> skipped: {exc}", "warning")
+        elif isinstance(exc, Unresolved):
             self._diag(path, el, "launch-unresolved",
                        f"<{el.tag}> skipped: {exc}; pass the value with --arg or set it in the environment",
                        "warning")
@@ -393,8 +398,10 @@ class LaunchInterpreter:
                        f"<include>: arg '{name}' is passed without a value or default")
         if missing:
             return
-        if not target.is_file():
-            self._diag(path, el, "launch-include", f"included file not found: {target}")
+        if (refused := unreadable(target, "launch")) is not None:
+            missing = refused.code == "missing"
+            self._diag(path, el, "launch-include" if missing else refused.code,
+                       f"included file not found: {target}" if missing else f"<include> skipped: {refused}")
             return
         # roslaunch hands the ~param list on to the included file, unless it is still empty
         private = scope.private if scope.private else []
@@ -421,7 +428,8 @@ class LaunchInterpreter:
             value = self._param_value(scope, el, sources[0], kind, elem)
         except Unresolved as exc:
             value = Unknown(f"{el.get(sources[0])} ({exc})", elem.file, elem.line)
-            self._diag(path, el, "launch-unresolved", f"<param> value not known statically: {exc}", "warning")
+            self._diag(path, el, unresolved_code(exc, "launch-unresolved"), f"<param> value not known statically: {exc}",
+                       "warning")
         if local is not None:
             local.append((name, value, elem))
         elif name.startswith("~"):
@@ -438,7 +446,7 @@ class LaunchInterpreter:
         if source == "value":
             return convert(text.strip(), kind, self._rosparam_yaml)
         if source == "textfile":
-            return convert(_read(Path(text)), kind, self._rosparam_yaml)
+            return convert(read_file(text, "description"), kind, self._rosparam_yaml)
         return Unknown(f"{source}: {text}", elem.file, elem.line)
 
     def _put(self, key: str, value: object, elem: Element) -> None:
@@ -469,13 +477,13 @@ class LaunchInterpreter:
         base = node_ns if node_ns is not None else scope.ns
         full = _ns_join(base, joined) if joined else base
         elem = self._element(path, el)
-        if file is not None and command == "load" and not Path(file).is_file():
+        if file is not None and command == "load" and sandbox.current().inside(file) and not os.path.lexists(file):
             raise Unresolved(f"file does not exist [{file}]")
         if file is not None and command == "delete":
             raise LaunchError("'file' attribute is invalid with 'delete' command")
         if command != "load":
             return
-        text = _read(Path(file)) if file is not None else "".join(
+        text = read_file(file, "params") if file is not None else "".join(
             [el.text or ""] + [child.tail or "" for child in el])
         if subst:
             text = substitute(text, scope.subst)
@@ -710,9 +718,3 @@ def _ns_join(ns: str, name: str) -> str:
         return name
     return ns + name if ns.endswith("/") else f"{ns}/{name}"
 
-
-def _read(path: Path) -> str:
-    try:
-        return path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise Unresolved(f"cannot read {path}: {exc.strerror}") from None

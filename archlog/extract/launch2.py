@@ -25,7 +25,9 @@ from archlog.extract.launch import MAX_INCLUDE_DEPTH, Element, LaunchError, Laun
 from archlog.extract.launch2_subst import (Context, Parts, Rewritten, describe, parse, perform, text, truth,
                                           typed_bool, unknown_reason, yaml_value)
 from archlog.extract.ros2_params import load_param_file
-from archlog.extract.substitution import SubstitutionError, UnknownArg, Unresolved
+from archlog.extract.files import unreadable
+from archlog.extract.substitution import (RefusedRead, SubstitutionError, UnknownArg, Unresolved, read_file,
+                                          unresolved_code)
 from archlog.values import Unknown
 
 PYTHON, XML, YAML = "python", "xml", "yaml"
@@ -283,7 +285,7 @@ class Ros2Launch:
         try:
             execute(action, here, state is not True)
         except Unresolved as exc:
-            self.diag(action.where, "launch-unknown", f"{_label(action)} skipped: {exc}")
+            self.diag(action.where, unresolved_code(exc, "launch-unknown"), f"{_label(action)} skipped: {exc}")
         except (SubstitutionError, LaunchError) as exc:
             self.diag(action.where, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",
                       f"{_label(action)}: {exc}", "error")
@@ -404,8 +406,10 @@ class Ros2Launch:
         target = target if target.is_absolute() else ctx.file.parent / target
         for key, value in action.args:
             ctx.configs[perform(key, ctx)] = _value_or_unknown(value, ctx)
-        if not target.is_file():
-            self.diag(action.where, "launch-include", f"included file not found: {target}", "error")
+        if (refused := unreadable(target, "launch")) is not None:
+            missing = refused.code == "missing"
+            self.diag(action.where, "launch-include" if missing else refused.code,
+                      f"included file not found: {target}" if missing else f"include skipped: {refused}", "error")
             return
         description = self.describe(target, action.dialect)
         if description is None:
@@ -464,8 +468,8 @@ class Ros2Launch:
         try:
             base = perform(name, ctx)
         except Unresolved as exc:
-            self.diag(where, "launch-unknown", f"node name not known statically ({exc}); the name its source "
-                      "gives is used")
+            self.diag(where, unresolved_code(exc, "launch-unknown"), f"node name not known statically ({exc}); "
+                      "the name its source gives is used")
             return ""
         if not _NODE_NAME.fullmatch(base):
             raise LaunchError(f"invalid node name {base!r}")
@@ -522,7 +526,7 @@ class Ros2Launch:
             try:
                 src, dst = perform(remap.src, ctx), perform(remap.dst, ctx)
             except Unresolved as exc:
-                self.diag(replace(where, line=remap.line), "launch-unknown", f"remap skipped: {exc}")
+                self.diag(replace(where, line=remap.line), unresolved_code(exc, "launch-unknown"), f"remap skipped: {exc}")
                 continue
             found.append((src, dst, self.element(where.file, remap.line)))
         return found
@@ -553,7 +557,7 @@ class Ros2Launch:
                 try:
                     name = perform(item.name, ctx)
                 except Unresolved as exc:
-                    self.diag(replace(where, line=item.line), "launch-unknown", f"parameter skipped: {exc}")
+                    self.diag(replace(where, line=item.line), unresolved_code(exc, "launch-unknown"), f"parameter skipped: {exc}")
                     continue
                 found.append(("", name, self._value(item.value, ctx, elem), elem))
         return found
@@ -567,6 +571,9 @@ class Ros2Launch:
             if isinstance(value, list) and any(isinstance(v, ParamText) for v in value):
                 return [self._value(v, ctx, elem) for v in value]
             return value
+        except RefusedRead as exc:
+            self.diagnostics.add(elem.file, elem.line, exc.code, f"parameter value not read: {exc}")
+            return Unknown(str(exc), elem.file, elem.line)
         except Unresolved as exc:
             return Unknown(str(exc), elem.file, elem.line)
         except SubstitutionError as exc:
@@ -579,11 +586,13 @@ class Ros2Launch:
         try:
             path = Path(perform(rewritten.source if rewritten else source.path, ctx))
         except Unresolved as exc:
-            self.diag(replace(where, line=source.line), "launch-unknown", f"parameter file not known statically "
-                      f"({exc}); its parameters are not part of this configuration")
+            self.diag(replace(where, line=source.line), unresolved_code(exc, "launch-unknown"), f"parameter file not "
+                      f"known statically ({exc}); its parameters are not part of this configuration")
             return []
-        if not path.is_file():
-            self.diag(replace(where, line=source.line), "param-file", f"parameter file not found: {path}")
+        if (refused := unreadable(path, "params")) is not None:
+            missing = refused.code == "missing"
+            self.diag(replace(where, line=source.line), "param-file" if missing else refused.code,
+                      f"parameter file not found: {path}" if missing else f"parameter file skipped: {refused}")
             return []
         substitute = source.allow_substs if isinstance(source.allow_substs, bool) else \
             typed_bool(perform(source.allow_substs, ctx))
@@ -601,9 +610,9 @@ class Ros2Launch:
         try:
             key = path.resolve()
             if key not in self._templates:
-                self._templates[key] = parse(path.read_text(encoding="utf-8"))
+                self._templates[key] = parse(read_file(path, "params"))
             return perform(self._templates[key], ctx)
-        except (OSError, UnicodeDecodeError, SubstitutionError) as exc:
+        except SubstitutionError as exc:
             self.diag(where, "param-file", f"substitutions in {path.name} not performed: {exc}")
             return None
 

@@ -20,8 +20,8 @@ from archlog.extract.launch2 import (PYTHON, XML, YAML, Action, Component, Condi
                                      Include, LoadComponents, Node, Opaque, ParamDict, ParamFile, ParamItem,
                                      ParamSource, ParamText, Process, PushNamespace, Remap, SetConfiguration,
                                      SetEnvironment, SetParameter, SetParametersFile, SetRemap, Where)
-from archlog.extract.launch2_subst import Call, Context, Parts, Rewritten, Text, opaque, perform, read_file, text
-from archlog.extract.substitution import SubstitutionError, UnknownArg, Unresolved
+from archlog.extract.launch2_subst import Call, Context, Parts, Rewritten, Text, opaque, perform, text
+from archlog.extract.substitution import RefusedRead, SubstitutionError, UnknownArg, Unresolved, read_file
 
 MAX_RANGE = 10_000
 
@@ -130,6 +130,9 @@ class Interpreter(Protocol):
     def find(self, pkg: str) -> Path | None: ...
 
     def site(self, line: int) -> int: ...
+
+    def refused(self, exc: RefusedRead, line: int) -> None:
+        """Report a file the sandbox will not read, named at `line`."""
 
     def call(self, function: object, args: list[object], kwargs: dict[str, object], line: int) -> object: ...
 
@@ -666,22 +669,24 @@ def _chain(c: CallSite) -> object:
     return items
 
 
-def read_text(value: object, line: int) -> str | Unread:
-    """The text of a file handle (or of a string), as .read() or yaml.safe_load(f) see it."""
+def read_text(value: object, line: int, interp: Interpreter) -> str | Unread:
+    """The text of a file handle (or of a string), as .read() or yaml.safe_load(f) see it; a file
+    the sandbox refuses is reported at `line`."""
     if isinstance(value, str):
         return value
     path = value.path if isinstance(value, (FileHandle, PathValue)) else None
     if path is None:
         return Unread(f"reading {_why(value)}", line)
     try:
-        return read_file(path)
-    except Unresolved as exc:
+        return read_file(path, "config")
+    except RefusedRead as exc:
+        interp.refused(exc, line)
         return Unread(str(exc), line)
 
 
 def _loader(parse: Callable[[str], object]) -> Callable[[CallSite], object]:
     def build(c: CallSite) -> object:
-        content = read_text(c.arg(0, "stream"), c.line)
+        content = read_text(c.arg(0, "stream"), c.line, c.interp)
         if isinstance(content, Unread):
             return content
         try:

@@ -18,6 +18,8 @@ from typing import TYPE_CHECKING
 import yaml
 from lxml import etree
 
+from archlog import sandbox
+from archlog.extract.files import parse_xml
 from archlog.extract.launch import LaunchError
 from archlog.extract.launch2 import (Action, Component, Condition, DeclareArgument, Group, Include, LoadComponents,
                                      Node, ParamDict, ParamFile, ParamItem, ParamSource, ParamText, Process,
@@ -74,12 +76,12 @@ def describe_xml(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
     """The actions of a ROS 2 XML launch file; None (with a diagnostic) when it cannot be read."""
     shown = launcher.workspace.display(path)
     try:
-        root = etree.parse(str(path), etree.XMLParser(remove_comments=True, remove_pis=True)).getroot()
+        root = parse_xml(path, "launch", remove_comments=True, remove_pis=True)
     except etree.XMLSyntaxError as exc:
         launcher.diagnostics.add(shown, exc.lineno or 1, "launch-xml", f"malformed launch XML: {exc.msg}", "error")
         return None
-    except OSError as exc:
-        launcher.diagnostics.add(shown, 1, "launch-missing", f"cannot read launch file: {exc}", "error")
+    except sandbox.Refused as exc:
+        launcher.diagnostics.add(shown, 1, exc.code, f"cannot read launch file: {exc}", "error")
         return None
     if root.tag != "launch":
         launcher.diagnostics.add(shown, root.sourceline or 1, "launch-xml", f"root element is <{root.tag}>, not <launch>",
@@ -127,14 +129,14 @@ def describe_yaml(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
     """The actions of a ROS 2 YAML launch file; None (with a diagnostic) when it cannot be read."""
     shown = launcher.workspace.display(path)
     try:
-        data = yaml.load(path.read_text(encoding="utf-8"), Loader=_LineLoader)
+        data = yaml.load(sandbox.read_text(path, "launch"), Loader=_LineLoader)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         launcher.diagnostics.add(shown, mark.line + 1 if mark else 1, "launch-yaml", f"malformed launch YAML: {exc}",
                                  "error")
         return None
-    except (OSError, UnicodeDecodeError) as exc:
-        launcher.diagnostics.add(shown, 1, "launch-missing", f"cannot read launch file: {exc}", "error")
+    except sandbox.Refused as exc:
+        launcher.diagnostics.add(shown, 1, exc.code, f"cannot read launch file: {exc}", "error")
         return None
     if not isinstance(data, dict) or list(data) != ["launch"]:
         launcher.diagnostics.add(shown, 1, "launch-yaml", "not a ROS 2 YAML launch file: the root must be the one key "

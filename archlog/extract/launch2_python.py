@@ -17,13 +17,14 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from archlog import sandbox
 from archlog.extract.launch import LaunchError
 from archlog.extract.launch2 import Action, Condition, Where
 from archlog.extract.launch2_api import (API_MODULES, CONSTRUCTORS, FUNCTIONS, CallSite, ConfigsView, ContextValue,
                                          Description, FileHandle, LineDict, LineTuple, PathValue, Ref, S, Unread,
                                          entities, environment, perform_in, read_text, to_parts)
 from archlog.extract.launch2_subst import text
-from archlog.extract.substitution import BUILTINS, STR_METHODS, Evaluator, SubstitutionError, UnknownArg
+from archlog.extract.substitution import BUILTINS, STR_METHODS, Evaluator, RefusedRead, SubstitutionError, UnknownArg
 
 if TYPE_CHECKING:
     from archlog.extract.launch2 import Ros2Launch
@@ -44,9 +45,9 @@ def describe(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
     diagnostic) when the file cannot be read or has no such function."""
     shown = launcher.workspace.display(path)
     try:
-        source = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        launcher.diagnostics.add(shown, 1, "launch-missing", f"cannot read launch file: {exc}", "error")
+        source = sandbox.read_text(path, "launch")
+    except sandbox.Refused as exc:
+        launcher.diagnostics.add(shown, 1, exc.code, f"cannot read launch file: {exc}", "error")
         return None
     try:
         tree = ast.parse(source, str(path))
@@ -135,6 +136,9 @@ class _Interpreter(Evaluator):
         """Where an action made at `line` is reported: at the call of the helper function it was
         made in, when the entry function (generate_launch_description, an OpaqueFunction) called one."""
         return self.sites[1] if len(self.sites) > 1 else line
+
+    def refused(self, exc: RefusedRead, line: int) -> None:
+        self.launcher.diag(Where(self.path, line), exc.code, f"file not read: {exc}")
 
     # -- statements -----------------------------------------------------------------------
     def block(self, body: list[ast.stmt]) -> None:
@@ -571,7 +575,7 @@ class _Interpreter(Evaluator):
         if isinstance(target, ConfigsView) and name == "get":
             return self.config(target, args[0] if args else None, args[1] if len(args) > 1 else None, line)
         if isinstance(target, (FileHandle, PathValue)) and name in ("read", "read_text"):
-            return read_text(target, line)
+            return read_text(target, line, self)
         if isinstance(target, PathValue) and name in ("resolve", "absolute", "expanduser"):
             return PathValue(str(Path(target.path).resolve()))
         if isinstance(target, PathValue) and name in ("exists", "is_file", "is_dir", "as_posix", "joinpath"):

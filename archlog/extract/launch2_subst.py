@@ -19,9 +19,9 @@ from pathlib import Path
 import yaml
 
 from archlog.extract.launch import Element
-from archlog.extract.substitution import BUILTINS, MATH, SubstitutionError, UnknownArg, Unresolved, restricted_eval
+from archlog.extract.substitution import (BUILTINS, MATH, SubstitutionError, UnknownArg, Unresolved, read_file,
+                                          restricted_eval)
 
-MAX_FILE = 16 * 1024 * 1024
 
 
 @dataclass(frozen=True)
@@ -322,20 +322,8 @@ def _anon(args: tuple[Parts, ...], ctx: Context) -> str:
     return str(ctx.configs[key])
 
 
-def read_file(path: str) -> str:
-    """A regular file's text, as a launch file reads it (FileContent, open()); Unresolved when
-    it cannot be read here (missing, not a regular file, larger than MAX_FILE bytes)."""
-    try:
-        file = Path(path)
-        if not file.is_file() or file.stat().st_size > MAX_FILE:
-            raise Unresolved(f"cannot read {path}: not a regular file of at most {MAX_FILE} bytes")
-        return file.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise Unresolved(f"cannot read {path}: {exc}") from None
-
-
 def _file_content(args: tuple[Parts, ...], ctx: Context) -> str:
-    return read_file(perform(args[0], ctx))
+    return read_file(perform(args[0], ctx), "config")
 
 
 def _equals(args: tuple[Parts, ...], ctx: Context) -> str:

@@ -22,6 +22,7 @@ from pathlib import Path
 import jsonschema
 import yaml
 
+from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.summary import NodeSummary, Port
@@ -49,13 +50,13 @@ class _LineLoader(yaml.SafeLoader):
 def load_models(path: Path, shown: str, diagnostics: DiagnosticSink) -> list[tuple[NodeSummary, str | None]]:
     """(summary, external instance name or None) for every valid model in the file."""
     try:
-        data = yaml.load(path.read_text(encoding="utf-8"), Loader=_LineLoader)
+        data = yaml.load(sandbox.read_text(path, "config"), Loader=_LineLoader)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         diagnostics.add(shown, mark.line + 1 if mark else 1, "model-yaml", f"model file does not parse: {exc}", "error")
         return []
-    except OSError as exc:
-        diagnostics.add(shown, 1, "model-read", f"cannot read model file: {exc.strerror}", "error")
+    except sandbox.Refused as exc:
+        diagnostics.add(shown, 1, exc.code, f"cannot read model file: {exc}", "error")
         return []
     items = data.get("models", []) if isinstance(data, dict) and "models" in data else [data]
     result = []

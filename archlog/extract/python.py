@@ -17,6 +17,7 @@ from pathlib import Path
 
 import parso
 
+from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.qos import DURATIONS, Qos, number, preset_name, seconds_text
 from archlog.extract.summary import NodeSummary, Port
@@ -63,9 +64,9 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
     """Read one rospy/rclpy script; never imports or runs it."""
     summary = NodeSummary(package, executable, "python")
     try:
-        source = path.read_bytes().decode("utf-8", errors="replace")
-    except OSError as exc:
-        diagnostics.add(shown, 1, "python-read", f"cannot read: {exc.strerror}", "error")
+        source = sandbox.read_text(path, "source")
+    except sandbox.Refused as exc:
+        diagnostics.add(shown, 1, exc.code, f"not read: {exc}", "error")
         summary.incomplete = f"{shown}: cannot be read"
         return summary
     tree, repaired, dropped = parse_tolerant(source)

@@ -12,10 +12,10 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from fractions import Fraction
-from pathlib import Path
 
 import clang.cindex as ci
 
+from archlog import sandbox
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cache import cache_dir
 from archlog.extract.cpp_ast import (K, SKIP, binary_operator, camera_info, qualified, ros2_type, ros_type,
@@ -125,10 +125,13 @@ def macro_name(expr: ci.Cursor) -> str:
     location = expr.extent.start
     if location.file is None:
         return ""
-    with open(location.file.name, "rb") as source:
-        source.seek(location.offset)
-        match = re.match(rb"\w+", source.read(80))
-    return match.group(0).decode() if match else ""
+    try:
+        with open(sandbox.current().check(location.file.name, "source"), "rb") as source:
+            source.seek(location.offset)
+            match = re.match(rb"\w+", source.read(80))
+    except (sandbox.Refused, OSError):
+        return ""
+    return match.group(0).decode(errors="replace") if match else ""
 
 
 def parameter_names(function: ci.Cursor) -> list[str]:
@@ -873,8 +876,8 @@ def _workspace_header_texts(tu: ci.TranslationUnit) -> list[str]:
         name = include.include.name
         if not name.startswith(("/usr/", "/opt/", str(cache_dir()), str(API_DIR))):
             try:
-                texts.append(Path(name).read_text(errors="replace"))
-            except OSError:
+                texts.append(sandbox.read_text(name, "source"))
+            except sandbox.Refused:
                 continue
     return texts
 _NODE_FALLBACK = re.compile(r"[:,]\s*(?:rclcpp::Node|Node|(?:rclcpp_lifecycle::)?LifecycleNode)\s*\(\s*(\"[^\"]+\")")

@@ -13,7 +13,7 @@ import xml.dom.minidom
 from dataclasses import dataclass
 from pathlib import Path
 
-from archlog import names
+from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.command_line import split_options
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
@@ -148,9 +148,9 @@ def _where(library: str, files: list[Path], elem: Element, workspace: Workspace)
     """The line naming the plugin in the description's files, else the launch element."""
     for path in files:
         try:
-            for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            for number, line in enumerate(sandbox.read_text(path, "description").splitlines(), 1):
                 if f'"{library}"' in line:
                     return workspace.display(path), number
-        except OSError:
+        except sandbox.Refused:
             continue
     return elem.file, elem.line

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import yaml
 
+from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
 
 PARAMS_KEY = "ros__parameters"
@@ -25,9 +26,9 @@ def load_param_file(path: Path, shown: str, diagnostics: DiagnosticSink, text: s
     diagnostics at `shown`:line and the entries found so far are kept."""
     if text is None:
         try:
-            text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            diagnostics.add(shown, 1, "param-file", f"cannot read parameter file: {exc}", "error")
+            text = sandbox.read_text(path, "params")
+        except sandbox.Refused as exc:
+            diagnostics.add(shown, 1, exc.code, f"cannot read parameter file: {exc}", "error")
             return []
     loader = yaml.SafeLoader(text)
     try:

@@ -27,6 +27,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from archlog import sandbox
 from archlog.extract.cache import cache_dir
 
 API_DIR = Path(__file__).with_name("stand_ins")
@@ -158,8 +159,8 @@ class Interfaces:
             return None
         name, source = entry
         try:
-            return name, source.read_text(errors="replace") if isinstance(source, Path) else source
-        except OSError:
+            return name, sandbox.read_text(source, "message") if isinstance(source, Path) else source
+        except sandbox.Refused:
             return None
 
 

@@ -19,6 +19,8 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from archlog import sandbox
+
 
 class SubstitutionError(Exception):
     """A substitution roslaunch rejects."""
@@ -27,6 +29,28 @@ class SubstitutionError(Exception):
 class Unresolved(SubstitutionError):
     """A substitution that depends on the machine it runs on (an unset env var, a package that
     is not here, an arg whose value is itself unresolved)."""
+
+
+class RefusedRead(Unresolved):
+    """A file a launch file names that archlog will not read (outside the analysed paths, not a
+    regular file, too large); `code` is the sandbox's diagnostic code. The message names the path."""
+
+    def __init__(self, refused: sandbox.Refused) -> None:
+        super().__init__(str(refused))
+        self.code = refused.code
+
+
+def read_file(path: Path | str, kind: str) -> str:
+    """A file's text as a launch file reads it, under the sandbox (bad bytes become U+FFFD)."""
+    try:
+        return sandbox.read_text(path, kind)
+    except sandbox.Refused as exc:
+        raise RefusedRead(exc) from None
+
+
+def unresolved_code(exc: Unresolved, default: str) -> str:
+    """The diagnostic code for an unresolved value: the sandbox's code when a read was refused."""
+    return exc.code if isinstance(exc, RefusedRead) else default
 
 
 @dataclass(frozen=True)

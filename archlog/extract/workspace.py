@@ -10,11 +10,13 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from catkin_pkg.package import InvalidPackage, parse_package
+from catkin_pkg.package import InvalidPackage, parse_package_string
 from lxml import etree
 
+from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cmake import commands
+from archlog.extract.files import files_under, parse_xml, walk
 
 SKIP_DIRS = {"build", "devel", "install", "log", "node_modules", "__pycache__"}
 _REGISTER_NODE = re.compile(r"^[ \t]*RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)", re.M)
@@ -64,7 +66,7 @@ class Workspace:
     """The packages under the indexed paths, plus lookup of installed packages for `$(find)`."""
 
     def __init__(self, roots: list[Path], diagnostics: DiagnosticSink) -> None:
-        self.roots = [r.resolve() for r in roots]
+        self.roots = [Path(os.path.realpath(r)) for r in roots]
         self.diagnostics = diagnostics
         self.packages: dict[str, Package] = {}
         for root in self.roots:
@@ -73,13 +75,11 @@ class Workspace:
 
     def display(self, path: Path | str) -> str:
         """A path as shown in reports: relative to the first indexed root that contains it."""
-        path = Path(path)
-        for root in self.roots:
-            base = root if root.is_dir() else root.parent
-            try:
-                return path.resolve().relative_to(base).as_posix()
-            except ValueError:
-                continue
+        for shown in (os.path.realpath(path), os.path.abspath(path)):  # a symlink out: where it is
+            for root in self.roots:
+                base = root if root.is_dir() else root.parent
+                if Path(shown).is_relative_to(base):
+                    return Path(shown).relative_to(base).as_posix()
         return str(path)
 
     def find(self, pkg: str) -> Path | None:
@@ -97,16 +97,27 @@ class Workspace:
         return package.executables.get(exe) if package else None
 
     # -- indexing -----------------------------------------------------------------------
+    def _read(self, path: Path, kind: str) -> str | None:
+        """A package file's text, or None with a diagnostic when the sandbox refuses it."""
+        try:
+            return sandbox.read_text(path, kind)
+        except sandbox.Refused as exc:
+            self.diagnostics.add(self.display(path), 1, exc.code, f"not read: {exc}", "warning")
+            return None
+
     def _index(self, manifest: Path) -> None:
         folder = manifest.parent
+        text = self._read(manifest, "build")
+        if text is None:
+            return
         try:
-            parsed = parse_package(str(manifest))
+            parsed = parse_package_string(text, str(manifest))
             name = parsed.name
             plugin_xml = [e.attributes["plugin"] for e in parsed.exports if "plugin" in e.attributes]
             ament = any(d.name.startswith("ament_") for d in parsed.buildtool_depends) or any(
                 e.tagname == "build_type" and (e.content or "").startswith("ament_") for e in parsed.exports)
         except (InvalidPackage, Exception) as exc:  # catkin_pkg raises several error types
-            match = re.search(r"<name>\s*([^<\s]+)\s*</name>", manifest.read_text(errors="replace"))
+            match = re.search(r"<name>\s*([^<\s]+)\s*</name>", text)
             self.diagnostics.add(self.display(manifest), 1, "package-xml", f"invalid package.xml: {_first_line(exc)}")
             if not match:
                 return
@@ -136,7 +147,7 @@ class Workspace:
         for exe in package.executables.values():
             if exe.lang != "cpp" or exe.cls is not None:
                 continue
-            own = "\n".join(s.read_text(errors="replace") for s in exe.sources if s.is_file())
+            own = "\n".join(_text(s) for s in exe.sources)
             pending, seen = list(package.links.get(exe.target, [])), set()
             while pending:
                 library = pending.pop(0)
@@ -149,10 +160,10 @@ class Workspace:
     def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int) -> None:
         """Read one CMakeLists.txt; add_subdirectory() folders inherit a copy of the variables."""
         cmake = folder / "CMakeLists.txt"
-        if not cmake.is_file() or depth > 8:
+        if not cmake.is_file() or depth > 8 or (text := self._read(cmake, "build")) is None:
             return
         variables = {**variables, "CMAKE_CURRENT_SOURCE_DIR": str(folder)}
-        cmds = commands(cmake.read_text(errors="replace"), variables)
+        cmds = commands(text, variables)
         output_names = {
             c.args[0]: c.args[c.args.index("OUTPUT_NAME") + 1]
             for c in cmds
@@ -197,8 +208,8 @@ class Workspace:
         for raw in package.plugin_xml:
             path = Path(raw.replace("${prefix}", str(package.path)))
             try:
-                root = etree.parse(str(path)).getroot()
-            except (OSError, etree.XMLSyntaxError) as exc:
+                root = parse_xml(path, "build")
+            except (sandbox.Refused, etree.XMLSyntaxError) as exc:
                 self.diagnostics.add(self.display(package.path / "package.xml"), 1, "plugin-xml",
                                      f"plugin description {raw} cannot be read: {exc}", "warning")
                 continue
@@ -234,7 +245,7 @@ class Workspace:
         """Components registered in the sources (RCLCPP_COMPONENTS_REGISTER_NODE) but not in
         CMakeLists.txt: the library compiling the file, else the file alone."""
         for path in _source_files(package.path):
-            text = path.read_text(errors="replace")
+            text = _text(path)
             if "RCLCPP_COMPONENTS_REGISTER_NODE" not in text:
                 continue
             for cls, line in registered_components(text):
@@ -245,7 +256,7 @@ class Workspace:
 
     def _entry_points(self, package: Package) -> None:
         """console_scripts of setup.py / setup.cfg (catkin and ament_python packages)."""
-        for spec in _console_scripts(package.path, self.diagnostics, self.display):
+        for spec in self._console_scripts(package.path):
             name, _, target = spec.partition("=")
             module = target.strip().split(":")[0].strip()
             relative = Path(*module.split("."))
@@ -256,11 +267,40 @@ class Workspace:
                                                                        [candidate])
                         break
 
+    def _console_scripts(self, folder: Path) -> list[str]:
+        specs: list[str] = []
+        setup_cfg = folder / "setup.cfg"
+        if setup_cfg.is_file() and (text := self._read(setup_cfg, "build")) is not None:
+            parser = configparser.ConfigParser()
+            try:
+                parser.read_string(text, str(setup_cfg))
+                specs += [ln for ln in parser.get("options.entry_points", "console_scripts", fallback="").splitlines()
+                          if "=" in ln]
+            except configparser.Error as exc:
+                self.diagnostics.add(self.display(setup_cfg), 1, "setup-cfg", f"setup.cfg does not parse: {exc}",
+                                     "warning")
+        setup_py = folder / "setup.py"
+        if setup_py.is_file() and (text := self._read(setup_py, "build")) is not None:
+            try:
+                tree = ast.parse(text)
+            except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
+                line = exc.lineno if isinstance(exc, SyntaxError) and exc.lineno else 1
+                self.diagnostics.add(self.display(setup_py), line, "setup-py", "setup.py does not parse", "warning")
+                return specs
+            for node in ast.walk(tree):
+                if isinstance(node, ast.Dict):
+                    for key, value in zip(node.keys, node.values):
+                        if isinstance(key, ast.Constant) and key.value == "console_scripts" and \
+                                isinstance(value, (ast.List, ast.Tuple)):
+                            specs += [e.value for e in value.elts
+                                      if isinstance(e, ast.Constant) and isinstance(e.value, str)]
+        return specs
+
     def _script_executables(self, package: Package) -> None:
         """Executable Python scripts in the usual folders, and modules with a `__main__` block
         that use rospy or rclpy."""
         for folder in ("scripts", "nodes", "bin", "src", package.name):
-            for path in sorted((package.path / folder).glob("**/*")):
+            for path in files_under(package.path / folder):
                 if path.name in package.executables or not path.is_file() or path.suffix in SOURCE_SUFFIXES:
                     continue
                 if os.access(path, os.X_OK) and _is_python_script(path) or _is_main_module(path):
@@ -272,21 +312,33 @@ def manifests(root: Path) -> list[Path]:
     if (root / "package.xml").is_file():
         return [root / "package.xml"]
     found: list[Path] = []
-    for dirpath, dirnames, filenames in os.walk(root):
-        dirnames[:] = sorted(d for d in dirnames if not d.startswith(".") and d not in SKIP_DIRS)
+    for dirpath, dirnames, filenames in walk(root, _pruned):
         if "CATKIN_IGNORE" in filenames or "COLCON_IGNORE" in filenames:
             dirnames[:] = []
             continue
         if "package.xml" in filenames:
-            found.append(Path(dirpath) / "package.xml")
+            found.append(dirpath / "package.xml")
             dirnames[:] = []
     return found
 
 
+def _pruned(folder: str) -> bool:
+    """Folders a workspace walk does not enter: hidden ones and build trees."""
+    return folder.startswith(".") or folder in SKIP_DIRS
+
+
+def _text(path: Path) -> str:
+    """A source file's text for indexing; empty when the sandbox refuses it (the extractor that
+    reads it for its node reports why)."""
+    try:
+        return sandbox.read_text(path, "source")
+    except sandbox.Refused:
+        return ""
+
+
 def _node_classes(source: Path) -> list[str]:
     """Node classes a C++ file defines: constructors whose base initializer is a Node."""
-    text = source.read_text(errors="replace") if source.is_file() else ""
-    return sorted(set(_NODE_CONSTRUCTOR.findall(text)))
+    return sorted(set(_NODE_CONSTRUCTOR.findall(_text(source))))
 
 
 def registered_components(text: str) -> list[tuple[str, int]]:
@@ -309,11 +361,8 @@ def _sources(folder: Path, args: tuple[str, ...]) -> list[Path]:
 
 def _source_files(folder: Path) -> list[Path]:
     """C++ sources under a folder, outside build trees."""
-    found = []
-    for dirpath, dirnames, filenames in os.walk(folder):
-        dirnames[:] = sorted(d for d in dirnames if not d.startswith(".") and d not in SKIP_DIRS)
-        found += [Path(dirpath) / f for f in sorted(filenames) if Path(f).suffix in SOURCE_SUFFIXES]
-    return found
+    return [dirpath / f for dirpath, _dirs, filenames in walk(folder, _pruned) for f in filenames
+            if Path(f).suffix in SOURCE_SUFFIXES]
 
 
 def _under(folder: Path, path: str) -> Path:
@@ -324,47 +373,21 @@ def _under(folder: Path, path: str) -> Path:
 def _exporting(folder: Path, cls: str) -> list[Path]:
     """Source files that PLUGINLIB_EXPORT_CLASS the class (when its library is not found)."""
     pattern = re.compile(r"PLUGINLIB_EXPORT_CLASS\s*\(\s*" + re.escape(cls) + r"\b")
-    return [p for p in sorted(folder.rglob("*")) if p.suffix in SOURCE_SUFFIXES and p.is_file()
-            and pattern.search(p.read_text(errors="replace"))]
-
-
-def _console_scripts(folder: Path, diagnostics: DiagnosticSink, display) -> list[str]:
-    specs: list[str] = []
-    setup_cfg = folder / "setup.cfg"
-    if setup_cfg.is_file():
-        parser = configparser.ConfigParser()
-        try:
-            parser.read(setup_cfg, encoding="utf-8")
-            specs += [ln for ln in parser.get("options.entry_points", "console_scripts", fallback="").splitlines()
-                      if "=" in ln]
-        except configparser.Error as exc:
-            diagnostics.add(display(setup_cfg), 1, "setup-cfg", f"setup.cfg does not parse: {exc}", "warning")
-    setup_py = folder / "setup.py"
-    if setup_py.is_file():
-        try:
-            tree = ast.parse(setup_py.read_text(errors="replace"))
-        except SyntaxError as exc:
-            diagnostics.add(display(setup_py), exc.lineno or 1, "setup-py", "setup.py does not parse", "warning")
-            return specs
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Dict):
-                for key, value in zip(node.keys, node.values):
-                    if isinstance(key, ast.Constant) and key.value == "console_scripts" and \
-                            isinstance(value, (ast.List, ast.Tuple)):
-                        specs += [e.value for e in value.elts if isinstance(e, ast.Constant) and isinstance(e.value, str)]
-    return specs
+    return [p for p in files_under(folder) if p.suffix in SOURCE_SUFFIXES and pattern.search(_text(p))]
 
 
 def _is_main_module(path: Path) -> bool:
     if path.suffix != ".py" or path.name in ("setup.py", "__init__.py") or "test" in path.parts[-2:-1]:
         return False
-    text = path.read_text(errors="replace")
+    text = _text(path)
     return "__main__" in text and ("import rospy" in text or "import rclpy" in text or "from rclpy" in text)
 
 
 def _is_python_script(path: Path) -> bool:
-    with path.open("rb") as fh:
-        return bool(_SHEBANG.match(fh.readline(200)))
+    try:
+        return bool(_SHEBANG.match(sandbox.read_bytes(path, "source")[:200]))
+    except sandbox.Refused:
+        return False
 
 
 def _first_line(exc: BaseException) -> str:

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import yaml
 
+from archlog import sandbox
 from archlog.diagnostics import SEVERITIES
 
 BUILTIN = Path(__file__).resolve().parent / "builtin"
@@ -72,7 +73,11 @@ class RuleSet:
     programs: list[Program] = field(default_factory=list)
 
     def add_file(self, path: Path) -> None:
-        rules, programs = parse_rule_file(path.read_text(encoding="utf-8"), str(path))
+        try:
+            text = sandbox.read_text(path, "config")
+        except sandbox.Refused as exc:
+            raise RuleError(str(path), 1, f"rule file not read: {exc}") from None
+        rules, programs = parse_rule_file(text, str(path))
         known = {r.id for r in self.rules}
         for rule in rules:
             if rule.id in known:
