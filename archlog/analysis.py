@@ -38,6 +38,7 @@ class Analysis:
     store: FactStore
     diagnostics: DiagnosticSink
     timings: dict[str, float] = field(default_factory=dict)
+    policy: sandbox.Sandbox = field(default_factory=sandbox.current)  # what the run could read (reports too)
 
 
 Progress = Callable[[int, int], None]

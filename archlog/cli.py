@@ -14,7 +14,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn
 from rich.table import Table
 from rich.text import Text
 
-from archlog import __version__
+from archlog import __version__, sandbox
 from archlog.analysis import Analysis, ConfigError, analyse
 from archlog.config import Config
 from archlog.config import ConfigError as ConfigFileError
@@ -115,7 +115,8 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     root = analysis.workspace.roots[0]
     findings = Session(analysis.store, ruleset, config).findings()
     files = {str(row[1]) for row in analysis.store.rows("location")}
-    unused = apply_suppressions(findings, files, root if root.is_dir() else root.parent, config.suppress)
+    with sandbox.active(analysis.policy):  # inline suppressions are read where the analysis could read
+        unused = apply_suppressions(findings, files, root if root.is_dir() else root.parent, config.suppress)
     if baseline:
         try:
             known = read_baseline(baseline)
@@ -127,10 +128,11 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     report = Report(findings, analysis.diagnostics.items + unused, config.adjust(ruleset.rules), root,
                     Report.node_origins(analysis.store))
     if fmt == "text" and output:
-        with output.open("w", encoding="utf-8") as fh:
+        with output.open("w", encoding="utf-8") as fh, sandbox.active(analysis.policy):
             print_text(report, Console(file=fh, no_color=True, soft_wrap=True), quiet)
     elif fmt == "text":
-        print_text(report, Console(no_color=bool(os.environ.get("NO_COLOR")), soft_wrap=True), quiet)
+        with sandbox.active(analysis.policy):  # the source lines it quotes
+            print_text(report, Console(no_color=bool(os.environ.get("NO_COLOR")), soft_wrap=True), quiet)
     else:
         text = {"json": to_json, "sarif": to_sarif, "codequality": to_codequality}[fmt](report)
         if output:

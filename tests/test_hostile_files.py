@@ -237,6 +237,21 @@ def test_ros2_frontends_and_params(tmp_path: Path) -> None:
             (yml, 3, "not-a-file"), (yml, 9, "outside-workspace")} <= found
 
 
+def test_xml_external_entities(tmp_path: Path) -> None:
+    """An external entity naming the secret, in ROS 1 and ROS 2 XML launch files and in a plugin
+    description, is never loaded (an include naming it would print it)."""
+    ws, out = tmp_path / "ws", Outside(tmp_path / "outside")
+    pkg = _package(ws)
+    doctype = f'<?xml version="1.0"?>\n<!DOCTYPE launch [<!ENTITY x SYSTEM "file://{out.secret_file}">]>\n'
+    _write(pkg / "launch" / "one.launch", doctype + '<launch><include file="&x;"/></launch>\n')
+    _write(pkg / "launch" / "two.launch.xml", doctype + '<launch><include file="&x;"/></launch>\n')
+    _write(pkg / "plugins.xml", doctype.replace("launch", "library") + '<library path="&x;"/>\n')
+    (pkg / "package.xml").write_text(CATKIN_XML.format(name="demo").replace(
+        "</package>", '<export><nodelet plugin="${prefix}/plugins.xml"/></export></package>'))
+    _check(ws, out, "--launch", str(pkg / "launch" / "one.launch"))
+    _check(ws, out, "--launch", str(pkg / "launch" / "two.launch.xml"))
+
+
 def test_walks_stay_inside(tmp_path: Path) -> None:
     """Folders symlinked to / or outside, and symlink loops, in the places the workspace walk
     and the script, source and header searches look."""

@@ -13,6 +13,7 @@ scope's (set_remap, set_parameter), then its own. rcl applies the first remap th
 from __future__ import annotations
 
 import itertools
+import os
 import re
 import shlex
 from collections.abc import Callable
@@ -251,7 +252,7 @@ class Ros2Launch:
     def describe(self, path: Path, dialect: str | None) -> Description | None:
         """A file's description, read once (descriptions do not depend on the context)."""
         kind = dialect or dialect_of(path)
-        key = (path.resolve(), kind)
+        key = (Path(os.path.realpath(path)), kind)
         if key not in self._descriptions:
             self._descriptions[key] = self.readers[kind](path, self)
         return self._descriptions[key]
@@ -597,7 +598,7 @@ class Ros2Launch:
         substitute = source.allow_substs if isinstance(source.allow_substs, bool) else \
             typed_bool(perform(source.allow_substs, ctx))
         content = self._substituted(path, where, ctx) if substitute else None
-        key = (path.resolve(), content)
+        key = (Path(os.path.realpath(path)), content)
         if key not in self._param_files:
             shown = self.workspace.display(path)
             self._param_files[key] = [(pattern, name, value, self.element(path, line)) for pattern, name, value, line
@@ -608,7 +609,7 @@ class Ros2Launch:
     def _substituted(self, path: Path, where: Where, ctx: Context) -> str | None:
         """A parameter file's text with its substitutions performed (allow_substs)."""
         try:
-            key = path.resolve()
+            key = Path(os.path.realpath(path))
             if key not in self._templates:
                 self._templates[key] = parse(read_file(path, "params"))
             return perform(self._templates[key], ctx)

@@ -12,6 +12,7 @@ would give it. What cannot be read is an `Unread` value, reported where it ends 
 from __future__ import annotations
 
 import ast
+import os
 from contextlib import suppress
 from dataclasses import dataclass
 from pathlib import Path
@@ -577,7 +578,7 @@ class _Interpreter(Evaluator):
         if isinstance(target, (FileHandle, PathValue)) and name in ("read", "read_text"):
             return read_text(target, line, self)
         if isinstance(target, PathValue) and name in ("resolve", "absolute", "expanduser"):
-            return PathValue(str(Path(target.path).resolve()))
+            return PathValue(os.path.realpath(target.path))
         if isinstance(target, PathValue) and name in ("exists", "is_file", "is_dir", "as_posix", "joinpath"):
             path = Path(target.path)
             if name == "joinpath":

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import io
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from archlog import sandbox
 from archlog.diagnostics import SEVERITIES, Diagnostic
 from archlog.rules.engine import Finding, Location
 from archlog.rules.ruleset import Rule
@@ -43,10 +45,7 @@ class Report:
     def source_line(self, file: str, line: int) -> str | None:
         path = Path(file) if Path(file).is_absolute() else self.root / file
         try:
-            with path.open(encoding="utf-8", errors="replace") as fh:
-                for number, text in enumerate(fh, 1):
-                    if number == line:
-                        return text.rstrip("\n")
-        except OSError:
+            lines = io.StringIO(sandbox.read_text(path, "source"), newline=None).read().split("\n")
+        except sandbox.Refused:
             return None
-        return None
+        return lines[line - 1] if 0 < line <= len(lines) else None

@@ -15,6 +15,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from archlog import sandbox
 from archlog.diagnostics import Diagnostic
 from archlog.rules.engine import Finding
 
@@ -36,8 +37,8 @@ def inline_suppressions(files: set[str], root: Path) -> dict[tuple[str, int], In
     for file in sorted(files):
         path = Path(file) if Path(file).is_absolute() else root / file
         try:
-            lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
-        except OSError:
+            lines = sandbox.read_text(path, "source").splitlines()
+        except sandbox.Refused:
             continue
         for number, text in enumerate(lines, 1):
             match = MARKER.search(text)
