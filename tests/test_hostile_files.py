@@ -186,12 +186,11 @@ def test_launch_and_cpp_reads(tmp_path: Path, target: Callable[[Path, Outside], 
                 Node(package="demo", executable="c", name=name),
             ])
         """)
-    found = _check(ws, out, "--launch", str(pkg / "launch" / "all.launch"))
-    launch = "demo/launch/all.launch"
+    found = _check(ws, out, "--launch", str(pkg / "launch" / "all.launch"),
+                   "--launch", str(pkg / "launch" / "all.launch.py"))
+    launch, python = "demo/launch/all.launch", "demo/launch/all.launch.py"
     assert {(launch, line, aim.code) for line in (2, 3, 4, 5)} <= found
     assert ("demo/src/node.cpp", 2, aim.code) in found
-    found = _check(ws, out, "--launch", str(pkg / "launch" / "all.launch.py"))
-    python = "demo/launch/all.launch.py"
     assert {(python, line, aim.code) for line in (8, 10, 11, 12)} <= found
 
 
@@ -201,9 +200,9 @@ def test_no_leak_in_any_format(tmp_path: Path, fmt: str) -> None:
     ws, out = tmp_path / "ws", Outside(tmp_path / "outside")
     pkg = _package(ws)
     aims = [absolute(pkg, out), symlink(pkg, out), environ(pkg, out)]
-    _write(pkg / "launch" / "all.launch", "<launch>\n" + "".join(
-        f'<param name="t{k}" textfile="{a.path}"/><rosparam file="{a.path}"/>'
-        f'<node pkg="rviz" type="rviz" name="rviz{k}" args="-d {a.path}"/>\n' for k, a in enumerate(aims)) + "</launch>\n")
+    elements = "".join(f'<param name="t{k}" textfile="{a.path}"/><rosparam file="{a.path}"/>'
+                       f'<node pkg="rviz" type="rviz" name="rviz{k}" args="-d {a.path}"/>\n' for k, a in enumerate(aims))
+    _write(pkg / "launch" / "all.launch", f"<launch>\n{elements}</launch>\n")
     _check(ws, out, "--launch", str(pkg / "launch" / "all.launch"), fmt=fmt)
 
 
@@ -248,8 +247,9 @@ def test_xml_external_entities(tmp_path: Path) -> None:
     _write(pkg / "plugins.xml", doctype.replace("launch", "library") + '<library path="&x;"/>\n')
     (pkg / "package.xml").write_text(CATKIN_XML.format(name="demo").replace(
         "</package>", '<export><nodelet plugin="${prefix}/plugins.xml"/></export></package>'))
-    _check(ws, out, "--launch", str(pkg / "launch" / "one.launch"))
-    _check(ws, out, "--launch", str(pkg / "launch" / "two.launch.xml"))
+    found = _check(ws, out, "--launch", str(pkg / "launch" / "one.launch"), "--launch",
+                   str(pkg / "launch" / "two.launch.xml"))
+    assert {("demo/launch/one.launch", 3, "launch-xml"), ("demo/launch/two.launch.xml", 3, "launch-xml")} <= found
 
 
 def test_walks_stay_inside(tmp_path: Path) -> None:
@@ -292,7 +292,8 @@ def test_invalid_utf8_everywhere(tmp_path: Path) -> None:
     (pkg / "src" / "node.cpp").write_bytes(b"// " + BAD + b"\nint main() {}\n")
     (pkg / "config").mkdir()
     (pkg / "config" / "params.yaml").write_bytes(b"a: 1\n# " + BAD + b"\nb: \"" + BAD + b"\"\n")
-    (pkg / "config" / "ros2.yaml").write_bytes(b"/**:\n  ros__parameters:\n    # " + BAD + b"\n    x: \"" + BAD + b"\"\n")
+    (pkg / "config" / "ros2.yaml").write_bytes(b"/**:\n  ros__parameters:\n    # " + BAD + b"\n    x: \""
+                                               + BAD + b"\"\n")
     (pkg / "config" / "view.rviz").write_bytes(b"Visualization Manager:\n  Displays: []\n# " + BAD + b"\n")
     (pkg / "config" / "robot.urdf").write_bytes(b"<robot name='r'><!-- " + BAD + b" --></robot>\n")
     (pkg / "model.yaml").write_bytes(b"# " + BAD + b"\npackage: x\nexecutable: y\n")

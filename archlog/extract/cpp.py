@@ -118,9 +118,8 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
         refused = unreadable(source, "source")
         if refused is not None:
             missing = refused.code == "missing"
-            diagnostics.add(name, 1, "cpp-missing" if missing else refused.code,
-                            "source file listed in CMakeLists.txt does not exist" if missing else f"not read: {refused}",
-                            "error")
+            message = "source file listed in CMakeLists.txt does not exist" if missing else f"not read: {refused}"
+            diagnostics.add(name, 1, "cpp-missing" if missing else refused.code, message, "error")
             summary.incomplete = summary.incomplete or f"{name}: {'missing' if missing else 'not read'}"
             continue
         try:

@@ -428,8 +428,8 @@ class LaunchInterpreter:
             value = self._param_value(scope, el, sources[0], kind, elem)
         except Unresolved as exc:
             value = Unknown(f"{el.get(sources[0])} ({exc})", elem.file, elem.line)
-            self._diag(path, el, unresolved_code(exc, "launch-unresolved"), f"<param> value not known statically: {exc}",
-                       "warning")
+            self._diag(path, el, unresolved_code(exc, "launch-unresolved"),
+                       f"<param> value not known statically: {exc}", "warning")
         if local is not None:
             local.append((name, value, elem))
         elif name.startswith("~"):

@@ -527,7 +527,8 @@ class Ros2Launch:
             try:
                 src, dst = perform(remap.src, ctx), perform(remap.dst, ctx)
             except Unresolved as exc:
-                self.diag(replace(where, line=remap.line), unresolved_code(exc, "launch-unknown"), f"remap skipped: {exc}")
+                self.diag(replace(where, line=remap.line), unresolved_code(exc, "launch-unknown"),
+                          f"remap skipped: {exc}")
                 continue
             found.append((src, dst, self.element(where.file, remap.line)))
         return found
@@ -558,7 +559,8 @@ class Ros2Launch:
                 try:
                     name = perform(item.name, ctx)
                 except Unresolved as exc:
-                    self.diag(replace(where, line=item.line), unresolved_code(exc, "launch-unknown"), f"parameter skipped: {exc}")
+                    self.diag(replace(where, line=item.line), unresolved_code(exc, "launch-unknown"),
+                              f"parameter skipped: {exc}")
                     continue
                 found.append(("", name, self._value(item.value, ctx, elem), elem))
         return found
