@@ -58,11 +58,13 @@ def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models
 def reading_roots(paths: list[Path], launches: list[str], models: list[Path]) -> tuple[Path, ...]:
     """Where a run may read: the analysed paths, files named on the command line, installed
     package share folders, the system include folders and archlog's own node models (resolved,
-    symlinks followed)."""
+    symlinks followed). A file named on the command line that is a symlink does not make its
+    target readable: the workspace may have replaced the file with a link to a secret."""
     given = [*paths, *models, *(Path(spec) for spec in launches if Path(spec).is_file())]
     system = [*share_dirs(), BUILTIN_DIR, Path("/usr/include"), Path("/usr/local/include"), Path("/usr/lib/llvm-14"),
               *Path("/opt/ros").glob("*/include")]
-    return tuple(dict.fromkeys(Path(os.path.realpath(p)) for p in [*given, *system]))
+    named = [Path(os.path.realpath(p.parent)) / p.name if p.is_file() else Path(os.path.realpath(p)) for p in given]
+    return tuple(dict.fromkeys([*named, *(Path(os.path.realpath(p)) for p in system)]))
 
 
 def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], models: list[Path],
@@ -108,7 +110,7 @@ def resolve_launch(spec: str, workspace: Workspace) -> Path:
     """A launch file given as a path, or as PKG/relative/path (or PKG/file name) like roslaunch."""
     path = Path(spec)
     if path.is_file():
-        return path.resolve()
+        return Path(os.path.abspath(path))  # a symlink stays itself: the sandbox judges where it points
     pkg, _, rest = spec.partition("/")
     base = workspace.find(pkg)
     if base is not None and rest:

@@ -206,6 +206,15 @@ def test_no_leak_in_any_format(tmp_path: Path, fmt: str) -> None:
     _check(ws, out, "--launch", str(pkg / "launch" / "all.launch"), fmt=fmt)
 
 
+def test_named_launch_file_linked_out(tmp_path: Path) -> None:
+    """The launch file CI names is, in the pull request, a symlink to the secret: not read."""
+    ws, out = tmp_path / "ws", Outside(tmp_path / "outside")
+    link = _package(ws) / "launch" / "main.launch.yaml"
+    link.parent.mkdir()
+    link.symlink_to(out.secret_file)
+    assert ("demo/launch/main.launch.yaml", 1, "outside-workspace") in _check(ws, out, "--launch", str(link))
+
+
 def test_ros2_frontends_and_params(tmp_path: Path) -> None:
     """ROS 2 XML and YAML launch files: an included file and parameter files outside, a FIFO."""
     ws, out = tmp_path / "ws", Outside(tmp_path / "outside")
@@ -234,6 +243,31 @@ def test_ros2_frontends_and_params(tmp_path: Path) -> None:
     xml, yml = "demo2/launch/main.launch.xml", "demo2/launch/main.launch.yaml"
     assert {(xml, 2, "outside-workspace"), (xml, 3, "outside-workspace"), (xml, 4, "not-a-file"),
             (yml, 3, "not-a-file"), (yml, 9, "outside-workspace")} <= found
+
+
+def test_sources_and_build_files_outside(tmp_path: Path) -> None:
+    """Sources symlinked out, CMake folders and include folders outside, a compile database that
+    force-includes the secret: nothing of the secret is read."""
+    ws, out = tmp_path / "ws", Outside(tmp_path / "outside")
+    pkg = _package(ws)
+    (out.root / "sub").mkdir()
+    (out.root / "sub" / "CMakeLists.txt").write_text(f"add_executable({out.secret} x.cpp)\n")
+    _write(pkg / "CMakeLists.txt", CMAKE + f"""
+        add_executable(linked src/linked.cpp)
+        add_subdirectory({out.root / "sub"})
+        include_directories({out.root})
+        catkin_install_python(PROGRAMS scripts/linked.py DESTINATION bin)
+        """)
+    _write(pkg / "src" / "node.cpp", '#include "secret.yaml"\nint main() {}\n')
+    (pkg / "src" / "linked.cpp").symlink_to(out.secret_file)
+    (pkg / "scripts").mkdir()
+    (pkg / "scripts" / "linked.py").symlink_to(out.secret_file)
+    _write(ws / "compile_commands.json", json.dumps([{
+        "directory": str(pkg), "file": "src/node.cpp",
+        "arguments": ["c++", "-include", str(out.secret_file), f"-I{out.root}", "-c", "src/node.cpp"]}]))
+    found = _check(ws, out)
+    assert {("demo/src/linked.cpp", 1, "outside-workspace"), ("demo/scripts/linked.py", 1, "outside-workspace"),
+            ("demo/CMakeLists.txt", 7, "outside-workspace")} <= found
 
 
 def test_xml_external_entities(tmp_path: Path) -> None:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from archlog import sandbox
 from archlog.extract.workspace import Workspace, share_dirs
 
 KINDS = ("msg", "srv", "action")
@@ -28,6 +29,6 @@ def message_files(workspace: Workspace) -> dict[str, tuple[str, Path]]:
 def _is_ament(manifest: Path) -> bool:
     """A ROS 2 package: its manifest names an ament build tool or build type."""
     try:
-        return "ament_" in manifest.read_text(errors="replace")
-    except OSError:
+        return "ament_" in sandbox.read_text(manifest, "build")
+    except sandbox.Refused:
         return False

@@ -97,12 +97,14 @@ class Workspace:
         return package.executables.get(exe) if package else None
 
     # -- indexing -----------------------------------------------------------------------
-    def _read(self, path: Path, kind: str) -> str | None:
-        """A package file's text, or None with a diagnostic when the sandbox refuses it."""
+    def _read(self, path: Path, kind: str, asker: tuple[Path, int] | None = None) -> str | None:
+        """A package file's text, or None with a diagnostic when the sandbox refuses it (at the
+        file:line that named it, else at the file)."""
         try:
             return sandbox.read_text(path, kind)
         except sandbox.Refused as exc:
-            self.diagnostics.add(self.display(path), 1, exc.code, f"not read: {exc}", "warning")
+            where, line = asker or (path, 1)
+            self.diagnostics.add(self.display(where), line, exc.code, f"not read: {exc}", "warning")
             return None
 
     def _index(self, manifest: Path) -> None:
@@ -157,10 +159,12 @@ class Workspace:
                                     and all(re.search(rf"\b{c}\b", own) for c in _node_classes(s))]
                     pending += package.links.get(library, [])
 
-    def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int) -> None:
-        """Read one CMakeLists.txt; add_subdirectory() folders inherit a copy of the variables."""
+    def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int,
+                   asker: tuple[Path, int] | None = None) -> None:
+        """Read one CMakeLists.txt (named at `asker`: an add_subdirectory() line); its
+        add_subdirectory() folders inherit a copy of the variables."""
         cmake = folder / "CMakeLists.txt"
-        if not cmake.is_file() or depth > 8 or (text := self._read(cmake, "build")) is None:
+        if not cmake.is_file() or depth > 8 or (text := self._read(cmake, "build", asker)) is None:
             return
         variables = {**variables, "CMAKE_CURRENT_SOURCE_DIR": str(folder)}
         cmds = commands(text, variables)
@@ -193,7 +197,7 @@ class Workspace:
                 package.include_dirs += [_under(folder, a) for a in c.args if a not in ("SYSTEM", "BEFORE", "AFTER")
                                          and "$" not in a]
             elif c.name == "add_subdirectory" and c.args:
-                self._cmake_dir(package, _under(folder, c.args[0]), variables, depth + 1)
+                self._cmake_dir(package, _under(folder, c.args[0]), variables, depth + 1, (cmake, c.line))
             elif c.name in ("catkin_install_python", "install") and "PROGRAMS" in c.args:
                 for arg in c.args[c.args.index("PROGRAMS") + 1:]:
                     if arg == "DESTINATION":
