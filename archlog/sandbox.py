@@ -51,7 +51,10 @@ class Sandbox:
     caps: Mapping[str, int] = field(default_factory=lambda: dict(SIZE_CAPS))
 
     def inside(self, path: Path | str) -> bool:
-        """Whether `path`, with every symlink resolved, lies under a root."""
+        """Whether `path`, with every symlink resolved, lies under a root (a path with a NUL byte
+        names no file)."""
+        if "\0" in str(path):
+            return False
         if self.roots is None:
             return True
         real = Path(os.path.realpath(path))
@@ -59,6 +62,8 @@ class Sandbox:
 
     def check(self, path: Path | str, kind: str = "source") -> Path:
         """`path` if archlog may read it as `kind`; raises `Refused` otherwise."""
+        if "\0" in str(path):
+            raise Refused("not-a-file", repr(str(path)), "a path with a NUL byte; not read")
         if not self.inside(path):
             raise Refused("outside-workspace", path, "outside the analysed paths; not read")
         try:

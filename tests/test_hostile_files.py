@@ -350,3 +350,32 @@ def test_invalid_utf8_everywhere(tmp_path: Path) -> None:
     assert ("demo/launch/bad.launch", 2, "launch-xml") in found  # as roslaunch, which rejects it too
     assert not {code for _f, _l, code in found} & {"launch-missing", "param-file", "model-read", "rviz-config",
                                                    "package-xml", "setup-cfg", "setup-py", "launch-yaml"}
+
+
+def test_includes_through_macros_and_nul_bytes(tmp_path: Path) -> None:
+    """An #include that takes a macro naming a FIFO or the secret, and strings with NUL bytes in
+    a Python launch file and a compile database."""
+    ws, out = tmp_path / "ws", Outside(tmp_path / "outside")
+    pkg = _package(ws)
+    pipe = fifo(pkg, out)
+    _write(pkg / "CMakeLists.txt", CMAKE)
+    _write(pkg / "src" / "node.cpp", f"""
+        #define PIPE "{pipe.path}"
+        #define STR(x) #x
+        #define SECRET(x) STR(x)
+        #include PIPE
+        #include SECRET({out.secret_file})
+        int main() {{}}
+        """)
+    _write(ws / "compile_commands.json", json.dumps([{"directory": str(pkg), "file": "src/node.cpp",
+                                                      "arguments": ["c++", "-I/tmp\0", "-c", "src/node.cpp"]}]))
+    _write(pkg / "launch" / "nul.launch.py", """
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            return LaunchDescription([Node(package="demo", executable="node", name=open("a\\0b").read())])
+        """)
+    found = _check(ws, out, "--launch", str(pkg / "launch" / "nul.launch.py"))
+    assert {("demo/src/node.cpp", 4, "not-a-file"), ("demo/src/node.cpp", 5, "outside-workspace"),
+            ("demo/launch/nul.launch.py", 5, "not-a-file")} <= found

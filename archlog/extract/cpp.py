@@ -311,11 +311,11 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
             blocked.append(str(path))
             continue
         texts.append(text)
+        dirs = [path.parent] + folders
+        blocked += _refused_includes([str(folder / name) for name in _named_files(text) for folder in dirs])
         for name in _INCLUDE.findall(text):
-            refused = _refused_includes([str(folder / name) for folder in [path.parent] + folders])
-            blocked += refused
-            found = env.find(name, [path.parent] + folders)
-            if refused and (found is None or str(found) in refused):
+            found = env.find(name, dirs)
+            if str(found) in blocked or found is None and any(str(folder / name) in blocked for folder in dirs):
                 continue
             if found is None:
                 ros1 = name.split("/", 1)[0] in DUAL and any((f / name).is_file() for f in folders if _ros1_system(f))
@@ -325,6 +325,21 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
                 queue.append(found)
     return _Scan(list(dict.fromkeys(missing)), list(dict.fromkeys(dual)), spelled_types(texts),
                  any(is_ros2(t) for t in texts), list(dict.fromkeys(blocked)))
+
+
+_ANY_INCLUDE = re.compile(r'^\s*#\s*(?:include|include_next|import)\s*[<"]([^>"\n]+)[>"]', re.M)
+_MACRO_INCLUDE = re.compile(r"^\s*#\s*(?:include|include_next|import)\s+[A-Za-z_]", re.M)
+_PATH_WORD = re.compile(r'"([^"\n]+)"|<([^<>\s]+)>|(?<![\w.])((?:\.\.?/|/)[\w./+-]+)')
+
+
+def _named_files(text: str) -> list[str]:
+    """The files a C++ text may include: the names its #include lines spell, and where an
+    #include takes a macro, every string, <name> or path-like word of the text (a macro may
+    make any of them the file)."""
+    names = _ANY_INCLUDE.findall(text)
+    if _MACRO_INCLUDE.search(text):
+        names += [next(g for g in m.groups() if g) for m in _PATH_WORD.finditer(text)]
+    return list(dict.fromkeys(names))
 
 
 def _refused_includes(candidates: list[str]) -> list[str]:
