@@ -176,7 +176,8 @@ def facts(paths, launches, args, models, rule_paths, config_path, profile, near_
 @_system_options
 @click.option("--format", "fmt", type=click.Choice(["table", "json", "csv"]), default="table", show_default=True)
 @click.argument("goal")
-def query(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, goal, fmt) -> None:
+def query(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, goal,
+          fmt) -> None:
     """Print every binding of the variables of GOAL (the last argument: a conjunction of literals such
     as 'publisher(P, N, T, _), not subscribed(T)') over the facts and derived relations."""
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
@@ -205,8 +206,8 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
 @click.option("--focus", help="Keep what is near this node, topic or service (its resolved name).")
 @click.option("--depth", type=click.IntRange(0, 20), default=2, show_default=True, help="Edges around --focus.")
 @click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write here instead of stdout.")
-def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus, depth,
-          output) -> None:
+def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus,
+          depth, output) -> None:
     """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
     from archlog.reports import graph as views
 
@@ -268,7 +269,8 @@ def observe_command(master_uri, output, write_models, node_info) -> None:
 @click.option("--observed", required=True, type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="A JSON file written by `archlog observe`.")
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
-def diff(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, observed, fmt) -> None:
+def diff(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, observed,
+         fmt) -> None:
     """Compare the recovered architecture with an observed one (exit 1 when they differ)."""
     from archlog import observe
 
@@ -299,7 +301,8 @@ def diff(paths, launches, args, models, rule_paths, config_path, profile, near_m
 @main.command()
 @_system_options
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
-def behavior(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt) -> None:
+def behavior(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env,
+             fmt) -> None:
     """Print each node's behavior: state, and the triggers, guards and required inputs of its outputs."""
     from archlog.reports.behavior import behavior_model, print_behavior
 

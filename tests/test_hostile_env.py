@@ -70,6 +70,15 @@ def python(prelude: str, package: str) -> Callable[[str], Case]:
     return build
 
 
+def py_opaque_function(name: str) -> Case:
+    """EnvironmentVariable performed in an OpaqueFunction: reported at the OpaqueFunction action."""
+    text = (PY_HEADER + "from launch.actions import OpaqueFunction\n\n\ndef setup(context):\n"
+            f"    package = 'pkg_' + EnvironmentVariable('{CANARY_ENV}', default_value='x').perform(context)\n"
+            f"    return [Node(package=package, executable='{name}', name='{name}')]\n\n\n"
+            "def generate_launch_description():\n    return LaunchDescription([OpaqueFunction(function=setup)])\n")
+    return Case(f"{name}.launch.py", text, len(text.splitlines()))
+
+
 def ros1_include(name: str) -> Case:
     text = (f'<launch>\n  <include file="$(dirname)/{name}_inner.xml">\n'
             f'    <arg name="pkg" value="pkg_$(env {CANARY_ENV})"/>\n  </include>\n</launch>\n')
@@ -80,7 +89,8 @@ CASES: dict[str, Callable[[str], Case]] = {
     "ros1_env": ros1(f'<node pkg="pkg_$(env {CANARY_ENV})" type="NAME" name="NAME"/>'),
     "ros1_optenv": ros1(f'<node pkg="pkg_$(optenv {CANARY_ENV} fallback)" type="NAME" name="NAME"/>'),
     "ros1_eval_env": ros1(f'<node pkg="$(eval \'pkg_\' + env(\'{CANARY_ENV}\'))" type="NAME" name="NAME"/>'),
-    "ros1_eval_optenv": ros1(f'<node pkg="$(eval \'pkg_\' + optenv(\'{CANARY_ENV}\', \'x\'))" type="NAME" name="NAME"/>'),
+    "ros1_eval_optenv": ros1(f'<node pkg="$(eval \'pkg_\' + optenv(\'{CANARY_ENV}\', \'x\'))" type="NAME" '
+                             'name="NAME"/>'),
     "ros1_arg_default": lambda name: Case(
         f"{name}.launch", f'<launch>\n  <arg name="p" default="pkg_$(env {CANARY_ENV})"/>\n'
         f'  <node pkg="$(arg p)" type="{name}" name="{name}"/>\n</launch>\n', 2),
@@ -88,6 +98,7 @@ CASES: dict[str, Callable[[str], Case]] = {
     "ros2_xml_env": ros2_xml,
     "ros2_yaml_env": ros2_yaml,
     "py_environment_variable": python("", f"['pkg_', EnvironmentVariable('{CANARY_ENV}', default_value='x')]"),
+    "py_opaque_function": py_opaque_function,
     "py_environ_index": python(f"value = os.environ['{CANARY_ENV}']  # READ", "'pkg_' + value"),
     "py_environ_get": python(f"value = os.environ.get('{CANARY_ENV}', 'x')  # READ", "'pkg_' + value"),
     "py_getenv": python(f"value = os.getenv('{CANARY_ENV}')  # READ", "'pkg_' + str(value)"),
@@ -106,7 +117,8 @@ def build_workspace(root: Path) -> dict[str, Case]:
     launch.mkdir(parents=True)
     (root / "src" / "demo" / "package.xml").write_text(PACKAGE_XML)
     (launch / "ros1_include_arg_inner.xml").write_text(
-        '<launch>\n  <arg name="pkg"/>\n  <node pkg="$(arg pkg)" type="ros1_include_arg" name="ros1_include_arg"/>\n</launch>\n')
+        '<launch>\n  <arg name="pkg"/>\n  <node pkg="$(arg pkg)" type="ros1_include_arg" name="ros1_include_arg"/>\n'
+        '</launch>\n')
     (launch / "allowed.launch").write_text('<launch>\n  <node pkg="pkg_$(env ROS_DISTRO)" type="t" name="allowed"/>\n'
                                            "</launch>\n")
     cases = {name: build(name) for name, build in CASES.items()}
@@ -128,7 +140,7 @@ def runs(tmp_path_factory: pytest.TempPathFactory) -> Runs:
     root = tmp_path_factory.mktemp("hostile_env")
     workspace, outside = root / "ws", Outside(root / "outside")
     cases = build_workspace(workspace)
-    launches = [f"--launch=src/demo/launch/{c.file}" for c in cases.values()] + ["--launch=src/demo/launch/allowed.launch"]
+    launches = [f"--launch=src/demo/launch/{file}" for file in [*(c.file for c in cases.values()), "allowed.launch"]]
     with pytest.MonkeyPatch.context() as patch:
         patch.setenv("ROS_DISTRO", DISTRO)
         hidden = {fmt: run_check(workspace, outside, *launches, fmt=fmt) for fmt in ("text", "json", "sarif")}

@@ -382,6 +382,8 @@ class Ros2Launch:
                 raise Unresolved(f"set under {ctx.condition}")
             value = perform(action.value or (), ctx)
             old = ctx.env.get(name)
+            if action.append and name not in ctx.env:
+                sandbox.not_given(name)  # appended to the value the machine would have
             if action.append and old:
                 if isinstance(old, UnknownArg):
                     raise Unresolved(old.reason)
