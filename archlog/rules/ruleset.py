@@ -10,6 +10,8 @@
     type_mismatch(T, S, SN, ST, P, PN, PT) :- ...
 
 A file without a header holds shared derived relations (a library, like prelude.lp).
+Rule files may come from the workspace under analysis, so they may not embed scripts (`#script`,
+which clingo would run as Python or Lua) nor read other files (`#include`).
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from archlog.diagnostics import SEVERITIES
 BUILTIN = Path(__file__).resolve().parent / "builtin"
 REQUIRED = ("id", "name", "severity", "finding", "location", "message", "summary")
 _HEAD = re.compile(r"^\s*(\w+)\s*\(([^()]*)\)\s*$")
+_FORBIDDEN = re.compile(r"#(script|include)\b")  # anywhere, comments and strings too: clingo never sees it
 
 
 class RuleError(Exception):
@@ -93,6 +96,11 @@ def load_rules(paths: list[Path], builtin: bool = True) -> RuleSet:
 
 
 def parse_rule_file(text: str, file: str) -> tuple[list[Rule], list[Program]]:
+    forbidden = _FORBIDDEN.search(text)
+    if forbidden:
+        line = text.count("\n", 0, forbidden.start()) + 1
+        raise RuleError(file, line, f"rule files may not contain {forbidden.group()} (archlog runs no code and "
+                        "reads no file a rule file names)", forbidden.start() - text.rfind("\n", 0, forbidden.start()))
     lines = text.splitlines()
     rules: list[Rule] = []
     programs: list[Program] = []
