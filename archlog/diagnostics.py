@@ -116,6 +116,9 @@ CODES: dict[str, Code] = {
                               "it belongs to the system."),
         "not-a-file": ("error", "A path that should be a file is a directory, device, FIFO or missing; it is not "
                        "read.", "Point the reference at a regular file."),
+        "env-not-given": ("note", "An environment variable was read that was not given (--env, [env] in "
+                          "archlog.toml, or the allow-list); it reads as unset. Only its name is shown.",
+                          "Pass it with --env NAME=VALUE if the system depends on it."),
         "too-large": ("error", "A file is over the size cap for its kind; it is not read.",
                       "Raise the cap (docs/security.md) if the file is honest."),
     }),
