@@ -18,7 +18,7 @@ from archlog import __version__
 from archlog.analysis import Analysis, ConfigError, analyse
 from archlog.config import Config
 from archlog.config import ConfigError as ConfigFileError
-from archlog.config import find_config, load_config
+from archlog.config import find_config, load_config, workspace_config
 from archlog.diagnostics import SEVERITIES
 from archlog.queries.session import QueryError, Result, Session
 from archlog.reports.codequality import to_codequality
@@ -84,6 +84,8 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
     """Configuration, rules (checked before the slow part), then the analysis, with a progress bar
     on a terminal. The environment is [env] of the configuration with --env over it."""
     config = load_config(config_path or find_config(list(paths)), profile)
+    if config_path is None and config.source is not None:
+        config = workspace_config(config)
     if threshold is not None:
         config.near_miss_threshold = threshold
     ruleset = load_rules([*config.rule_paths, *rule_paths])

@@ -138,6 +138,19 @@ def _budget(table: object, path: Path | None) -> dict[str, int]:
     return dict(table)
 
 
+def workspace_config(config: Config) -> Config:
+    """A configuration found next to the analysed paths is workspace content (it comes with the pull
+    request): its rule files must lie under its own folder, and its [budget] may lower limits but
+    not raise them. Give --config to use a trusted file as it is."""
+    assert config.source is not None
+    home = config.source.parent.resolve()
+    for rule_path in config.rule_paths:
+        if not rule_path.resolve().is_relative_to(home):
+            raise ConfigError(f"{config.source}: rule path {rule_path} is outside {home}; a configuration found "
+                              "in the workspace may only use rule files under its own folder (or pass --config)")
+    return replace(config, limits={kind: min(value, LIMITS[kind]) for kind, value in config.limits.items()})
+
+
 def _read(path: Path) -> dict:
     try:
         return tomllib.loads(path.read_text(encoding="utf-8"))

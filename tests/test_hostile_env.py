@@ -266,3 +266,26 @@ def test_a_rule_file_with_a_script_or_include_is_refused(tmp_path: Path, kind: s
     directive = "#include" if kind == "include_secret" else "#script"
     line = text.splitlines().index(next(t for t in text.splitlines() if t.startswith(directive))) + 1
     assert f"extra.lp:{line}:1: rule files may not contain {directive}" in run.output, run.output
+
+
+def test_a_workspace_configuration_cannot_raise_budgets_or_reach_outside(tmp_path: Path) -> None:
+    """archlog.toml found in the workspace is pull-request content: its [budget] only lowers limits,
+    and its rule files stay under its folder; the same file given with --config is trusted."""
+    from archlog.budget import LIMITS
+    from archlog.config import ConfigError, load_config, workspace_config
+
+    (tmp_path / "archlog.toml").write_text('[budget]\nelements = 999999999\ndepth = 8\n')
+    found = workspace_config(load_config(tmp_path / "archlog.toml", None))
+    assert found.limits == {"elements": LIMITS["elements"], "depth": 8}
+
+    outside = Outside(tmp_path / "outside")
+    (outside.root / "rules").mkdir()
+    (outside.root / "rules" / "r.lp").write_text("% nothing\n")
+    workspace = small_workspace(tmp_path / "ws", f'rules = ["{outside.root / "rules"}"]\n')
+    with pytest.raises(ConfigError, match="outside"):
+        workspace_config(load_config(workspace / "archlog.toml", None))
+    run = run_check(workspace, outside, "--launch=src/demo/launch/main.launch")
+    assert problems(run, outside) == [] and run.returncode == 2 and "is outside" in run.output, run.output
+    trusted = run_check(workspace, outside, "--launch=src/demo/launch/main.launch",
+                        f"--config={workspace / 'archlog.toml'}")
+    assert trusted.returncode in (0, 1), trusted.output
