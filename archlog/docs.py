@@ -25,6 +25,17 @@ def facts_markdown() -> str:
             lines += [f"### `{rel.name}({cols})`", "", rel.doc, "", "| column | type | meaning |", "|---|---|---|"]
             lines += [f"| {c.name} | {c.type} | {c.doc} |" for c in rel.columns]
             lines.append("")
+    lines += ["## derived by the shipped rules", "",
+              "Relations that the shipped rules derive and that archlog reads back (reports, finding lists) or that "
+              "your rules may use. Each is defined in the rule file named; findings of the shipped rules "
+              "(`near_miss/9`, ...) are described by their rule's `finding:` header in [rules.md](rules.md).", ""]
+    for rel in schema.DERIVED:
+        head = f"{rel.name}({', '.join(c.name for c in rel.columns)})" if rel.columns else rel.name
+        lines += [f"### `{head}`", "", f"{rel.doc} Defined in `archlog/rules/builtin/{rel.source}`.", ""]
+        if rel.columns:
+            lines += ["| column | type | meaning |", "|---|---|---|"]
+            lines += [f"| {c.name} | {c.type} | {c.doc} |" for c in rel.columns]
+            lines.append("")
     return "\n".join(lines)
 
 
