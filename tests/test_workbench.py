@@ -23,8 +23,8 @@ def archlog(*args: str | Path) -> subprocess.CompletedProcess:
 
 
 @pytest.mark.parametrize("folder", ["archlog/rules/builtin", "docs/examples/rules"])
-def test_rule_fixtures_match_their_expected_findings(folder: str) -> None:
-    result = archlog("test-rules", folder)
+def test_rule_fixtures_match_their_expected_findings(folder: str, update_goldens: bool) -> None:
+    result = archlog("test-rules", folder, *(["--update"] if update_goldens else []))
     assert result.returncode == 0, result.stdout
     assert "all passed" in result.stdout
 
