@@ -48,8 +48,16 @@ def rules_markdown() -> str:
     for r in rules:
         lines += [f"## {r.id}", "", f"**{r.name}** ({r.severity}, precision {r.precision}; tags: {', '.join(r.tags)})",
                   "", r.summary, "", r.description, "", "**How to fix**", "", r.help, "",
-                  f"Source: `archlog/rules/builtin/{Path(r.file).name}`", ""]
+                  f"Source: `archlog/rules/builtin/{Path(r.file).name}`; fixtures: "
+                  + ", ".join(f"`tests/{case.name}/`" for case in _fixtures(r)), ""]
     return "\n".join(lines)
+
+
+def _fixtures(rule) -> list[Path]:
+    """The rule's fixture folders: tests/<stem> and tests/<stem>__<suffix> next to its file."""
+    path = Path(rule.file)
+    return sorted(p for p in (path.parent / "tests").glob(f"{path.stem}*")
+                  if p.is_dir() and p.name.partition("__")[0] == path.stem)
 
 
 GENERATED = {"facts.md": facts_markdown, "rules.md": rules_markdown}

@@ -104,11 +104,13 @@ def relations_read_by_python() -> dict[tuple[str, int | None], str]:
             if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.args \
                     and isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str):
                 if node.func.attr == "by_signature" and re.fullmatch(r"[a-z]\w*", node.args[0].value):
-                    arity = node.args[1].value if len(node.args) > 1 and isinstance(node.args[1], ast.Constant) else None
+                    second = node.args[1] if len(node.args) > 1 else None
+                    arity = second.value if isinstance(second, ast.Constant) else None
                     found[(node.args[0].value, arity)] = where
                 elif node.func.attr == "query":
                     found.update({(name, None): where for name in _GOAL_RELATION.findall(node.args[0].value)})
-            elif isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "GOALS" for t in node.targets):
+            elif isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "GOALS"
+                                                      for t in node.targets):
                 for item in ast.walk(node.value):
                     if isinstance(item, ast.Constant) and isinstance(item.value, str):
                         found.update({(name, None): where for name in _GOAL_RELATION.findall(item.value)})
