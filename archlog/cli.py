@@ -319,7 +319,8 @@ def behavior(paths, launches, args, models, rule_paths, config_path, profile, ne
 
 @main.command("test-rules")
 @click.argument("folders", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False, path_type=Path))
-@click.option("--update", is_flag=True, help="Write the .expected files from the current results.")
+@click.option("--update", is_flag=True, help="Write the .expected files that differ from the current results "
+              "(each file written is named).")
 def test_rules(folders, update) -> None:
     """Run each rule's fixtures and compare with their .expected files (exit 1 on a difference)."""
     from archlog.queries.rule_tests import run_rule_tests

@@ -27,6 +27,17 @@ def facts_markdown() -> str:
             lines += [f"### `{rel.name}({cols})`", "", rel.doc, "", "| column | type | meaning |", "|---|---|---|"]
             lines += [f"| {c.name} | {c.type} | {c.doc} |" for c in rel.columns]
             lines.append("")
+    lines += ["## derived by the shipped rules", "",
+              "Relations that the shipped rules derive and that archlog reads back (reports, finding lists) or that "
+              "your rules may use. Each is defined in the rule file named; findings of the shipped rules "
+              "(`near_miss/9`, ...) are described by their rule's `finding:` header in [rules.md](rules.md).", ""]
+    for rel in schema.DERIVED:
+        head = f"{rel.name}({', '.join(c.name for c in rel.columns)})" if rel.columns else rel.name
+        lines += [f"### `{head}`", "", f"{rel.doc} Defined in `archlog/rules/builtin/{rel.source}`.", ""]
+        if rel.columns:
+            lines += ["| column | type | meaning |", "|---|---|---|"]
+            lines += [f"| {c.name} | {c.type} | {c.doc} |" for c in rel.columns]
+            lines.append("")
     return "\n".join(lines)
 
 
@@ -39,8 +50,16 @@ def rules_markdown() -> str:
     for r in rules:
         lines += [f"## {r.id}", "", f"**{r.name}** ({r.severity}, precision {r.precision}; tags: {', '.join(r.tags)})",
                   "", r.summary, "", r.description, "", "**How to fix**", "", r.help, "",
-                  f"Source: `archlog/rules/builtin/{Path(r.file).name}`", ""]
+                  f"Source: `archlog/rules/builtin/{Path(r.file).name}`; fixtures: "
+                  + ", ".join(f"`tests/{case.name}/`" for case in _fixtures(r)), ""]
     return "\n".join(lines)
+
+
+def _fixtures(rule) -> list[Path]:
+    """The rule's fixture folders: tests/<stem> and tests/<stem>__<suffix> next to its file."""
+    path = Path(rule.file)
+    return sorted(p for p in (path.parent / "tests").glob(f"{path.stem}*")
+                  if p.is_dir() and p.name.partition("__")[0] == path.stem)
 
 
 def diagnostics_markdown() -> str:
