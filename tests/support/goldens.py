@@ -3,7 +3,7 @@
 The golden files of the suite: the `findings` of every corpus `case.json`, the CodeQL-style
 `*.expected` files of corpus/python, corpus/cpp_ros1 and corpus/cpp_ros2, the `findings.expected`
 of every rule fixture (archlog/rules/builtin/tests, docs/examples/rules/tests; written by
-`archlog test-rules --update`), and the generated docs/facts.md and docs/rules.md. Each is
+`archlog test-rules --update`), and the generated docs (docs/facts.md, docs/rules.md, docs/diagnostics.md). Each is
 rewritten only when it differs; review the diff before committing.
 """
 
