@@ -1,0 +1,382 @@
+"""Oracle 2 (issue 17): archlog's recovery against architectures recorded while real ROS systems ran.
+
+The public repository cmu-rss-lab/rosdiscover-evaluation (the ROSDiscover study) launched each
+subject in simulation, read the ROS master (`observed.architecture.yml`) and recovered the same
+system with its own static tool (`recovered.architecture.yml`). This script recovers the subjects
+with archlog and scores archlog and the study's tool against the observation with the study's
+metric: per kind, ports missing from the recovery (under-approximation) and ports only in the
+recovery (over-approximation), BOTH divided by the observed count.
+
+    python bench/eval_recovery.py materialize --meta DIR --mirrors /work/.mirror --out /work/evalsrc
+    python bench/eval_recovery.py score --meta DIR --evalsrc /work/evalsrc [--json bench/results/...]
+
+`--meta DIR` holds one folder per subject with the study's `experiment.yml`, `pkgs.rosinstall`,
+`observed.architecture.yml` and `recovered.architecture.yml` (copied out of the study's repository
+with `git show HEAD:experiments/recovery/subjects/SUBJECT/FILE`). `materialize` checks out every
+rosinstall entry whose repository has a local bare mirror (`MIRRORS/owner+name/repo`) at the
+listed version into `EVALSRC/SUBJECT/src/LOCAL-NAME` (the sources are never committed); entries
+without a mirror are listed. `score` runs `archlog.analysis.analyse` on `EVALSRC/SUBJECT/src`
+with the launch files and the environment of `experiment.yml` (the CLI has no `--env`; the Python
+API takes `env=`), turns the facts into an `archlog.observe.Architecture` and scores.
+
+What is compared (the same for all three sides):
+
+* ports are (node, name) pairs: publishers and subscribers by topic, services by service name;
+  types are left out (the master keeps one type per topic, and the study's files spell types in
+  several ways, e.g. `sensor_msgs::JointState`);
+* infrastructure is left out, as `archlog observe` does: /rosout, /rosout_agg, /clock, the
+  logger services; also nodelet bond topics (`MANAGER/bond`: the nodelet loader's own traffic);
+  and the `rostopic pub` node the study's run script started (not part of the launch files);
+* a nodelet's ports are credited to its manager (`nodelet(N, Plugin, Manager)` facts), because the
+  master sees them on the manager process; the loader node itself stays a node;
+* a ros_control controller's ports (archlog makes one instance per controller a spawner starts)
+  are credited to the node that hosts the controller manager: /gazebo (gzserver with
+  gazebo_ros_control) when the configuration runs gazebo_ros/gzserver;
+* an action server or client is expanded into its five topics (goal, cancel subscribed; status,
+  feedback, result published by the server, reversed for a client), as the master sees them,
+  unless the recovery already lists them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import io
+import json
+import subprocess
+import sys
+import tarfile
+import time
+from collections import defaultdict
+from pathlib import Path
+
+import yaml
+
+SUBJECTS = ("husky", "turtlebot")
+KINDS = ("nodes", "publishers", "subscribers", "services")
+INFRA_TOPICS = frozenset({"/rosout", "/rosout_agg", "/clock"})
+LOGGER_SERVICES = ("get_loggers", "set_logger_level")
+
+# Repositories missing from the mirrors, with a stand-in: (owner/name, ref) -> (owner/name, ref).
+STAND_INS = {
+    # The release repository is not available; its upstream tag 0.1.3 is the released source.
+    "ros-teleop/teleop_twist_joy-release": ("ros-teleop/teleop_twist_joy", lambda ref: ref.rsplit("/", 1)[-1].split("-")[0]),
+    # The release repository is not available (the listed commit 2b7361c is a release-repo commit);
+    # the husky subject was built for melodic, where LMS1xx was released as 0.2.0.
+    "clearpath-gbp/lms1xx-release": ("clearpathrobotics/LMS1xx", lambda _ref: "0.2.0"),
+}
+
+
+# ----------------------------------------------------------------------------------------------
+# materialize
+
+
+def rosinstall_entries(path: Path) -> list[dict]:
+    """(local name, owner/name, ref) for every entry of a rosinstall file."""
+    out = []
+    for item in yaml.safe_load(path.read_text()):
+        kind, spec = next(iter(item.items()))
+        uri = spec["uri"]
+        repo_path = uri.split("github.com/", 1)[1]
+        if kind == "tar":
+            repo, _, ref = repo_path.partition("/archive/")
+            ref = ref.removesuffix(".tar.gz")
+        else:
+            repo, ref = repo_path.removesuffix(".git"), str(spec["version"])
+        out.append({"local": spec["local-name"], "repo": repo, "ref": ref})
+    return out
+
+
+def mirror_dir(mirrors: Path, repo: str) -> Path | None:
+    base = mirrors / repo.replace("/", "+") / "repo"
+    for candidate in (base / ".git", base):
+        if (candidate / "HEAD").exists():
+            return candidate
+    return None
+
+
+def _checkout_files(git: Path, ref: str, target: Path) -> list[str]:
+    """Check out `ref` file by file, skipping blobs the snapshot lacks; returns the skipped paths."""
+    listing = subprocess.run(["git", "--git-dir", str(git), "ls-tree", "-r", "-z", ref], capture_output=True,
+                             check=True).stdout.decode().split("\0")
+    skipped = []
+    for line in filter(None, listing):
+        meta, path = line.split("\t", 1)
+        mode, kind, sha = meta.split()
+        if kind != "blob":
+            continue
+        blob = subprocess.run(["git", "--git-dir", str(git), "cat-file", "blob", sha], capture_output=True)
+        if blob.returncode:
+            skipped.append(path)
+            continue
+        out = target / path
+        out.parent.mkdir(parents=True, exist_ok=True)
+        if mode == "120000":
+            out.symlink_to(blob.stdout.decode())
+        else:
+            out.write_bytes(blob.stdout)
+    return skipped
+
+
+def materialize(meta: Path, mirrors: Path, out: Path) -> dict:
+    report = {}
+    for subject in SUBJECTS:
+        entries = rosinstall_entries(meta / subject / "pkgs.rosinstall")
+        done, absent, notes = [], [], []
+        for entry in entries:
+            repo, ref = entry["repo"], entry["ref"]
+            git = mirror_dir(mirrors, repo)
+            if git is None and repo in STAND_INS:
+                stand_in, ref_of = STAND_INS[repo]
+                git, ref = mirror_dir(mirrors, stand_in), ref_of(ref)
+                if git is not None:
+                    notes.append(f"{entry['local']}: {repo} not available, used {stand_in} at {ref}")
+            if git is None:
+                absent.append(entry["local"])
+                continue
+            target = out / subject / "src" / entry["local"]
+            if target.exists():
+                done.append(entry["local"])
+                continue
+            archive = subprocess.run(["git", "--git-dir", str(git), "archive", "--format=tar", ref],
+                                     capture_output=True)
+            if archive.returncode and "invalid object" in archive.stderr.decode():
+                skipped = _checkout_files(git, ref, target)  # large blobs absent from the snapshot
+                notes.append(f"{entry['local']}: {len(skipped)} large files absent from the snapshot: "
+                             f"{', '.join(skipped[:3])}{' ...' if len(skipped) > 3 else ''}")
+                done.append(entry["local"])
+                continue
+            if archive.returncode:
+                notes.append(f"{entry['local']}: {ref} missing in {repo}: {archive.stderr.decode().strip()}")
+                absent.append(entry["local"])
+                continue
+            target.mkdir(parents=True)
+            with tarfile.open(fileobj=io.BytesIO(archive.stdout)) as tar:
+                tar.extractall(target, filter="data")
+            done.append(entry["local"])
+        report[subject] = {"materialized": done, "absent": absent, "notes": notes}
+        print(f"{subject}: {len(done)} of {len(entries)} rosinstall entries checked out, {len(absent)} without a mirror")
+        for note in notes:
+            print(f"  note: {note}")
+    return report
+
+
+# ----------------------------------------------------------------------------------------------
+# the three sides in one shape: {kind: set of (node, name)} plus nodes
+
+
+def _empty() -> dict[str, set]:
+    return {k: set() for k in KINDS}
+
+
+def _keep_topic(topic: str) -> bool:
+    return topic not in INFRA_TOPICS and not topic.endswith("/bond")
+
+
+def _keep_service(node: str, service: str) -> bool:
+    return service not in {f"{node}/{x}" for x in LOGGER_SERVICES}
+
+
+def _action_topics(node: str, action: str, server: bool, arch: dict[str, set]) -> None:
+    base = action.rstrip("/")
+    ins, outs = ("goal", "cancel"), ("status", "feedback", "result")
+    for suffix in ins:
+        arch["subscribers" if server else "publishers"].add((node, f"{base}/{suffix}"))
+    for suffix in outs:
+        arch["publishers" if server else "subscribers"].add((node, f"{base}/{suffix}"))
+
+
+def from_study_yaml(path: Path) -> dict[str, set]:
+    """An architecture file of the study (observed or recovered) in the compared shape."""
+    arch = _empty()
+    for node in yaml.safe_load(path.read_text()):
+        name = node["fullname"]
+        if name.startswith("/rostopic_"):  # the run script's `rostopic pub`
+            continue
+        arch["nodes"].add(name)
+        for kind, key in (("publishers", "pubs"), ("subscribers", "subs")):
+            for port in node.get(key) or []:
+                if _keep_topic(port["name"]):
+                    arch[kind].add((name, port["name"]))
+        for port in node.get("provides") or []:
+            if _keep_service(name, port["name"]):
+                arch["services"].add((name, port["name"]))
+        for port in node.get("action-servers") or []:
+            _action_topics(name, port["name"], True, arch)
+        for port in node.get("action-clients") or []:
+            _action_topics(name, port["name"], False, arch)
+    return arch
+
+
+def recover(subject_src: Path, launches: list[str], env: dict[str, str]) -> tuple[dict, dict]:
+    """archlog's recovery of one subject, in the compared shape, and what went with it."""
+    from archlog import names
+    from archlog.analysis import analyse
+    from archlog.values import Unknown
+
+    start = time.perf_counter()
+    analysis = analyse([subject_src], launches, {}, [], env=env)
+    seconds = time.perf_counter() - start
+    store = analysis.store
+    nodes = {str(r[0]): (r[1], r[2]) for r in store.rows("node")}
+    host: dict[str, str] = {}
+    for node, _plugin, manager in store.rows("nodelet"):
+        if manager:
+            host[str(node)] = names.resolve(str(manager), names.namespace_of(str(node)), str(node)) \
+                if not str(manager).startswith("/") else str(manager)
+    controller_host = next((n for n, kind in nodes.items() if kind == ("gazebo_ros", "gzserver")), None)
+    controller_pkgs = {n for n in _controller_instances(analysis)}
+    if controller_host:
+        for node in controller_pkgs:
+            host[node] = controller_host
+    arch = _empty()
+    arch["nodes"] = {n for n in nodes if n not in controller_pkgs}
+    unknown_ports = defaultdict(list)
+
+    def owner(node) -> str:  # noqa: ANN001
+        return host.get(str(node), str(node))
+
+    for kind, relation in (("publishers", "publisher"), ("subscribers", "subscriber")):
+        for _p, node, topic, _ty in store.rows(relation):
+            if isinstance(topic, Unknown):
+                unknown_ports[str(node)].append(f"{relation} {topic}")
+            elif _keep_topic(topic):
+                arch[kind].add((owner(node), topic))
+    for _p, node, service, _ty in store.rows("service_server"):
+        if isinstance(service, Unknown):
+            unknown_ports[str(node)].append(f"service_server {service}")
+        elif _keep_service(str(node), service):
+            arch["services"].add((owner(node), service))
+    for relation, server in (("action_server", True), ("action_client", False)):
+        for _p, node, action, _ty in store.rows(relation):
+            if not isinstance(action, Unknown):
+                _action_topics(owner(node), action, server, arch)
+    incomplete = defaultdict(list)
+    for node, reason in store.rows("node_incomplete"):
+        incomplete[str(node)].append(str(reason))
+    diagnostics = [{"file": str(d.file), "line": d.line, "code": d.code, "severity": d.severity,
+                    "message": d.message} for d in analysis.diagnostics.items]
+    extra = {"seconds": round(seconds, 1), "node_kinds": {n: list(k) for n, k in nodes.items()},
+             "credited": host, "unknown_ports": dict(unknown_ports), "incomplete": dict(incomplete),
+             "diagnostics": diagnostics}
+    return arch, extra
+
+
+def _controller_instances(analysis) -> set[str]:  # noqa: ANN001
+    from archlog.extract.controllers import controller_nodes
+    from archlog.diagnostics import DiagnosticSink
+    return {n.name for n in controller_nodes(analysis.config, DiagnosticSink())}
+
+
+# ----------------------------------------------------------------------------------------------
+# scoring
+
+
+def score(recovered: dict[str, set], observed: dict[str, set]) -> dict:
+    out = {}
+    for kind in KINDS:
+        ours, theirs = recovered[kind], observed[kind]
+        missing, extra = sorted(theirs - ours), sorted(ours - theirs)
+        out[kind] = {"observed": len(theirs), "recovered": len(ours), "missing": len(missing), "extra": len(extra),
+                     "under": round(100 * len(missing) / len(theirs), 1) if theirs else 0.0,
+                     "over": round(100 * len(extra) / len(theirs), 1) if theirs else 0.0,
+                     "missing_ports": missing, "extra_ports": extra}
+    ports = [k for k in KINDS if k != "nodes"]
+    obs = sum(out[k]["observed"] for k in ports)
+    miss, ext = sum(out[k]["missing"] for k in ports), sum(out[k]["extra"] for k in ports)
+    out["ports"] = {"observed": obs, "recovered": sum(out[k]["recovered"] for k in ports), "missing": miss,
+                    "extra": ext, "under": round(100 * miss / obs, 1), "over": round(100 * ext / obs, 1)}
+    return out
+
+
+def by_node(pairs, kind: str) -> dict[str, list[str]]:  # noqa: ANN001
+    grouped = defaultdict(list)
+    for node, name in pairs:
+        grouped[node].append(f"{kind[:3]} {name}")
+    return grouped
+
+
+def print_table(results: dict) -> None:
+    print(f"\n{'subject':10} {'kind':12} {'obs':>4} | {'archlog rec':>11} {'miss':>5} {'extra':>5} {'under%':>7} "
+          f"{'over%':>6} | {'study rec':>9} {'miss':>5} {'extra':>5} {'under%':>7} {'over%':>6}")
+    for subject, res in results.items():
+        for kind in (*KINDS, "ports"):
+            a, s = res["archlog"][kind], res["study"][kind]
+            print(f"{subject:10} {kind:12} {a['observed']:>4} | {a['recovered']:>11} {a['missing']:>5} {a['extra']:>5} "
+                  f"{a['under']:>7} {a['over']:>6} | {s['recovered']:>9} {s['missing']:>5} {s['extra']:>5} "
+                  f"{s['under']:>7} {s['over']:>6}")
+
+
+def print_differences(subject: str, tool: str, res: dict) -> None:
+    for label, key in (("missing", "missing_ports"), ("extra", "extra_ports")):
+        grouped = defaultdict(list)
+        for kind in KINDS:
+            if kind == "nodes":
+                for node in res[kind][key]:
+                    grouped[node].insert(0, "NODE")
+                continue
+            for node, items in by_node(res[kind][key], kind).items():
+                grouped[node].extend(items)
+        print(f"\n{subject} / {tool}: {label} ({sum(len(v) for v in grouped.values())})")
+        for node in sorted(grouped):
+            print(f"  {node}: {', '.join(grouped[node])}")
+
+
+def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[str]) -> None:
+    results, extras = {}, {}
+    for subject in subjects:
+        experiment = yaml.safe_load((meta / subject / "experiment.yml").read_text())
+        src = evalsrc / subject / "src"
+        launches = [str(src / Path(p).relative_to("/ros_ws/src")) for p in experiment["launches"]]
+        env = {k: str(v).replace("/ros_ws/src", str(src)) for k, v in (experiment.get("environment") or {}).items()}
+        observed = from_study_yaml(meta / subject / "observed.architecture.yml")
+        study = from_study_yaml(meta / subject / "recovered.architecture.yml")
+        ours, extra = recover(src, launches, env)
+        results[subject] = {"archlog": score(ours, observed), "study": score(study, observed)}
+        extras[subject] = extra
+        print(f"{subject}: archlog took {extra['seconds']} s, {len(extra['diagnostics'])} diagnostics")
+    print_table(results)
+    for subject, res in results.items():
+        for tool in ("archlog", "study"):
+            print_differences(subject, tool, res[tool])
+        extra = extras[subject]
+        print(f"\n{subject}: archlog nodes with unknown port names: {json.dumps(extra['unknown_ports'], indent=1)}")
+        print(f"{subject}: archlog incomplete nodes: {json.dumps(extra['incomplete'], indent=1)}")
+        print(f"{subject}: ports credited to another node: {json.dumps(extra['credited'], indent=1)}")
+        codes = defaultdict(int)
+        for d in extra["diagnostics"]:
+            codes[(d["severity"], d["code"])] += 1
+        print(f"{subject}: diagnostics by code: {dict(sorted(codes.items()))}")
+    if json_out:
+        json_out.parent.mkdir(parents=True, exist_ok=True)
+        small = {s: {tool: {k: {f: v for f, v in r[tool][k].items()} for k in (*KINDS, "ports")}
+                     for tool in ("archlog", "study")} | {"seconds": extras[s]["seconds"]}
+                 for s, r in results.items()}
+        json_out.write_text(json.dumps(small, indent=1, default=list) + "\n")
+        print(f"\nwrote {json_out}")
+    if extras and (debug := evalsrc / "archlog-extras.json"):
+        debug.write_text(json.dumps(extras, indent=1, default=str))
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    m = sub.add_parser("materialize")
+    m.add_argument("--meta", type=Path, required=True)
+    m.add_argument("--mirrors", type=Path, default=Path("/work/.mirror"))
+    m.add_argument("--out", type=Path, default=Path("/work/evalsrc"))
+    s = sub.add_parser("score")
+    s.add_argument("--meta", type=Path, required=True)
+    s.add_argument("--evalsrc", type=Path, default=Path("/work/evalsrc"))
+    s.add_argument("--json", type=Path)
+    s.add_argument("--subject", action="append", choices=SUBJECTS)
+    options = parser.parse_args(argv)
+    if options.command == "materialize":
+        report = materialize(options.meta, options.mirrors, options.out)
+        (options.out / "materialized.json").write_text(json.dumps(report, indent=1) + "\n")
+    else:
+        run_score(options.meta, options.evalsrc, options.json, options.subject or list(SUBJECTS))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
