@@ -29,6 +29,9 @@ What is compared (the same for all three sides):
   and the `rostopic pub` node the study's run script started (not part of the launch files);
 * a nodelet's ports are credited to its manager (`nodelet(N, Plugin, Manager)` facts), because the
   master sees them on the manager process; the loader node itself stays a node;
+* archlog gives a robot description's gazebo plugin ports to the `spawn_model` instance that
+  inserts the model; they are credited to gzserver, where they run (spawn_model's own ports too:
+  the master sees spawn_model only while it runs, and the observation was taken later);
 * a ros_control controller's ports (archlog makes one instance per controller a spawner starts)
   are credited to the node that hosts the controller manager: /gazebo (gzserver with
   gazebo_ros_control) when the configuration runs gazebo_ros/gzserver;
@@ -42,6 +45,7 @@ from __future__ import annotations
 import argparse
 import io
 import json
+import os
 import subprocess
 import sys
 import tarfile
@@ -207,14 +211,25 @@ def from_study_yaml(path: Path) -> dict[str, set]:
     return arch
 
 
-def recover(subject_src: Path, launches: list[str], env: dict[str, str]) -> tuple[dict, dict]:
+def recover(subject_src: Path, launches: list[str], env: dict[str, str], models: list[Path]) -> tuple[dict, dict]:
     """archlog's recovery of one subject, in the compared shape, and what went with it."""
     from archlog import names
     from archlog.analysis import analyse
     from archlog.values import Unknown
 
     start = time.perf_counter()
-    analysis = analyse([subject_src], launches, {}, [], env=env)
+    # `analyse(env=...)` sets the sandbox's environment, but in this version the ROS 1 launch
+    # interpreter's $(env)/$(optenv) read os.environ (SubstContext's default), so set both.
+    saved = {k: os.environ.get(k) for k in env}
+    os.environ.update(env)
+    try:
+        analysis = analyse([subject_src], launches, {}, models, env=env)
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
     seconds = time.perf_counter() - start
     store = analysis.store
     nodes = {str(r[0]): (r[1], r[2]) for r in store.rows("node")}
@@ -228,6 +243,11 @@ def recover(subject_src: Path, launches: list[str], env: dict[str, str]) -> tupl
     if controller_host:
         for node in controller_pkgs:
             host[node] = controller_host
+        # archlog gives a robot description's gazebo plugin ports to the spawn_model instance
+        # that inserts it; they run inside gzserver.
+        for node, kind in nodes.items():
+            if kind == ("gazebo_ros", "spawn_model"):
+                host[node] = controller_host
     arch = _empty()
     arch["nodes"] = {n for n in nodes if n not in controller_pkgs}
     unknown_ports = defaultdict(list)
@@ -295,15 +315,18 @@ def by_node(pairs, kind: str) -> dict[str, list[str]]:  # noqa: ANN001
     return grouped
 
 
+TOOLS = ("archlog", "archlog+models", "study")
+
+
 def print_table(results: dict) -> None:
-    print(f"\n{'subject':10} {'kind':12} {'obs':>4} | {'archlog rec':>11} {'miss':>5} {'extra':>5} {'under%':>7} "
-          f"{'over%':>6} | {'study rec':>9} {'miss':>5} {'extra':>5} {'under%':>7} {'over%':>6}")
+    head = " | ".join(f"{t:>14} {'miss':>4} {'extra':>5} {'under%':>6} {'over%':>6}" for t in TOOLS)
+    print(f"\n{'subject':10} {'kind':12} {'obs':>4} | {head}")
     for subject, res in results.items():
         for kind in (*KINDS, "ports"):
-            a, s = res["archlog"][kind], res["study"][kind]
-            print(f"{subject:10} {kind:12} {a['observed']:>4} | {a['recovered']:>11} {a['missing']:>5} {a['extra']:>5} "
-                  f"{a['under']:>7} {a['over']:>6} | {s['recovered']:>9} {s['missing']:>5} {s['extra']:>5} "
-                  f"{s['under']:>7} {s['over']:>6}")
+            cells = " | ".join(f"{r['recovered']:>14} {r['missing']:>4} {r['extra']:>5} {r['under']:>6} {r['over']:>6}"
+                               for r in (res[t][kind] for t in TOOLS))
+            print(f"{subject:10} {kind:12} {res['archlog'][kind]['observed']:>4} | {cells}")
+    print("(recovered = ports recovered; under% = missing / observed; over% = extra / observed)")
 
 
 def print_differences(subject: str, tool: str, res: dict) -> None:
@@ -322,6 +345,8 @@ def print_differences(subject: str, tool: str, res: dict) -> None:
 
 
 def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[str]) -> None:
+    from archlog.analysis import BUILTIN_DIR
+    shipped = sorted(Path(BUILTIN_DIR).glob("*.yaml"))
     results, extras = {}, {}
     for subject in subjects:
         experiment = yaml.safe_load((meta / subject / "experiment.yml").read_text())
@@ -330,31 +355,42 @@ def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[s
         env = {k: str(v).replace("/ros_ws/src", str(src)) for k, v in (experiment.get("environment") or {}).items()}
         observed = from_study_yaml(meta / subject / "observed.architecture.yml")
         study = from_study_yaml(meta / subject / "recovered.architecture.yml")
-        ours, extra = recover(src, launches, env)
-        results[subject] = {"archlog": score(ours, observed), "study": score(study, observed)}
-        extras[subject] = extra
-        print(f"{subject}: archlog took {extra['seconds']} s, {len(extra['diagnostics'])} diagnostics")
+        ours, extra = recover(src, launches, env, [])
+        # The same, with archlog's shipped models passed as --model: user models take precedence
+        # over what is extracted from sources, so a modelled node keeps its model even when its
+        # package's source (whose ports may live in a linked library) is in the workspace.
+        modelled, extra_m = recover(src, launches, env, shipped)
+        results[subject] = {"archlog": score(ours, observed), "archlog+models": score(modelled, observed),
+                            "study": score(study, observed)}
+        extras[subject] = extra | {"with_models": {k: v for k, v in extra_m.items() if k != "node_kinds"}}
+        print(f"{subject}: archlog took {extra['seconds']} s ({extra_m['seconds']} s with models), "
+              f"{len(extra['diagnostics'])} diagnostics")
+        reported = meta / subject / "observed.recoverd.compare.csv"
+        if reported.exists():
+            rows = [r.split(",") for r in reported.read_text().splitlines() if r.startswith(f"{subject},all,")]
+            print(f"  the study's own reported numbers (its own filtering, kind: observed recovered missing extra):")
+            for r in rows:
+                print(f"    {r[2]}: {' '.join(r[3:7])}")
     print_table(results)
     for subject, res in results.items():
-        for tool in ("archlog", "study"):
+        for tool in TOOLS:
             print_differences(subject, tool, res[tool])
         extra = extras[subject]
         print(f"\n{subject}: archlog nodes with unknown port names: {json.dumps(extra['unknown_ports'], indent=1)}")
         print(f"{subject}: archlog incomplete nodes: {json.dumps(extra['incomplete'], indent=1)}")
         print(f"{subject}: ports credited to another node: {json.dumps(extra['credited'], indent=1)}")
-        codes = defaultdict(int)
+        print(f"{subject}: archlog's diagnostics:")
         for d in extra["diagnostics"]:
-            codes[(d["severity"], d["code"])] += 1
-        print(f"{subject}: diagnostics by code: {dict(sorted(codes.items()))}")
+            print(f"  {d['file']}:{d['line']}: {d['severity']} {d['code']}: {d['message'][:300]}")
     if json_out:
         json_out.parent.mkdir(parents=True, exist_ok=True)
-        small = {s: {tool: {k: {f: v for f, v in r[tool][k].items()} for k in (*KINDS, "ports")}
-                     for tool in ("archlog", "study")} | {"seconds": extras[s]["seconds"]}
+        small = {s: {tool: {k: dict(r[tool][k]) for k in (*KINDS, "ports")} for tool in TOOLS}
+                 | {"seconds": extras[s]["seconds"],
+                    "diagnostics": sorted({f"{d['severity']} {d['code']}" for d in extras[s]["diagnostics"]})}
                  for s, r in results.items()}
         json_out.write_text(json.dumps(small, indent=1, default=list) + "\n")
         print(f"\nwrote {json_out}")
-    if extras and (debug := evalsrc / "archlog-extras.json"):
-        debug.write_text(json.dumps(extras, indent=1, default=str))
+    (evalsrc / "archlog-extras.json").write_text(json.dumps(extras, indent=1, default=str))
 
 
 def main(argv: list[str] | None = None) -> int:
