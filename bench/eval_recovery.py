@@ -288,6 +288,88 @@ def _controller_instances(analysis) -> set[str]:  # noqa: ANN001
 
 
 # ----------------------------------------------------------------------------------------------
+# why archlog misses what it misses (checked by hand against the sources, 2026-11; a port that
+# matches no pattern is printed as "unclassified", so new misses and fixed causes both show)
+
+CAUSES = {
+    "linked-library": "the node's code is in a catkin library the executable links (add_library + "
+                      "target_link_libraries); archlog reads only the executable's own sources. No diagnostic.",
+    "no-extension": "add_executable(${PROJECT_NAME} src/marker_server) names its source without the .cpp "
+                    "extension; the executable gets no source file and no ports. No diagnostic.",
+    "plugin-unmodelled": "a robot-description gazebo plugin that archlog's plugin table does not know "
+                         "(libhector_gazebo_ros_imu.so, libhector_gazebo_ros_gps.so); no diagnostic, since only "
+                         "libgazebo_ros* plugins are reported as unmodelled.",
+    "xacro-unprefixed": "the turtlebot description calls its macros without the xacro: prefix (<kobuki/>, "
+                        "<sensor_kinect/>); the xacro 2.x library leaves them unexpanded, so the description has "
+                        "no <plugin> at all (libgazebo_ros_kobuki.so, libgazebo_ros_openni_kinect.so, neither "
+                        "modelled anyway). No diagnostic.",
+    "ros-control-plugin": "libgazebo_ros_control.so has no ports in archlog's plugin table: the controller "
+                          "manager's services it advertises inside gzserver are missing.",
+    "gazebo-model": "gzserver's ROS API plugin advertises more than archlog/models/gazebo_ros.yaml lists "
+                    "(light/joint/link property services, its own dynamic_reconfigure server).",
+    "model-condition": "archlog/models/diff_drive_controller.yaml publishes /tf only if ~enable_odom_tf; the "
+                       "controller advertises /tf unconditionally (diff_drive_controller.cpp:727), so the master "
+                       "sees it even with enable_odom_tf: false (husky control.yaml).",
+    "param-list": "topic names read at run time from a parameter list or a YAML file (twist_mux ~topics/~locks "
+                  "iterated from XmlRpc; cmd_vel_mux's yaml_cfg_file parsed with yaml-cpp).",
+    "nh-across": "a NodeHandle handed to another object and used there: kobuki SafetyController(nh, name) "
+                 "stores it and subscribes in init() in safety_controller.hpp; VelocitySmoother::init(ph) is "
+                 "called through a pointer member (and its generated paramsConfig.h is missing).",
+    "updater-member": "twist_mux's diagnostic_updater::Updater is a member of TwistMuxDiagnostics, built with "
+                      "boost::make_shared in twist_mux.cpp and constructed in twist_mux_diagnostics.cpp; the "
+                      "Updater's implicit /diagnostics publisher is not seen through the member.",
+    "nh-reference": "`ros::NodeHandle &nh = this->getPrivateNodeHandle()` (a reference) is resolved as the "
+                    "global namespace: /active instead of /cmd_vel_mux/active (an extra and a miss).",
+    "no-compile": "the C++ does not compile here (rosbag/bag.h, yaml-cpp, generated dynamic_reconfigure "
+                  "headers missing) and the token fallback misses calls on members of unresolved types "
+                  "(amcl's diagnostic_updater, kinetic amcl's tf::TransformListener).",
+    "image-transport": "image_transport plugin topics (compressed, compressedDepth, theora and their "
+                       "dynamic_reconfigure servers) and the camera plugin's own ports are not modelled.",
+    "move-base-model": "move_base model approximations (its header says so): layer and planner plugins' "
+                       "dynamic_reconfigure servers, obstacle-layer observation sources, DWA clouds, footprint "
+                       "subscriptions.",
+    "camera-info": "archlog/models/depthimage_to_laserscan.yaml subscribes camera_info at the node's namespace; "
+                   "image_transport's subscribeCamera takes it next to the (remapped) image topic "
+                   "(/camera/depth/camera_info).",
+}
+
+# (subject or "", tool or "", node regex, port regex, cause); first match wins.
+CAUSE_PATTERNS = [
+    ("husky", "", "/gazebo", r"/(imu|navsat)/", "plugin-unmodelled"),
+    ("", "", "/gazebo", r"/controller_manager/", "ros-control-plugin"),
+    ("", "", "/gazebo", r"/gazebo/", "gazebo-model"),
+    ("husky", "", "/gazebo", r"/tf$", "model-condition"),
+    ("turtlebot", "", "/gazebo", r".", "xacro-unprefixed"),
+    ("", "", "/twist_marker_server", r".", "no-extension"),
+    ("", "archlog", "/(ekf_localization|joy_teleop/teleop_twist_joy|robot_state_publisher)", r".", "linked-library"),
+    ("husky", "archlog", "/move_base", r".", "linked-library"),
+    ("turtlebot", "archlog", "/move_base", r"^/move_base/(goal|current_goal|feedback|result|status|cancel)$|"
+     r"^/move_base_simple/goal$|^/move_base/(make_plan|clear_costmaps|parameter_\w+|set_parameters)$|"
+     r"^/navigation_velocity_smoother/raw_cmd_vel$", "linked-library"),
+    ("turtlebot", "archlog", "/move_base", r".", "linked-library"),
+    ("", "", "/twist_mux", r"/diagnostics", "updater-member"),
+    ("", "", "/twist_mux", r".", "param-list"),
+    ("", "", "/amcl", r".", "no-compile"),
+    ("", "", "/move_base", r".", "move-base-model"),
+    ("", "", "/\w+_nodelet_manager", r"_nodelet_manager/(list|load_nodelet|unload_nodelet)$", "linked-library"),
+    ("", "", "/mobile_base_nodelet_manager", r"^/cmd_vel_mux/active$", "nh-reference"),
+    ("", "", "/mobile_base_nodelet_manager", r"^/cmd_vel_mux/|^/mobile_base/commands/velocity$", "param-list"),
+    ("", "", "/mobile_base_nodelet_manager", r"kobuki_safety_controller/|/mobile_base/events/|"
+     r"navigation_velocity_smoother/|^/odom$", "nh-across"),
+    ("", "archlog+models", "/laserscan_nodelet_manager", r"camera_info", "camera-info"),
+    ("", "archlog", "/laserscan_nodelet_manager", r".", "linked-library"),
+]
+
+
+def cause_of(subject: str, tool: str, node: str, port: str) -> str:
+    import re
+    for subj, tl, node_re, port_re, cause in CAUSE_PATTERNS:
+        if subj in ("", subject) and tl in ("", tool) and re.fullmatch(node_re, node) and re.search(port_re, port):
+            return cause
+    return "unclassified"
+
+
+# ----------------------------------------------------------------------------------------------
 # scoring
 
 
@@ -329,7 +411,9 @@ def print_table(results: dict) -> None:
     print("(recovered = ports recovered; under% = missing / observed; over% = extra / observed)")
 
 
-def print_differences(subject: str, tool: str, res: dict) -> None:
+def print_differences(subject: str, tool: str, res: dict) -> dict[str, int]:
+    """The missing and extra ports grouped by node; for archlog's misses, the cause of each."""
+    counts: dict[str, int] = defaultdict(int)
     for label, key in (("missing", "missing_ports"), ("extra", "extra_ports")):
         grouped = defaultdict(list)
         for kind in KINDS:
@@ -337,11 +421,19 @@ def print_differences(subject: str, tool: str, res: dict) -> None:
                 for node in res[kind][key]:
                     grouped[node].insert(0, "NODE")
                 continue
-            for node, items in by_node(res[kind][key], kind).items():
-                grouped[node].extend(items)
+            for node, name in res[kind][key]:
+                item = f"{kind[:3]} {name}"
+                if label == "missing" and tool != "study":
+                    cause = cause_of(subject, tool, node, name)
+                    counts[cause] += 1
+                    item += f" [{cause}]"
+                grouped[node].append(item)
         print(f"\n{subject} / {tool}: {label} ({sum(len(v) for v in grouped.values())})")
         for node in sorted(grouped):
             print(f"  {node}: {', '.join(grouped[node])}")
+    if counts:
+        print(f"{subject} / {tool}: missing ports by cause: {dict(sorted(counts.items(), key=lambda kv: -kv[1]))}")
+    return dict(counts)
 
 
 def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[str]) -> None:
@@ -372,9 +464,12 @@ def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[s
             for r in rows:
                 print(f"    {r[2]}: {' '.join(r[3:7])}")
     print_table(results)
+    print("\ncauses of archlog's misses:")
+    for key, text in CAUSES.items():
+        print(f"  {key}: {text}")
     for subject, res in results.items():
         for tool in TOOLS:
-            print_differences(subject, tool, res[tool])
+            res[tool]["missing_by_cause"] = print_differences(subject, tool, res[tool])
         extra = extras[subject]
         print(f"\n{subject}: archlog nodes with unknown port names: {json.dumps(extra['unknown_ports'], indent=1)}")
         print(f"{subject}: archlog incomplete nodes: {json.dumps(extra['incomplete'], indent=1)}")
@@ -384,7 +479,8 @@ def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[s
             print(f"  {d['file']}:{d['line']}: {d['severity']} {d['code']}: {d['message'][:300]}")
     if json_out:
         json_out.parent.mkdir(parents=True, exist_ok=True)
-        small = {s: {tool: {k: dict(r[tool][k]) for k in (*KINDS, "ports")} for tool in TOOLS}
+        small = {s: {tool: {k: r[tool][k] for k in (*KINDS, "ports", "missing_by_cause") if k in r[tool]}
+                     for tool in TOOLS}
                  | {"seconds": extras[s]["seconds"],
                     "diagnostics": sorted({f"{d['severity']} {d['code']}" for d in extras[s]["diagnostics"]})}
                  for s, r in results.items()}
