@@ -32,7 +32,7 @@ from archlog.extract.launch import LaunchInterpreter, ros2_marker  # noqa: E402
 from archlog.extract.workspace import SKIP_DIRS, Workspace  # noqa: E402
 
 PARTIAL = {"launch-unknown", "launch-condition"}  # notes that still mean "not all of it is known"
-UNREAD = {"launch-python", "launch-xml", "launch-yaml", "launch-missing"}  # the file itself was not read
+UNREAD = {"launch-python", "launch-xml", "launch-yaml", "not-a-file", "outside-workspace", "too-large"}  # not read
 MISSING_PACKAGE = re.compile(r"package '[^']+' not found")
 IGNORED = {"launch-arg-unknown", "launch-process", "no-model", "package-xml", "duplicate-package"}
 

@@ -348,7 +348,7 @@ def test_invalid_utf8_everywhere(tmp_path: Path) -> None:
                                                      + b"/config/ros2.yaml\n")
     found = _check(ws, out, "--launch", str(pkg / "launch" / "all.launch"), "--model", str(pkg / "model.yaml"))
     assert ("demo/launch/bad.launch", 2, "launch-xml") in found  # as roslaunch, which rejects it too
-    assert not {code for _f, _l, code in found} & {"launch-missing", "param-file", "model-read", "rviz-config",
+    assert not {code for _f, _l, code in found} & {"not-a-file", "param-file", "model-yaml", "rviz-config",
                                                    "package-xml", "setup-cfg", "setup-py", "launch-yaml"}
 
 

@@ -133,6 +133,9 @@ class _Interpreter(Evaluator):
     def find(self, pkg: str) -> Path | None:
         return self.launcher.workspace.find(pkg)
 
+    def not_given(self, name: str, line: int) -> None:
+        self.launcher.diag(Where(self.path, line), "env-not-given", sandbox.not_given_message(name), "note")
+
     def site(self, line: int) -> int:
         """Where an action made at `line` is reported: at the call of the helper function it was
         made in, when the entry function (generate_launch_description, an OpaqueFunction) called one."""
@@ -281,6 +284,8 @@ class _Interpreter(Evaluator):
                 return handler(CallSite(args, kwargs, line, self))
             except LaunchError as exc:
                 return Unread(str(exc), line)
+        if function is dict and args == [Ref("os.environ")] and not kwargs:
+            return args[0]  # a copy of the environment reads as the environment
         if any(function is builtin for builtin in BUILTINS.values()):
             args = [a.path if isinstance(a, PathValue) else a for a in args]  # str(path) is its text
             if any(isinstance(v, Unread) for v in [*args, *kwargs.values()]):
@@ -344,11 +349,11 @@ class _Interpreter(Evaluator):
         scope = self.scope.find(name)
         if scope is not None:
             return scope.vars[name]
-        if name in ("open", "range"):
+        if name in ("open", "range", "getattr"):
             return Ref(f"builtins.{name}")
         if name in BUILTINS:
             return BUILTINS[name]
-        if name in ("print", "hasattr", "type", "super", "vars", "locals", "globals", "getattr"):
+        if name in ("print", "hasattr", "type", "super", "vars", "locals", "globals"):
             return Unread(f"{name}()", self.line)
         return Unread(f"name '{name}' is not defined", self.line)
 
@@ -459,7 +464,7 @@ class _Interpreter(Evaluator):
         if isinstance(target, Ref) and target.name == "os.environ":
             if not isinstance(index, str):
                 return Unread("os.environ[?]", node.lineno)
-            return environment(self.env, index, Unread(f"environment variable {index} is not set", node.lineno),
+            return environment(self, index, Unread(f"environment variable {index} is not given", node.lineno),
                                node.lineno)
         if isinstance(target, ConfigsView):
             return self.config(target, index, None, node.lineno)

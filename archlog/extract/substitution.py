@@ -62,7 +62,8 @@ class UnknownArg:
 
 @dataclass
 class SubstContext:
-    """What substitutions can see: the current file's args, package lookup and environment.
+    """What substitutions can see: the current file's args, package lookup and environment (the
+    variables the run was given, archlog.sandbox; never the environment archlog itself runs in).
 
     `anon` holds the $(anon) names of this scope (roslaunch keeps them next to the args, so a
     group or node copies them and an include starts afresh); `serial` numbers them uniquely."""
@@ -71,7 +72,7 @@ class SubstContext:
     find: Callable[[str], Path | None]
     file: Path
     anon: dict[str, str] = field(default_factory=dict)
-    env: dict[str, str] = field(default_factory=lambda: dict(os.environ))
+    env: dict[str, str] = field(default_factory=lambda: dict(sandbox.current().env))
     serial: Iterator[int] = field(default_factory=lambda: itertools.count(1))
 
     def arg(self, name: str) -> str:
@@ -91,8 +92,9 @@ class SubstContext:
     def getenv(self, name: str, default: str | None = None) -> str:
         if name in self.env:
             return self.env[name]
+        sandbox.not_given(name)
         if default is None:
-            raise Unresolved(f"environment variable {name} is not set")
+            raise Unresolved(f"environment variable {name} is not given")
         return default
 
     def anonymous(self, name: str) -> str:
