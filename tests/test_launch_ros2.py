@@ -312,8 +312,8 @@ def test_substitutions(tmp_path: Path) -> None:
     assert isinstance(values["missing_pkg"], Unknown) and "nowhere" in values["missing_pkg"].expr
     assert isinstance(values["command"], Unknown) and values["command"].line == 10
     assert values["content"] == "x" and isinstance(values["device"], Unknown)
-    assert codes(sink) == [("main.xml", 3, "env-not-given"), ("main.xml", 12, "not-a-file")]  # /dev/zero not read
-    assert "ARCHLOG_TEST_UNSET" in sink.items[0].message
+    assert sorted(codes(sink)) == [("main.xml", 3, "env-not-given"), ("main.xml", 12, "not-a-file")]  # no /dev/zero
+    assert any("ARCHLOG_TEST_UNSET" in d.message for d in sink.items)
 
 
 def test_components_in_xml(tmp_path: Path) -> None:

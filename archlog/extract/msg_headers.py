@@ -33,7 +33,7 @@ def generated_headers(workspace: Workspace, diagnostics: DiagnosticSink) -> Path
     out = cache_dir() / "msg_headers" / digest.hexdigest()[:24]
     if (out / ".done").is_file():
         return out
-    first = workspace.display(workspace.packages[next(iter(texts))[0]].path)
+    first = workspace.display(next(iter(texts.values()))[0])
     if not (DEBIAN_PYTHON.is_file() and TEMPLATES.is_dir()):
         diagnostics.add(first, 1, "msg-headers",
                         "gencpp is not installed: C++ ports using this workspace's messages get unknown types", "note")
