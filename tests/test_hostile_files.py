@@ -60,18 +60,24 @@ def _package(ws: Path, name: str = "demo", manifest: str = CATKIN_XML) -> Path:
 
 
 # -- what the read paths are pointed at -----------------------------------------------------
+def _config(pkg: Path, name: str) -> Path:
+    """pkg/config/NAME, its folder made."""
+    (pkg / "config").mkdir(exist_ok=True)
+    return pkg / "config" / name
+
+
 def absolute(_pkg: Path, out: Outside) -> Target:
     return Target(str(out.secret_file), "outside-workspace")
 
 
 def dotdot(pkg: Path, out: Outside) -> Target:
-    (pkg / "config").mkdir(exist_ok=True)
-    return Target(f"{pkg}/config/{os.path.relpath(out.secret_file, pkg / 'config')}", "outside-workspace")
+    folder = pkg / "config"  # the path goes through it: it must exist for ../ to resolve
+    folder.mkdir(exist_ok=True)
+    return Target(f"{folder}/{os.path.relpath(out.secret_file, folder)}", "outside-workspace")
 
 
 def symlink(pkg: Path, out: Outside) -> Target:
-    link = pkg / "config" / "link.yaml"
-    link.parent.mkdir(parents=True, exist_ok=True)
+    link = _config(pkg, "link.yaml")
     link.symlink_to(out.secret_file)
     return Target(str(link), "outside-workspace")
 
@@ -94,35 +100,31 @@ def dev_urandom(_pkg: Path, _out: Outside) -> Target:
 
 
 def zero_link(pkg: Path, _out: Outside) -> Target:
-    link = pkg / "config" / "zero.yaml"
-    link.parent.mkdir(parents=True, exist_ok=True)
+    link = _config(pkg, "zero.yaml")
     link.symlink_to("/dev/zero")
     return Target(str(link), "outside-workspace")
 
 
 def fifo(pkg: Path, _out: Outside) -> Target:
-    pipe = pkg / "config" / "pipe.yaml"
-    pipe.parent.mkdir(parents=True, exist_ok=True)
+    pipe = _config(pkg, "pipe.yaml")
     os.mkfifo(pipe)
     return Target(str(pipe), "not-a-file")
 
 
 def directory(pkg: Path, _out: Outside) -> Target:
-    folder = pkg / "config" / "folder.yaml"
-    folder.mkdir(parents=True)
+    folder = _config(pkg, "folder.yaml")
+    folder.mkdir()
     return Target(str(folder), "not-a-file")
 
 
 def loop(pkg: Path, _out: Outside) -> Target:
-    link = pkg / "config" / "loop.yaml"
-    link.parent.mkdir(parents=True, exist_ok=True)
+    link = _config(pkg, "loop.yaml")
     link.symlink_to(link.name)
     return Target(str(link), "not-a-file")
 
 
 def too_large(pkg: Path, _out: Outside) -> Target:
-    big = pkg / "config" / "big.yaml"
-    big.parent.mkdir(parents=True, exist_ok=True)
+    big = _config(pkg, "big.yaml")
     with big.open("wb") as handle:
         handle.truncate(9 << 20)  # sparse: over every size cap
     return Target(str(big), "too-large")
@@ -137,10 +139,11 @@ def _diagnostics(out: Outside) -> set[tuple[str, int, str]]:
     return {(d["file"], d["line"], d["code"]) for d in report["diagnostics"]}
 
 
-def _check(ws: Path, out: Outside, *options: str, fmt: str = "json") -> set[tuple[str, int, str]]:
-    run = run_check(ws, out, *options, fmt=fmt)
+def _check(ws: Path, out: Outside, *options: str) -> set[tuple[str, int, str]]:
+    """The run's diagnostics (file, line, code), once the run is judged clean."""
+    run = run_check(ws, out, *options, fmt="json")
     assert problems(run, out) == []
-    return _diagnostics(out) if fmt == "json" else set()
+    return _diagnostics(out)
 
 
 # -- the cases ------------------------------------------------------------------------------
@@ -203,7 +206,9 @@ def test_no_leak_in_any_format(tmp_path: Path, fmt: str) -> None:
     elements = "".join(f'<param name="t{k}" textfile="{a.path}"/><rosparam file="{a.path}"/>'
                        f'<node pkg="rviz" type="rviz" name="rviz{k}" args="-d {a.path}"/>\n' for k, a in enumerate(aims))
     _write(pkg / "launch" / "all.launch", f"<launch>\n{elements}</launch>\n")
-    _check(ws, out, "--launch", str(pkg / "launch" / "all.launch"), fmt=fmt)
+    run = run_check(ws, out, "--launch", str(pkg / "launch" / "all.launch"), fmt=fmt)
+    assert problems(run, out) == []
+    assert run.output.count("outside-workspace") >= 9
 
 
 def test_named_launch_file_linked_out(tmp_path: Path) -> None:
