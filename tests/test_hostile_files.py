@@ -310,8 +310,13 @@ def test_walks_stay_inside(tmp_path: Path) -> None:
     (ws / "elsewhere").symlink_to(out.root, target_is_directory=True)
     _package(out.root, "outside_pkg")
     (ws / "loop").symlink_to(ws / "loop")
+    (ws / "looped").mkdir()
+    (ws / "looped" / "package.xml").symlink_to("package.xml")
+    (pkg / "src" / "loop.cpp").symlink_to("loop.cpp")
+    (pkg / "CMakeLists.txt").write_text((pkg / "CMakeLists.txt").read_text() + "add_executable(looped src/loop.cpp)\n")
     found = _check(ws, out)
     assert ("demo/msg/Secret.msg", 1, "outside-workspace") in found
+    assert {("looped/package.xml", 1, "not-a-file"), ("demo/src/loop.cpp", 1, "not-a-file")} <= found
     assert not any(file.startswith("elsewhere") for file, _line, _code in found)
 
 
