@@ -375,8 +375,11 @@ def test_includes_through_macros_and_nul_bytes(tmp_path: Path) -> None:
         #define SECRET(x) STR(x)
         #include PIPE
         #include SECRET({out.secret_file})
+        #define CAT(a, b) a##b
+        #include SECRET(CAT(fi, fo).h)
         int main() {{}}
         """)
+    os.mkfifo(pkg / "src" / "fifo.h")  # named by no string: only token pasting makes its name
     _write(ws / "compile_commands.json", json.dumps([{"directory": str(pkg), "file": "src/node.cpp",
                                                       "arguments": ["c++", "-I/tmp\0", "-c", "src/node.cpp"]}]))
     _write(pkg / "launch" / "nul.launch.py", """
@@ -388,4 +391,5 @@ def test_includes_through_macros_and_nul_bytes(tmp_path: Path) -> None:
         """)
     found = _check(ws, out, "--launch", str(pkg / "launch" / "nul.launch.py"))
     assert {("demo/src/node.cpp", 4, "not-a-file"), ("demo/src/node.cpp", 5, "outside-workspace"),
+            ("demo/src/node.cpp", 7, "not-a-file"),
             ("demo/launch/nul.launch.py", 5, "not-a-file")} <= found

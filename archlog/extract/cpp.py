@@ -37,7 +37,7 @@ from archlog.extract.ros2_stubs import API_DIR, DUAL, INTERFACE_INCLUDE, Interfa
     library_interfaces, spelled_types, stand_in_dir
 from archlog.extract.stub_headers import stub_dir
 from archlog.extract.summary import NodeSummary
-from archlog.extract.workspace import manifests
+from archlog.extract.workspace import manifests, pruned
 
 _KEEP_GOING = 0x200
 _NOT_FOUND = re.compile(r"'([^']+)' file not found")
@@ -68,6 +68,7 @@ class CppEnvironment:
     pch: Path | None = None
     fingerprint: str = ""
     interfaces: Interfaces = field(default_factory=Interfaces)
+    refused: list[str] = field(default_factory=list)  # workspace files clang must never read
 
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
@@ -82,6 +83,7 @@ class CppEnvironment:
         self.pch = _ros_pch(system, rdir)
         self.per_file = _compile_commands(self.roots)
         self.interfaces = Interfaces.index(m.parent for root in self.roots for m in manifests(root))
+        self.refused = _refused_includes([str(p) for root in self.roots for p in files_under(root, pruned)])
         self.fingerprint = key(json.dumps(self.parse_args()), *map(str, self.roots),  # roots: whose headers are read
                                *_tree_stamp(self.workspace_includes), *self.interfaces.stamp(), _stand_in_stamp())
 
@@ -302,7 +304,7 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
     missing: list[str] = []
     dual: list[str] = []
     args = env.file_args(source)
-    blocked = _refused_includes([word for flag, word in zip(args, args[1:]) if flag == "-include"])
+    blocked = env.refused + _refused_includes([word for flag, word in zip(args, args[1:]) if flag == "-include"])
     while queue and len(seen) < 400:
         path = queue.pop(0)
         try:
@@ -328,18 +330,14 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
 
 
 _ANY_INCLUDE = re.compile(r'^\s*#\s*(?:include|include_next|import)\s*[<"]([^>"\n]+)[>"]', re.M)
-_MACRO_INCLUDE = re.compile(r"^\s*#\s*(?:include|include_next|import)\s+[A-Za-z_]", re.M)
-_PATH_WORD = re.compile(r'"([^"\n]+)"|<([^<>\s]+)>|(?<![\w.])((?:\.\.?/|/)[\w./+-]+)')
 
 
 def _named_files(text: str) -> list[str]:
-    """The files a C++ text may include: the names its #include lines spell, and where an
-    #include takes a macro, every string, <name> or path-like word of the text (a macro may
-    make any of them the file)."""
-    names = _ANY_INCLUDE.findall(text)
-    if _MACRO_INCLUDE.search(text):
-        names += [next(g for g in m.groups() if g) for m in _PATH_WORD.finditer(text)]
-    return list(dict.fromkeys(names))
+    """The files a C++ text may make clang include that may lie outside the workspace: the names
+    its #include lines spell, and every absolute or `..` path in it (a macro may hand one to an
+    #include, here or in a header). Files inside it are in CppEnvironment.refused."""
+    words = [w for w in re.findall(r"[\w./+-]*\w[\w./+-]*", text) if w.startswith("/") or ".." in w]
+    return list(dict.fromkeys(_ANY_INCLUDE.findall(text) + words))
 
 
 def _refused_includes(candidates: list[str]) -> list[str]:

@@ -316,7 +316,7 @@ def manifests(root: Path) -> list[Path]:
     if (root / "package.xml").is_file():
         return [root / "package.xml"]
     found: list[Path] = []
-    for dirpath, dirnames, filenames in walk(root, _pruned):
+    for dirpath, dirnames, filenames in walk(root, pruned):
         if "CATKIN_IGNORE" in filenames or "COLCON_IGNORE" in filenames:
             dirnames[:] = []
             continue
@@ -326,7 +326,7 @@ def manifests(root: Path) -> list[Path]:
     return found
 
 
-def _pruned(folder: str) -> bool:
+def pruned(folder: str) -> bool:
     """Folders a workspace walk does not enter: hidden ones and build trees."""
     return folder.startswith(".") or folder in SKIP_DIRS
 
@@ -365,7 +365,7 @@ def _sources(folder: Path, args: tuple[str, ...]) -> list[Path]:
 
 def _source_files(folder: Path) -> list[Path]:
     """C++ sources under a folder, outside build trees."""
-    return [dirpath / f for dirpath, _dirs, filenames in walk(folder, _pruned) for f in filenames
+    return [dirpath / f for dirpath, _dirs, filenames in walk(folder, pruned) for f in filenames
             if Path(f).suffix in SOURCE_SUFFIXES]
 
 
