@@ -18,6 +18,7 @@ environment, and it opens whatever files a description names. For the duration o
 
 from __future__ import annotations
 
+import errno
 import os
 import re
 import xml.dom.minidom
@@ -39,6 +40,11 @@ _TOKEN = re.compile(r"(?P<dollars>\$\$+[{(])|(?P<expr>\$\{[^}]*\})|(?P<extension
 _MACRO_ARG = re.compile(r"^\s*([^\s:=]+?)\s*:?=\s*(\^\|?)?"
                         r"(\$\{.*?\}|\$\(.*?\)|(?:'.*?'|\".*?\"|[^\s'\"])+|)(?:\s+|$)(.*)")
 """xacro's `re_macro_arg` with `[^\\s'\"]` once per repetition (the same language)."""
+
+SIBLINGS_PER_STEP = 25
+"""xacro splices expanded nodes into their parent with minidom, which finds a node's place by a
+scan of its siblings: so many siblings scanned count as one evaluation step (the scans make an
+expansion into one parent quadratic)."""
 
 _METHODS = {dict: {"get", "keys", "values", "items"}, list: {"index", "count"}, tuple: {"index", "count"}}
 """Read-only methods an expression may call on the containers it holds."""
@@ -129,12 +135,11 @@ class Expansion:
                 raise SubstitutionError(f"invalid expression: {text[position:position + 80]}")
             spend("steps")
             position = token.end()
-            if token["expr"]:
-                results.append(self.evaluate(str(self.eval_text(token["expr"][2:-1], symbols)), symbols))
-            elif token["extension"]:
-                results.append(self.extension(str(self.eval_text(token["extension"][2:-1], symbols))))
-            else:
-                results.append(token[0][1:] if token["dollars"] else token[0])
+            try:
+                results.append(self._token(token, symbols))
+            except Exception:
+                self.needle = self.needle or token[0]  # the innermost piece that failed, as written
+                raise
         value = results[0] if len(results) == 1 else "".join(map(str, results))
         if isinstance(value, str):
             try:
@@ -143,6 +148,13 @@ class Expansion:
                 self.needle = self.needle or text
                 raise
         return value
+
+    def _token(self, token: re.Match[str], symbols: object) -> object:
+        if token["expr"]:
+            return self.evaluate(str(self.eval_text(token["expr"][2:-1], symbols)), symbols)
+        if token["extension"]:
+            return self.extension(str(self.eval_text(token["extension"][2:-1], symbols)))
+        return token[0][1:] if token["dollars"] else token[0]
 
     def evaluate(self, expr: str, symbols: object, _locals: object = None) -> object:
         """xacro's `safe_eval`, by archlog's evaluator: names from the property tables (whose root
@@ -153,11 +165,7 @@ class Expansion:
             except KeyError:
                 raise SubstitutionError(f"name '{name}' is not defined") from None
 
-        try:
-            return restricted_eval(expr, lookup, self.attribute)
-        except Exception:
-            self.needle = self.needle or expr
-            raise
+        return restricted_eval(expr, lookup, self.attribute)
 
     def attribute(self, target: object, name: str) -> object:
         xacro = self.xacro
@@ -180,11 +188,7 @@ class Expansion:
         current = xacro.filestack[-1] if xacro.filestack and xacro.filestack[-1] else "."
         context = SubstContext(dict(xacro.substitution_args_context.get("arg", {})), self.find, Path(current),
                                env=dict(sandbox.current().env))
-        try:
-            return substitute(f"$({inner})", context)
-        except SubstitutionError:
-            self.needle = self.needle or f"$({inner})"
-            raise
+        return substitute(f"$({inner})", context)
 
     def load_yaml(self, filename: object) -> object:
         """`xacro.load_yaml`: a YAML file of the workspace (its units tags too), within budget."""
@@ -204,34 +208,52 @@ class Expansion:
         return loader
 
     def parse(self, _inp: object, filename: str | None = None) -> xml.dom.minidom.Document:
-        """xacro's `parse` of a file (the only way xacro calls it): read through the sandbox; a
-        missing file stays xacro's error, which an optional include skips."""
+        """xacro's `parse` of a file (the only way xacro calls it): include nesting checked against
+        the depth, the file read through the sandbox; a missing file stays xacro's error, which an
+        optional include skips."""
         xacro = self.xacro
         path = os.path.join(xacro.root_dir, str(filename))
         try:
+            budget.current().check("depth", len(xacro.filestack))
             text = sandbox.read_text(path, "description")
+        except BudgetExceeded:
+            self.needle = self.needle or os.path.basename(path)
+            raise
         except sandbox.Refused as exc:
             if exc.code == "not-a-file" and not os.path.lexists(path):
                 xacro.filestack.pop()
-                raise xacro.XacroException(f"No such file or directory: {path}",
-                                           exc=FileNotFoundError(path)) from None
+                raise xacro.XacroException(exc=FileNotFoundError(errno.ENOENT, "No such file", path)) from None
             self.needle = self.needle or os.path.basename(path)
             raise
         return xml.dom.minidom.parseString(text)
 
     def eval_all(self, original: Callable[..., None]) -> Callable[..., None]:
-        """xacro's `eval_all`, each element spending one of the budget and include and macro
-        nesting checked against the depth."""
+        """xacro's `eval_all`, each element spending one of the budget and macro nesting checked
+        against the depth."""
         xacro = self.xacro
 
         def counted(node: xml.dom.minidom.Element, macros: object, symbols: object) -> None:
             try:
                 budget.spend("elements")
-                budget.current().check("depth", max(len(xacro.filestack), len(xacro.macrostack)))
-            except BudgetExceeded:
+                budget.current().check("depth", len(xacro.macrostack))
+                original(node, macros, symbols)
+            except (BudgetExceeded, RecursionError):
                 self.needle = self.needle or f"<{node.tagName}"
                 raise
-            original(node, macros, symbols)
+
+        return counted
+
+    def replace_node(self, original: Callable[..., None]) -> Callable[..., None]:
+        """xacro's `replace_node`, the sibling scans of its insertions and removal spent as steps."""
+        def counted(node: xml.dom.minidom.Node, by: object, content_only: bool = False) -> None:
+            docs = [] if by is None else by if isinstance(by, list) else [by]
+            moved = sum(len(doc.childNodes) if content_only else 1 for doc in docs)
+            try:
+                spend("steps", (moved + 1) * len(node.parentNode.childNodes) // SIBLINGS_PER_STEP)
+            except BudgetExceeded:
+                self.needle = self.needle or f"<{node.nodeName}"
+                raise
+            original(node, by, content_only)
 
         return counted
 
@@ -273,7 +295,8 @@ def routed(expansion: Expansion) -> Iterator[None]:
     afterwards (xacro keeps its state in module globals; this is not thread-safe)."""
     xacro = expansion.xacro
     replaced = {"eval_text": expansion.eval_text, "safe_eval": expansion.evaluate, "parse": expansion.parse,
-                "eval_all": expansion.eval_all(xacro.eval_all), "_global_symbols": expansion.names,
+                "eval_all": expansion.eval_all(xacro.eval_all), "replace_node": expansion.replace_node(xacro.replace_node),
+                "_global_symbols": expansion.names,
                 "re_macro_arg": _MACRO_ARG, "all_includes": []}
     saved = {name: getattr(xacro, name) for name in replaced}
     for name, value in replaced.items():
