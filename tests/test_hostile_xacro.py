@@ -90,7 +90,7 @@ def _attribute_escapes(ws: Path, outside: Outside) -> dict[str, str]:
 
 def _text_escapes(ws: Path, outside: Outside) -> dict[str, str]:
     probes = [*escapes(outside.marker()), *dollar_evals(outside.marker())]
-    return {f"t{i}.xacro": ROBOT.format(body=f"  {HELD}<e>x ${{{e}}}</e>" if not e.startswith("$(") else f"  <e>{e}</e>")
+    return {f"t{i}.xacro": ROBOT.format(body=f"  <e>{e}</e>" if e.startswith("$(") else f"  {HELD}<e>x ${{{e}}}</e>")
             for i, e in enumerate(probes)}
 
 
@@ -102,8 +102,8 @@ ENV_PROBES = {
     "env.xacro": (f'  <link name="$(env {CANARY_ENV})"/>', CANARY_ENV),
     "optenv.xacro": (f"  <link name=\"${{int('$(optenv {CANARY_ENV})')}}\"/>", "invalid literal"),
     "envexpr.xacro": (f"  <link name=\"${{int('$(env {CANARY_ENV})')}}\"/>", CANARY_ENV),
-    "arg.xacro": (f"  <xacro:arg name=\"a\" default=\"$(optenv {CANARY_ENV} none)\"/><l n=\"${{int(xacro.arg('a'))}}\"/>",
-                  "invalid literal"),
+    "arg.xacro": (f"  <xacro:arg name=\"a\" default=\"$(optenv {CANARY_ENV} none)\"/>"
+                  "<l n=\"${int(xacro.arg('a'))}\"/>", "invalid literal"),
 }
 
 
@@ -119,15 +119,15 @@ def _secret_files(ws: Path, outside: Outside) -> dict[str, str]:
             "relative.xacro": ROBOT.format(body=f'  <xacro:include filename="$(find pkg)/{up}"/>'),
             "yaml.xacro": ROBOT.format(body=f"  <link name=\"${{xacro.load_yaml('{secret}')}}\"/>"),
             "linked.xacro": ROBOT.format(body="  <link name=\"${load_yaml('link.yaml')['password']}\"/>"),
-            "units.xacro": ROBOT.format(body=f"  <xacro:property name=\"s\" value=\"${{xacro.load_yaml('{secret}')}}\"/>"
-                                             "<l n=\"${s}\"/>")}
+            "property.xacro": ROBOT.format(body=f"  <xacro:property name=\"s\" value=\"${{load_yaml('{secret}')}}\"/>"
+                                                "<l n=\"${s}\"/>")}
 
 
 def _secret_expected(outside: Outside) -> Expected:
     named = str(outside.secret_file)
     return {"include.xacro": ("outside-workspace", 3, named), "relative.xacro": ("outside-workspace", 3, "secret.yaml"),
             "yaml.xacro": ("outside-workspace", 3, named), "linked.xacro": ("outside-workspace", 3, "link.yaml"),
-            "units.xacro": ("outside-workspace", 3, named)}
+            "property.xacro": ("outside-workspace", 3, named)}
 
 
 def _special_files(ws: Path, outside: Outside) -> dict[str, str]:

@@ -1,8 +1,8 @@
 """Expanding a xacro file with the xacro library without running anything the file holds.
 
 xacro evaluates `${...}` with Python's `eval` behind a check of the names the code uses, which a
-nested code object (a lambda, a generator) walks past; its `$(eval)` and `$(env)` read the real
-environment, and it opens whatever files a description names. For the duration of one expansion
+nested code object (a lambda, a comprehension) walks past; its `$(eval)` is Python's `eval`, its
+`$(env)` reads the real environment, and it opens whatever files a description names. For the duration of one expansion
 (`routed`), archlog puts its own pieces at xacro's seams and restores xacro's afterwards:
 
 - text and expressions (`eval_text`, `safe_eval`): `${...}` goes through archlog's restricted
@@ -10,8 +10,9 @@ environment, and it opens whatever files a description names. For the duration o
   the `xacro.` helpers), `$(...)` through archlog's roslaunch substitutions (`$(env)` sees only the
   sandbox's environment, `$(find)` the workspace); the lexing is linear;
 - files (`parse`, `xacro.load_yaml`): read through `archlog.sandbox` as descriptions;
-- budgets: every element expanded spends one `elements`, every text evaluated its `characters`;
-  include and macro nesting is a `depth`;
+- budgets: every element expanded spends one `elements`, every file read and text evaluated its
+  `characters`, the sibling scans of xacro's node splicing `steps`; include and macro nesting is a
+  `depth`;
 - macro parameters are parsed with a pattern without nested repetition (xacro's backtracks
   exponentially on a hostile default).
 """
@@ -73,7 +74,7 @@ def expand(source: Path, mappings: dict[str, str],
 
 
 class Expansion:
-    """One expansion: the `$(arg)` mappings, package lookup, and where a failure happened."""
+    """One expansion: package lookup, xacro's global names, and the piece of text that failed."""
 
     def __init__(self, find: Callable[[str], Path | None]) -> None:
         import xacro
@@ -194,8 +195,10 @@ class Expansion:
         """`xacro.load_yaml`: a YAML file of the workspace (its units tags too), within budget."""
         xacro = self.xacro
         path = xacro.abs_filename_spec(str(filename))
+        text = sandbox.read_text(path, "description")
+        spend("characters", len(text))
         try:
-            data = yaml.load(sandbox.read_text(path, "description"), Loader=self._yaml_loader())  # noqa: S506
+            data = yaml.load(text, Loader=self._yaml_loader())  # noqa: S506 - a SafeLoader with xacro's unit tags
         except yaml.YAMLError as exc:
             raise SubstitutionError(f"{path} is not YAML: {exc}") from None
         xacro.all_includes.append(path)
@@ -216,6 +219,7 @@ class Expansion:
         try:
             budget.current().check("depth", len(xacro.filestack))
             text = sandbox.read_text(path, "description")
+            spend("characters", len(text))
         except BudgetExceeded:
             self.needle = self.needle or os.path.basename(path)
             raise
@@ -295,9 +299,9 @@ def routed(expansion: Expansion) -> Iterator[None]:
     afterwards (xacro keeps its state in module globals; this is not thread-safe)."""
     xacro = expansion.xacro
     replaced = {"eval_text": expansion.eval_text, "safe_eval": expansion.evaluate, "parse": expansion.parse,
-                "eval_all": expansion.eval_all(xacro.eval_all), "replace_node": expansion.replace_node(xacro.replace_node),
-                "_global_symbols": expansion.names,
-                "re_macro_arg": _MACRO_ARG, "all_includes": []}
+                "eval_all": expansion.eval_all(xacro.eval_all),
+                "replace_node": expansion.replace_node(xacro.replace_node),
+                "_global_symbols": expansion.names, "re_macro_arg": _MACRO_ARG, "all_includes": []}
     saved = {name: getattr(xacro, name) for name in replaced}
     for name, value in replaced.items():
         setattr(xacro, name, value)
