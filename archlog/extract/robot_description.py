@@ -20,7 +20,7 @@ from archlog.extract.command_line import split_options
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import Port
 from archlog.extract.workspace import Workspace
-from archlog.extract.xacro_expand import XacroFailure, expand
+from archlog.extract.xacro_expand import Place, XacroFailure, expand
 from archlog.values import Unknown
 
 
@@ -100,12 +100,20 @@ def _expand(value: object, elem: Element, workspace: Workspace,
 
 def _xacro(source: Path, mappings: dict[str, str], workspace: Workspace, elem: Element,
            diagnostics: DiagnosticSink) -> tuple[str, list[Path]] | None:
+    def at(place: Place) -> tuple[str, int]:
+        file, line = place
+        return (workspace.display(file), line or 1) if file else (elem.file, elem.line)
+
     try:
-        return expand(source, mappings, workspace.find)
+        expanded = expand(source, mappings, workspace.find)
     except XacroFailure as failure:
-        file, line = (workspace.display(failure.file), failure.line) if failure.file else (elem.file, elem.line)
-        diagnostics.add(file, line or 1, failure.code, str(failure), "warning")
+        for name, place in failure.unseen:
+            diagnostics.add(*at(place), "env-not-given", sandbox.not_given_message(name))
+        diagnostics.add(*at(failure.place), failure.code, str(failure))
         return None
+    for name, place in expanded.unseen:
+        diagnostics.add(*at(place), "env-not-given", sandbox.not_given_message(name))
+    return expanded.text, expanded.files
 
 
 def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: list[Path], elem: Element,

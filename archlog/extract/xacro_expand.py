@@ -25,6 +25,7 @@ import re
 import xml.dom.minidom
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
@@ -51,24 +52,37 @@ _METHODS = {dict: {"get", "keys", "values", "items"}, list: {"index", "count"}, 
 """Read-only methods an expression may call on the containers it holds."""
 
 
+Place = tuple[Path | None, int | None]
+"""A file and line of a description (None: not found; report it where the description is set)."""
+
+
+@dataclass
+class Expanded:
+    """A description's XML text, the files it came from, and the environment variables it read
+    that the run was not given (each with the place that read it)."""
+
+    text: str
+    files: list[Path]
+    unseen: list[tuple[str, Place]]
+
+
 class XacroFailure(Exception):
-    """An expansion that stopped: the diagnostic code, and the file and line that stopped it
-    (None: not found; report it where the description is set)."""
+    """An expansion that stopped: the diagnostic code, the place that stopped it, and the
+    variables read but not given before it did."""
 
-    def __init__(self, code: str, message: str, file: Path | None = None, line: int | None = None) -> None:
+    def __init__(self, code: str, message: str, place: Place, unseen: list[tuple[str, Place]]) -> None:
         super().__init__(message)
-        self.code, self.file, self.line = code, file, line
+        self.code, self.place, self.unseen = code, place, unseen
 
 
-def expand(source: Path, mappings: dict[str, str],
-           find: Callable[[str], Path | None]) -> tuple[str, list[Path]]:
-    """The XML text of a xacro file and the files it read; raises `XacroFailure`."""
+def expand(source: Path, mappings: dict[str, str], find: Callable[[str], Path | None]) -> Expanded:
+    """Expand a xacro file (raises `XacroFailure`)."""
     expansion = Expansion(find)
     xacro = expansion.xacro
     with budget.scope(), routed(expansion):
         try:
             text = xacro.process_file(str(source), mappings=dict(mappings)).toxml()
-            return text, [source, *map(Path, xacro.all_includes)]
+            return Expanded(text, [source, *map(Path, xacro.all_includes)], expansion.unseen)
         except Exception as exc:  # noqa: BLE001 - xacro reports every failure as some exception
             raise expansion.failure(exc, source) from None
 
@@ -81,6 +95,7 @@ class Expansion:
         self.xacro = xacro
         self.find = find
         self.needle: str | None = None  # text of the innermost failing piece, to find its line by
+        self.unseen: list[tuple[str, Place]] = []
         self.names = self._names()
 
     def _names(self) -> dict[str, object]:
@@ -106,15 +121,15 @@ class Expansion:
             code = cause.code if isinstance(cause, sandbox.Refused) else \
                 "budget-exceeded" if isinstance(cause, BudgetExceeded) else "robot-description"
             message = str(cause) or type(cause).__name__
-        file, line = self._located()
-        return XacroFailure(code, f"xacro cannot expand {source}: {message}", file, line)
+        return XacroFailure(code, f"xacro cannot expand {source}: {message}", self._located(self.needle or ""),
+                            self.unseen)
 
-    def _located(self) -> tuple[Path | None, int | None]:
-        """The first line holding `needle` in the innermost macro's file, then the files being read."""
+    def _located(self, text: str) -> Place:
+        """The first line holding `text` in the innermost macro's file, then the files being read."""
         xacro = self.xacro
         files = [m.history[-1][-1] for m in reversed(xacro.macrostack or []) if m.history and m.history[-1]]
         files += list(reversed(xacro.filestack or []))
-        needle = next((part.strip() for part in (self.needle or "").splitlines() if part.strip()), "")
+        needle = next((part.strip() for part in text.splitlines() if part.strip()), "")
         for name in (f for f in files if f):
             try:
                 lines = sandbox.read_text(name, "description").splitlines()
@@ -182,14 +197,18 @@ class Expansion:
         return getattr(target, name)
 
     def extension(self, inner: str) -> str:
-        """`$(...)` as roslaunch resolves it, with the sandbox's environment; `$(cwd)` as xacro."""
+        """`$(...)` as roslaunch resolves it, with the sandbox's environment (a variable not given
+        is noted with its place); `$(cwd)` as xacro."""
         xacro = self.xacro
         if inner == "cwd":
             return os.path.abspath(xacro.root_dir)
         current = xacro.filestack[-1] if xacro.filestack and xacro.filestack[-1] else "."
-        context = SubstContext(dict(xacro.substitution_args_context.get("arg", {})), self.find, Path(current),
-                               env=dict(sandbox.current().env))
-        return substitute(f"$({inner})", context)
+        context = SubstContext(dict(xacro.substitution_args_context.get("arg", {})), self.find, Path(current))
+        with sandbox.reads_not_given() as unseen:
+            try:
+                return substitute(f"$({inner})", context)
+            finally:
+                self.unseen += [(name, self._located(name)) for name in unseen]
 
     def load_yaml(self, filename: object) -> object:
         """`xacro.load_yaml`: a YAML file of the workspace (its units tags too), within budget."""
