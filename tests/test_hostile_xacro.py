@@ -115,19 +115,27 @@ def _secret_files(ws: Path, outside: Outside) -> dict[str, str]:
     secret = outside.secret_file
     (ws / "pkg" / "urdf" / "link.yaml").symlink_to(secret)
     up = os.path.relpath(secret, ws / "pkg")
+    climb = f"$(find pkg)/*/../{os.path.dirname(up)}/*"  # a pattern that climbs out after its first wildcard
     return {"include.xacro": ROBOT.format(body=f'  <xacro:include filename="{secret}"/>'),
             "relative.xacro": ROBOT.format(body=f'  <xacro:include filename="$(find pkg)/{up}"/>'),
             "yaml.xacro": ROBOT.format(body=f"  <link name=\"${{xacro.load_yaml('{secret}')}}\"/>"),
             "linked.xacro": ROBOT.format(body="  <link name=\"${load_yaml('link.yaml')['password']}\"/>"),
             "property.xacro": ROBOT.format(body=f"  <xacro:property name=\"s\" value=\"${{load_yaml('{secret}')}}\"/>"
-                                                "<l n=\"${s}\"/>")}
+                                                "<l n=\"${s}\"/>"),
+            "listed.xacro": ROBOT.format(body=f'  <xacro:include filename="{secret.parent}/*.yaml"/>'),
+            "listedup.xacro": ROBOT.format(body=f'  <xacro:include filename="{climb}"/>')}
+
+
+LISTED = ("listed.xacro", "listedup.xacro")
+"""Include patterns that would list the folder of the secret file: its name is not reported."""
 
 
 def _secret_expected(outside: Outside) -> Expected:
     named = str(outside.secret_file)
     return {"include.xacro": ("outside-workspace", 3, named), "relative.xacro": ("outside-workspace", 3, "secret.yaml"),
             "yaml.xacro": ("outside-workspace", 3, named), "linked.xacro": ("outside-workspace", 3, "link.yaml"),
-            "property.xacro": ("outside-workspace", 3, named)}
+            "property.xacro": ("outside-workspace", 3, named), "listed.xacro": ("outside-workspace", 3, "*.yaml"),
+            "listedup.xacro": ("outside-workspace", 3, "not listed")}
 
 
 def _special_files(ws: Path, outside: Outside) -> dict[str, str]:
@@ -249,6 +257,7 @@ def test_hostile_xacro(case: Case, tmp_path: Path) -> None:
         name: (code, line) for name, (code, line, _) in expected.items()}
     for name, (_code, _line, text) in expected.items():
         assert text in reported[name][2], name
+        assert name not in LISTED or outside.secret_file.name not in reported[name][2]
 
 
 @pytest.mark.parametrize("fmt", ["text", "json", "sarif"])

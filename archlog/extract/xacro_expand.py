@@ -9,7 +9,9 @@ nested code object (a lambda, a comprehension) walks past; its `$(eval)` is Pyth
   evaluator (`substitution.restricted_eval`) over xacro's names (properties, math, pure builtins,
   the `xacro.` helpers), `$(...)` through archlog's roslaunch substitutions (`$(env)` sees only the
   sandbox's environment, `$(find)` the workspace); the lexing is linear;
-- files (`parse`, `xacro.load_yaml`): read through `archlog.sandbox` as descriptions;
+- files (`parse`, `xacro.load_yaml`): read through `archlog.sandbox` as descriptions; an include
+  pattern (`glob`) is listed only inside the sandbox's roots, and a pattern reaching out of them is
+  refused by its text (never naming what it would match);
 - budgets: every element expanded spends one `elements`, every file read and text evaluated its
   `characters`, the sibling scans of xacro's node splicing `steps`; include and macro nesting is a
   `depth`;
@@ -20,6 +22,7 @@ nested code object (a lambda, a comprehension) walks past; its `$(eval)` is Pyth
 from __future__ import annotations
 
 import errno
+import glob
 import os
 import re
 import xml.dom.minidom
@@ -27,6 +30,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
+from types import SimpleNamespace
 
 import yaml
 
@@ -250,6 +254,20 @@ class Expansion:
             raise
         return xml.dom.minidom.parseString(text)
 
+    def glob(self, pattern: str) -> list[str]:
+        """The files an include pattern names, listed only when the pattern (its folder before the
+        first wildcard, no `..` after it) and every match stay inside the sandbox's roots."""
+        parts = Path(pattern).parts
+        fixed = next((i for i, part in enumerate(parts) if glob.has_magic(part)), len(parts))
+        policy = sandbox.current()
+        confined = policy.inside(Path(*parts[:fixed]) if fixed else Path(".")) and ".." not in parts[fixed:]
+        found = glob.glob(pattern) if confined else None
+        if found is None or not all(policy.inside(match) for match in found):
+            self.needle = self.needle or os.path.basename(pattern)
+            raise sandbox.Refused("outside-workspace", pattern, "reaches outside the analysed paths; not listed")
+        spend("steps", len(found))
+        return found
+
     def eval_all(self, original: Callable[..., None]) -> Callable[..., None]:
         """xacro's `eval_all`, each element spending one of the budget and macro nesting checked
         against the depth."""
@@ -320,7 +338,8 @@ def routed(expansion: Expansion) -> Iterator[None]:
     replaced = {"eval_text": expansion.eval_text, "safe_eval": expansion.evaluate, "parse": expansion.parse,
                 "eval_all": expansion.eval_all(xacro.eval_all),
                 "replace_node": expansion.replace_node(xacro.replace_node),
-                "_global_symbols": expansion.names, "re_macro_arg": _MACRO_ARG, "all_includes": []}
+                "_global_symbols": expansion.names, "re_macro_arg": _MACRO_ARG, "all_includes": [],
+                "glob": SimpleNamespace(glob=expansion.glob)}  # the module xacro lists include patterns with
     saved = {name: getattr(xacro, name) for name in replaced}
     for name, value in replaced.items():
         setattr(xacro, name, value)
