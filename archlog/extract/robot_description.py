@@ -20,7 +20,7 @@ from archlog.extract.command_line import split_options
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import Port
 from archlog.extract.workspace import Workspace
-from archlog.extract.xacro_expand import Place, XacroFailure, expand
+from archlog.extract.xacro_expand import Place, XacroFailure, expand, parse_xml
 from archlog.values import Unknown
 
 
@@ -69,7 +69,7 @@ def spawned_ports(node: LaunchNode, words: list[str], config: LaunchConfig, work
         return []
     text, files = described
     try:
-        doc = xml.dom.minidom.parseString(text)
+        doc = parse_xml(text)
     except Exception as exc:  # noqa: BLE001 - expat raises several types for broken XML
         diagnostics.add(elem.file, elem.line, "robot-description", f"robot description is not XML: {exc}", "warning")
         return []

@@ -47,6 +47,8 @@ _MACRO_ARG = re.compile(r"^\s*([^\s:=]+?)\s*:?=\s*(\^\|?)?"
                         r"(\$\{.*?\}|\$\(.*?\)|(?:'.*?'|\".*?\"|[^\s'\"])+|)(?:\s+|$)(.*)")
 """xacro's `re_macro_arg` with `[^\\s'\"]` once per repetition (the same language)."""
 
+ENTITY = "<!ENTITY"
+
 SIBLINGS_PER_STEP = 25
 """xacro splices expanded nodes into their parent with minidom, which finds a node's place by a
 scan of its siblings: so many siblings scanned count as one evaluation step (the scans make an
@@ -252,7 +254,11 @@ class Expansion:
                 raise xacro.XacroException(exc=FileNotFoundError(errno.ENOENT, "No such file", path)) from None
             self.needle = self.needle or os.path.basename(path)
             raise
-        return xml.dom.minidom.parseString(text)
+        try:
+            return parse_xml(text)
+        except ValueError:  # entities
+            self.needle = self.needle or ENTITY
+            raise
 
     def glob(self, pattern: str) -> list[str]:
         """The files an include pattern names, listed only when the pattern (its folder before the
@@ -297,6 +303,14 @@ class Expansion:
             original(node, by, content_only)
 
         return counted
+
+
+def parse_xml(text: str) -> xml.dom.minidom.Document:
+    """A description's XML; one that declares entities is refused (expat stops an entity bomb only
+    after seconds of expansion, and descriptions have no use for entities)."""
+    if ENTITY in text:
+        raise ValueError("the description declares XML entities, which archlog does not expand")
+    return xml.dom.minidom.parseString(text)
 
 
 def _cause(exc: BaseException) -> BaseException:
