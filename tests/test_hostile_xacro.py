@@ -366,11 +366,15 @@ def test_honest_xacro_expands_as_xacro_does_and_xacro_is_restored(tmp_path: Path
 
 def test_xacro_is_restored_after_a_failure(tmp_path: Path) -> None:
     source = tmp_path / "r.xacro"
-    source.write_text(ROBOT.format(body='  <l n="${10**10**10}"/>'))
-    saved = xacro.eval_text
+    source.write_text(ROBOT.format(body='  <xacro:macro name="m" params=""><l n="${10**10**10}"/></xacro:macro>'
+                                        '<xacro:m/>'))
+    state = ("eval_text", "safe_eval", "parse", "eval_all", "replace_node", "_global_symbols", "re_macro_arg",
+             "all_includes", "glob", "substitution_args_context", "filestack", "macrostack")
+    before = {name: getattr(xacro, name) for name in state}
     with pytest.raises(XacroFailure) as failure:
-        expand(source, {}, lambda pkg: None)
-    assert failure.value.code == "budget-exceeded" and xacro.eval_text is saved
+        expand(source, {"a": "1"}, lambda pkg: None)
+    assert (failure.value.code, failure.value.place) == ("budget-exceeded", (source, 3))
+    assert {name: getattr(xacro, name) for name in state} == before
     with routed(Expansion(lambda pkg: None)):
-        assert xacro.eval_text is not saved
-    assert xacro.eval_text is saved
+        assert xacro.eval_text is not before["eval_text"]
+    assert xacro.eval_text is before["eval_text"]

@@ -346,14 +346,15 @@ def _quiet(*_args: object, **_kwargs: object) -> str:
 
 @contextmanager
 def routed(expansion: Expansion) -> Iterator[None]:
-    """xacro with archlog's evaluation, reading, budgets and macro parameter pattern, restored
-    afterwards (xacro keeps its state in module globals; this is not thread-safe)."""
+    """xacro with archlog's evaluation, reading, budgets and macro parameter pattern, and its
+    state (module globals) fresh; all restored afterwards (this is not thread-safe)."""
     xacro = expansion.xacro
     replaced = {"eval_text": expansion.eval_text, "safe_eval": expansion.evaluate, "parse": expansion.parse,
                 "eval_all": expansion.eval_all(xacro.eval_all),
                 "replace_node": expansion.replace_node(xacro.replace_node),
                 "_global_symbols": expansion.names, "re_macro_arg": _MACRO_ARG, "all_includes": [],
-                "glob": SimpleNamespace(glob=expansion.glob)}  # the module xacro lists include patterns with
+                "glob": SimpleNamespace(glob=expansion.glob),  # the module xacro lists include patterns with
+                "substitution_args_context": {}, "filestack": None, "macrostack": None}
     saved = {name: getattr(xacro, name) for name in replaced}
     for name, value in replaced.items():
         setattr(xacro, name, value)
