@@ -118,6 +118,9 @@ CODES: dict[str, Code] = {
                           "Pass it with --env NAME=VALUE if the system depends on it."),
         "too-large": ("error", "A file is over the size cap for its kind; it is not read.",
                       "Raise the cap (docs/security.md) if the file is honest."),
+        "budget-exceeded": ("warning", "An expansion (a robot description, an expression) went past a limit of "
+                            "the budget; what it had read before stays.", "Raise the limit named in [budget] of "
+                            "archlog.toml (docs/security.md) if the input is honest."),
     }),
     **_codes("Reports", {
         "unused-suppression": ("warning", "An inline suppression matches no finding.", "Remove it."),
