@@ -220,6 +220,22 @@ def test_named_launch_file_linked_out(tmp_path: Path) -> None:
     assert ("demo/launch/main.launch.yaml", 1, "outside-workspace") in _check(ws, out, "--launch", str(link))
 
 
+def test_existence_outside_is_not_probed(tmp_path: Path) -> None:
+    """os.path.exists and Path.is_file on a file outside: unknown, whatever the machine holds."""
+    ws, out = tmp_path / "ws", Outside(tmp_path / "outside")
+    launch = _write(_package(ws) / "launch" / "probe.launch.py", f"""
+        import os
+        from pathlib import Path
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            here = os.path.exists("{out.secret_file}") or Path("{out.secret_file}").is_file()
+            return LaunchDescription([Node(package="demo", executable="a", name="found" if here else "absent")])
+        """)
+    assert ("demo/launch/probe.launch.py", 8, "node-name") in _check(ws, out, "--launch", str(launch))
+
+
 def test_ros2_frontends_and_params(tmp_path: Path) -> None:
     """ROS 2 XML and YAML launch files: an included file and parameter files outside, a FIFO."""
     ws, out = tmp_path / "ws", Outside(tmp_path / "outside")

@@ -15,6 +15,7 @@ from typing import Protocol
 
 import yaml
 
+from archlog import sandbox
 from archlog.extract.launch import LaunchError
 from archlog.extract.launch2 import (PYTHON, XML, YAML, Action, Component, Condition, DeclareArgument, Group,
                                      Include, LoadComponents, Node, Opaque, ParamDict, ParamFile, ParamItem,
@@ -631,6 +632,23 @@ def _os_path(function: Callable[..., object]) -> Callable[[CallSite], object]:
     return build
 
 
+def probe(test: Callable[[str], bool], path: str, line: int) -> bool | Unread:
+    """os.path.exists/isfile/isdir (and Path's): whether a file exists outside the analysed paths
+    is the machine's state, not the system's, and is never looked at."""
+    if not sandbox.current().inside(path):
+        return Unread(f"whether {path} exists is not looked at: it is outside the analysed paths", line)
+    return test(path)
+
+
+def _probe(test: Callable[[str], bool]) -> Callable[[CallSite], object]:
+    def build(c: CallSite) -> object:
+        path = _plain_path(c.arg(0, "path"))
+        if path is None:
+            return Unread(f"os.path.{test.__name__} of a value not known statically", c.line)
+        return probe(test, path, c.line)
+    return build
+
+
 def _expanduser(c: CallSite) -> object:
     """os.path.expanduser with the HOME the run was given (never the home of archlog's machine)."""
     path = _plain_path(c.arg(0, "path"))
@@ -745,8 +763,8 @@ FUNCTIONS: dict[str, Callable[[CallSite], object]] = {
     "os.path.dirname": _os_path(os.path.dirname), "os.path.basename": _os_path(os.path.basename),
     "os.path.abspath": _os_path(os.path.abspath), "os.path.realpath": _os_path(os.path.realpath),
     "os.path.normpath": _os_path(os.path.normpath), "os.path.expanduser": _expanduser,
-    "os.path.exists": _os_path(os.path.exists), "os.path.isfile": _os_path(os.path.isfile),
-    "os.path.isdir": _os_path(os.path.isdir), "os.path.splitext": _os_path(os.path.splitext),
+    "os.path.exists": _probe(os.path.exists), "os.path.isfile": _probe(os.path.isfile),
+    "os.path.isdir": _probe(os.path.isdir), "os.path.splitext": _os_path(os.path.splitext),
     "os.getenv": _getenv, "os.environ.get": _getenv, "os.environ.copy": lambda c: Ref("os.environ"),
     "builtins.getattr": _getattr,
     "pathlib.Path": lambda c: PathValue(str(Path(*[_plain_path(a) or "" for a in c.args])))

@@ -23,7 +23,7 @@ from archlog.extract.launch import LaunchError
 from archlog.extract.launch2 import Action, Condition, Where
 from archlog.extract.launch2_api import (API_MODULES, CONSTRUCTORS, FUNCTIONS, CallSite, ConfigsView, ContextValue,
                                          Description, FileHandle, LineDict, LineTuple, PathValue, Ref, S, Unread,
-                                         entities, environment, perform_in, read_text, to_parts)
+                                         entities, environment, perform_in, probe, read_text, to_parts)
 from archlog.extract.launch2_subst import text
 from archlog.extract.substitution import BUILTINS, STR_METHODS, Evaluator, RefusedRead, SubstitutionError, UnknownArg
 
@@ -584,12 +584,14 @@ class _Interpreter(Evaluator):
             return read_text(target, line, self)
         if isinstance(target, PathValue) and name in ("resolve", "absolute", "expanduser"):
             return PathValue(os.path.realpath(target.path))
-        if isinstance(target, PathValue) and name in ("exists", "is_file", "is_dir", "as_posix", "joinpath"):
+        if isinstance(target, PathValue) and name in ("exists", "is_file", "is_dir"):
+            return probe({"exists": os.path.exists, "is_file": os.path.isfile, "is_dir": os.path.isdir}[name],
+                         target.path, line)
+        if isinstance(target, PathValue) and name in ("as_posix", "joinpath"):
             path = Path(target.path)
             if name == "joinpath":
                 return PathValue(str(path.joinpath(*[str(a) for a in args])))
-            return {"exists": path.exists, "is_file": path.is_file, "is_dir": path.is_dir,
-                    "as_posix": path.as_posix}[name]()
+            return path.as_posix()
         if isinstance(target, FileHandle) and name in ("__enter__", "close"):
             return target
         if isinstance(target, str):
