@@ -18,6 +18,7 @@ from pathlib import Path
 
 import yaml
 
+from archlog.extract import bounded_yaml
 from archlog.extract.launch import Element
 from archlog.extract.substitution import BUILTINS, MATH, SubstitutionError, UnknownArg, Unresolved, restricted_eval
 
@@ -80,7 +81,6 @@ class Context:
     serial: Iterator[int]
     condition: str | None = None
     chain: tuple[Element, ...] = ()  # the include Elements that led here, outermost first
-    depth: int = 0
 
     def scoped(self) -> "Context":
         """A pushed copy (launch's PushLaunchConfigurations + PushEnvironment): the dictionaries
@@ -234,7 +234,7 @@ def yaml_value(value: str) -> object:
     if not value:
         return ""
     try:
-        return yaml.safe_load(value)
+        return bounded_yaml.load(value)
     except yaml.YAMLError:
         return value
 

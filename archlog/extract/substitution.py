@@ -4,7 +4,9 @@ The grammar follows roslaunch 1.15: `$(cmd words)` cannot nest (a `$` inside is 
 unterminated `$(` stays literal, `find` is resolved after the others, and `$(eval expr)` applies
 only when it is the whole value. `$(eval)` is interpreted over Python's AST with roslaunch's
 names (args, true/false, arg/find/env/optenv/anon/dirname, math, a few pure builtins); nothing
-from the project is ever executed.
+from the project is ever executed. Expansion spends from the budget (archlog.budget): characters
+for what substitutions and operations are about to build (checked before building), a step per
+evaluated node, and the nesting depth of an expression.
 """
 
 from __future__ import annotations
@@ -18,6 +20,8 @@ import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+
+from archlog import budget
 
 
 class SubstitutionError(Exception):
@@ -108,7 +112,9 @@ def _pass(text: str, ctx: SubstContext, commands: tuple[str, ...]) -> str:
             if words[0] == "find":
                 resolved = _find(resolved, placeholder, words[1:], ctx)
             else:
-                resolved = resolved.replace(placeholder, _one(words[0], words[1:], ctx))
+                value = _one(words[0], words[1:], ctx)
+                budget.charge("characters", resolved.count(placeholder) * len(value))
+                resolved = resolved.replace(placeholder, value)
     return resolved
 
 
@@ -190,7 +196,10 @@ MATH = {k: v for k, v in vars(math).items() if not k.startswith("_")}
 BUILTINS = {f.__name__: f for f in (int, float, str, bool, list, dict, tuple, len, abs, min, max, round, sorted,
                                     sum, map, filter, zip, any, all, reversed, enumerate, chr, ord, hex, oct, bin,
                                     divmod, repr, isinstance)}
-_HUGE_WIDTH = re.compile(r"\d{5,}")
+_NUMBER = re.compile(r"\d+")
+_NESTED_FIELD = re.compile(r"\{[^{}]*\{")
+_FIELD_ATTRIBUTE = re.compile(r"\{[^{}:!]*\.")  # {0.attr}: str.format reading an attribute
+_SEQUENCES = (str, bytes, list, tuple)
 
 
 def auto_value(text: str) -> object:
@@ -218,10 +227,99 @@ def restricted_eval(expr: str, lookup: Callable[[str], object]) -> object:
     if "__" in expr:
         raise SubstitutionError("$(eval ...) may not contain double underscore expressions")
     try:
-        tree = ast.parse(expr.strip(), mode="eval")
+        tree = parse(expr.strip(), "<eval>", "eval")
     except SyntaxError as exc:
         raise SubstitutionError(f"$(eval) syntax error: {exc.msg}") from None
-    return Evaluator(lookup).visit(tree.body)
+    return Evaluator(lookup).visit(tree.body)  # type: ignore[attr-defined]
+
+
+class TooDeep(budget.BudgetExceeded):
+    """Source nested past the depth limit (at `line`)."""
+
+    def __init__(self, limit: int, line: int) -> None:
+        super().__init__("depth", limit)
+        self.line = line
+
+
+def parse(source: str, filename: str, mode: str = "exec") -> ast.AST:
+    """`ast.parse` within the depth budget: a source too deeply nested for the parser, or whose
+    tree is deeper than the limit, raises TooDeep (SyntaxError passes through)."""
+    limit = budget.current().limits["depth"]
+    try:
+        tree = ast.parse(source, filename, mode)
+    except (RecursionError, MemoryError):
+        raise TooDeep(limit, 1) from None
+    depth, line = tree_depth(tree)
+    if depth > limit:
+        raise TooDeep(limit, line)
+    return tree
+
+
+def tree_depth(tree: ast.AST) -> tuple[int, int]:
+    """How deeply a syntax tree nests, and the line where it is deepest (measured without recursion)."""
+    deepest, stack = (0, 1), [(tree, 1, 1)]
+    while stack:
+        node, depth, line = stack.pop()
+        line = getattr(node, "lineno", line)
+        deepest = max(deepest, (depth, line), key=lambda d: d[0])
+        stack.extend((child, depth + 1, line) for child in ast.iter_child_nodes(node))
+    return deepest
+
+
+def result_size(op: ast.operator, left: object, right: object) -> int:
+    """How many characters (digits, items) `left op right` is about to build: what it costs."""
+    if isinstance(op, ast.Mult):
+        for seq, count in ((left, right), (right, left)):
+            if isinstance(seq, _SEQUENCES) and isinstance(count, int):
+                return len(seq) * max(count, 0)
+        if isinstance(left, int) and isinstance(right, int):
+            return _digits(left) + _digits(right)
+    if isinstance(op, ast.Add) and isinstance(left, _SEQUENCES) and isinstance(right, _SEQUENCES):
+        return len(left) + len(right)
+    if isinstance(op, ast.Pow) and isinstance(left, int) and isinstance(right, int) and right > 0 and abs(left) > 1:
+        return math.ceil(right * math.log10(abs(left)))
+    if isinstance(op, ast.Mod) and isinstance(left, str):
+        return format_size(left, right if isinstance(right, tuple) else (right,), "*" in left)
+    return 0
+
+
+def call_size(function: object, args: list[object], kwargs: dict[str, object]) -> int:
+    """How many characters (digits) a call of a pure function or str method is about to build."""
+    owner, name = getattr(function, "__self__", None), getattr(function, "__name__", "")
+    if isinstance(owner, str) and name == "format":
+        return format_size(owner, [*args, *kwargs.values()], bool(_NESTED_FIELD.search(owner)))
+    if isinstance(owner, str) and name == "join" and args and isinstance(args[0], (list, tuple)):
+        return sum(len(a) for a in args[0] if isinstance(a, str)) + len(owner) * len(args[0])
+    if isinstance(owner, str) and name == "replace" and len(args) >= 2 and all(isinstance(a, str) for a in args[:2]):
+        old, new = args[0], args[1]
+        return len(owner) + (owner.count(old) if old else len(owner) + 1) * len(new)  # type: ignore[arg-type]
+    numbers = [a for a in args if isinstance(a, int)]
+    if function is math.factorial and numbers and numbers[0] > 1:
+        return math.ceil(math.lgamma(numbers[0] + 1) / math.log(10))
+    if function in (math.comb, math.perm) and len(numbers) == 2 and numbers[0] > 1:
+        return math.ceil(min(numbers[0], abs(numbers[1])) * math.log10(numbers[0]))
+    if function in (math.prod, math.lcm, sum):
+        items = args[0] if function is not math.lcm and args and isinstance(args[0], (list, tuple)) else args
+        return sum(_digits(i) if isinstance(i, int) else len(i) if isinstance(i, _SEQUENCES) else 0
+                   for i in [*items, *args[1:]])
+    return 0
+
+
+def format_size(template: str, args: tuple[object, ...] | list[object], widths_in_args: bool) -> int:
+    """An upper bound of what formatting `args` into `template` builds: the template, the arguments,
+    every number written in the template (a width or precision) and, when the template takes
+    widths from the arguments (`*`, a nested field), every integer argument."""
+    size = len(template) + sum(int(n) if len(n) < 19 else 10 ** 19 for n in _NUMBER.findall(template))
+    for arg in args:
+        if isinstance(arg, _SEQUENCES):
+            size += len(arg)
+        elif isinstance(arg, int):
+            size += min(abs(arg), 10 ** 19) if widths_in_args else _digits(arg)
+    return size
+
+
+def _digits(number: int) -> int:
+    return abs(number).bit_length() * 3 // 10 + 1
 
 
 def _eval(expr: str, ctx: SubstContext) -> str:
@@ -240,7 +338,11 @@ def _eval(expr: str, ctx: SubstContext) -> str:
             return auto_value(ctx.arg(name))
         return BUILTINS[name]
 
-    return str(restricted_eval(expr, lookup))
+    result = restricted_eval(expr, lookup)
+    try:
+        return str(result)
+    except ValueError as exc:  # an integer with more digits than Python converts
+        raise SubstitutionError(f"$(eval) {exc}") from None
 
 
 def arithmetic(expr: str) -> object:
@@ -258,6 +360,10 @@ class Evaluator(ast.NodeVisitor):
 
     def __init__(self, lookup: Callable[[str], object]) -> None:
         self.lookup = lookup
+
+    def visit(self, node: ast.AST) -> object:
+        budget.spend("steps")
+        return super().visit(node)
 
     def generic_visit(self, node: ast.AST) -> object:
         raise SubstitutionError(f"$(eval) does not allow {type(node).__name__}")
@@ -277,14 +383,15 @@ class Evaluator(ast.NodeVisitor):
         return slice(*(None if part is None else self.visit(part) for part in (node.lower, node.upper, node.step)))
 
     def visit_JoinedStr(self, node: ast.JoinedStr) -> object:
-        return "".join(str(self.visit(value)) for value in node.values)
+        pieces = [str(self.visit(value)) for value in node.values]
+        budget.charge("characters", sum(len(p) for p in pieces))
+        return "".join(pieces)
 
     def visit_FormattedValue(self, node: ast.FormattedValue) -> object:
         value = self.visit(node.value)
         value = {ord("s"): str, ord("r"): repr, ord("a"): ascii}.get(node.conversion, lambda v: v)(value)
         spec = str(self.visit(node.format_spec)) if node.format_spec is not None else ""
-        if _HUGE_WIDTH.search(spec):
-            raise SubstitutionError("$(eval) format width too large")
+        budget.charge("characters", format_size(spec, (value,), False))
         try:
             return format(value, spec)
         except (TypeError, ValueError) as exc:
@@ -324,15 +431,10 @@ class Evaluator(ast.NodeVisitor):
         if type(node.op) not in _BINOPS:
             return self.generic_visit(node)
         left, right = self.visit(node.left), self.visit(node.right)
-        if isinstance(node.op, ast.Pow) and isinstance(right, (int, float)) and abs(right) > 64:
-            raise SubstitutionError("$(eval) exponent too large")
-        if isinstance(node.op, ast.Mult) and any(isinstance(v, (str, list)) for v in (left, right)):
-            count = right if isinstance(right, int) else left
-            if isinstance(count, int) and count > 10_000:
-                raise SubstitutionError("$(eval) repetition too large")
+        budget.charge("characters", result_size(node.op, left, right))
         try:
             return _BINOPS[type(node.op)](left, right)
-        except (TypeError, ZeroDivisionError, ValueError) as exc:
+        except (TypeError, ZeroDivisionError, ValueError, OverflowError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
 
     def visit_Compare(self, node: ast.Compare) -> object:
@@ -363,12 +465,13 @@ class Evaluator(ast.NodeVisitor):
             target = self.visit(node.func.value)
             if not isinstance(target, str):
                 raise SubstitutionError(f"$(eval) cannot call {node.func.attr} on {type(target).__name__}")
-            if node.func.attr == "format" and ("__" in target or _HUGE_WIDTH.search(target)):
-                raise SubstitutionError("$(eval) format string not allowed")
+            if node.func.attr == "format" and ("__" in target or _FIELD_ATTRIBUTE.search(target)):
+                raise SubstitutionError("$(eval) format string not allowed (it reads attributes)")
             function = getattr(target, node.func.attr)
         else:
             raise SubstitutionError(f"$(eval) cannot call {ast.unparse(node.func)}")
+        budget.charge("characters", call_size(function, args, kwargs))
         try:
             return function(*args, **kwargs)  # type: ignore[operator]
-        except (TypeError, ValueError, OverflowError) as exc:
+        except (TypeError, ValueError, OverflowError, LookupError, AttributeError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
