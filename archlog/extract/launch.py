@@ -14,6 +14,7 @@ diagnostic at the element that crossed it.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import shlex
@@ -142,6 +143,7 @@ class LaunchInterpreter:
 
     def __init__(self, workspace: Workspace, diagnostics: DiagnosticSink) -> None:
         self.workspace = workspace
+        self.display = functools.cache(workspace.display)  # paths as reports show them (resolving is slow)
         self.diagnostics = diagnostics
         self.config = LaunchConfig()
         self._count = 0
@@ -185,18 +187,18 @@ class LaunchInterpreter:
     def element_at(self, file: Path, line: int) -> Element:
         """A new element at file:line (ids are shared by both launch dialects)."""
         self._count += 1
-        return Element(f"e{self._count:05d}", self.workspace.display(file), line)
+        return Element(f"e{self._count:05d}", self.display(file), line)
 
     def include_cycle(self, target: Path, file: Path, chain: tuple[Element, ...]) -> str | None:
         """When `target` is being loaded already (by `file` or the includes of `chain` that led to
         it), the files of the cycle an include of it would close, else None."""
-        opened = [e.file for e in chain] + [self.workspace.display(file)]
-        shown = self.workspace.display(target)
+        opened = [e.file for e in chain] + [self.display(file)]
+        shown = self.display(target)
         return " -> ".join([*opened[opened.index(shown):], shown]) if shown in opened else None
 
     def _diag(self, file: Path, el: etree._Element | None, code: str, message: str, severity: str = "error") -> None:
         line = el.sourceline if el is not None and el.sourceline else 1
-        self.diagnostics.add(self.workspace.display(file), line, code, message, severity)
+        self.diagnostics.add(self.display(file), line, code, message, severity)
 
     @staticmethod
     def _attr(scope: _Scope, el: etree._Element, key: str) -> str | None:
@@ -226,7 +228,7 @@ class LaunchInterpreter:
     # -- files and children ---------------------------------------------------------------
     def _file(self, path: Path, scope: _Scope) -> bool:
         """Load a file into the scope; False when it could not be read at all."""
-        shown = self.workspace.display(path)
+        shown = self.display(path)
         if path.suffix in (".py", ".yaml", ".yml"):
             return self._ros2_file(path, scope)
         try:
@@ -278,7 +280,7 @@ class LaunchInterpreter:
             yield
             return
         except (budget.BudgetExceeded, RecursionError, MemoryError) as exc:
-            crossing = budget.crossed(self.workspace.display(path), el.sourceline or 1, exc)
+            crossing = budget.crossed(self.display(path), el.sourceline or 1, exc)
         except budget.Crossed as exc:
             crossing = exc
         if crossing.final:

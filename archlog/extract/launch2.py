@@ -261,7 +261,7 @@ class Ros2Launch:
         return self._descriptions[key]
 
     def diag(self, where: Where, code: str, message: str, severity: str = "warning") -> None:
-        self.diagnostics.add(self.workspace.display(where.file), where.line, code, message, severity)
+        self.diagnostics.add(self.interp.display(where.file), where.line, code, message, severity)
 
     def element(self, file: Path, line: int) -> Element:
         return self.interp.element_at(file, line)
@@ -285,7 +285,7 @@ class Ros2Launch:
             self._within(action, ctx, execute)
             return
         except (budget.BudgetExceeded, RecursionError, MemoryError) as exc:
-            crossing = budget.crossed(self.workspace.display(action.where.file), action.where.line, exc)
+            crossing = budget.crossed(self.interp.display(action.where.file), action.where.line, exc)
         except budget.Crossed as exc:
             crossing = exc
         if crossing.final:
@@ -614,7 +614,7 @@ class Ros2Launch:
         content = self._substituted(path, where, ctx) if substitute else None
         key = (path.resolve(), content)
         if key not in self._param_files:
-            shown = self.workspace.display(path)
+            shown = self.interp.display(path)
             self._param_files[key] = [(pattern, name, value, self.element(path, line)) for pattern, name, value, line
                                       in load_param_file(path, shown, self.diagnostics, content)]
         entries = self._param_files[key]

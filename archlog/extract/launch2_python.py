@@ -283,9 +283,9 @@ class _Interpreter(Evaluator):
             args = [a.path if isinstance(a, PathValue) else a for a in args]  # str(path) is its text
             if any(isinstance(v, Unread) for v in [*args, *kwargs.values()]):
                 return next(v for v in [*args, *kwargs.values()] if isinstance(v, Unread))
+            budget.charge("characters", call_size(function, args, kwargs))
             if any(not _plain(v) for v in [*args, *kwargs.values()]):
                 return Unread(f"{getattr(function, '__name__', 'a builtin')}() of a launch object", line)
-            budget.charge("characters", call_size(function, args, kwargs))
             try:
                 return function(*args, **kwargs)  # type: ignore[operator]
             except (TypeError, ValueError, KeyError, IndexError, AttributeError, OverflowError) as exc:
@@ -647,7 +647,9 @@ def _constant(value: object) -> ast.Constant:
 
 
 def _plain(value: object) -> bool:
-    """A plain Python value (what the restricted evaluator computes with)."""
+    """A plain Python value (what the restricted evaluator computes with); looking at each element
+    is an evaluation step."""
+    budget.spend("steps")
     if isinstance(value, (list, tuple)):
         return all(_plain(v) for v in value)
     if isinstance(value, dict):

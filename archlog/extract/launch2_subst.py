@@ -18,6 +18,7 @@ from pathlib import Path
 
 import yaml
 
+from archlog import budget
 from archlog.extract import bounded_yaml
 from archlog.extract.launch import Element
 from archlog.extract.substitution import BUILTINS, MATH, SubstitutionError, UnknownArg, Unresolved, restricted_eval
@@ -193,8 +194,11 @@ def _flush(buffer: list[str], parts: list[Subst]) -> None:
 
 # -- evaluation ---------------------------------------------------------------------------
 def perform(parts: Parts, ctx: Context) -> str:
-    """The string `parts` evaluate to in `ctx`."""
-    return "".join(_perform_one(part, ctx) for part in parts)
+    """The string `parts` evaluate to in `ctx` (what substitutions bring in is charged to the budget
+    before it is joined)."""
+    pieces = [_perform_one(part, ctx) for part in parts]
+    budget.charge("characters", sum(len(piece) for part, piece in zip(parts, pieces) if not isinstance(part, Text)))
+    return "".join(pieces)
 
 
 def describe(parts: Parts) -> str:

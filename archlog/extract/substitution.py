@@ -92,6 +92,8 @@ class SubstContext:
 
 def substitute(text: str, ctx: SubstContext) -> str:
     """Resolve every substitution in `text` as roslaunch does."""
+    if "$(" not in text:
+        return text
     if text.startswith("$(eval ") and text.endswith(")"):
         return _eval(text[7:-1], ctx)
     text = _pass(text, ctx, ("env", "optenv", "dirname", "anon", "arg"))
@@ -293,6 +295,8 @@ def call_size(function: object, args: list[object], kwargs: dict[str, object]) -
     if isinstance(owner, str) and name == "replace" and len(args) >= 2 and all(isinstance(a, str) for a in args[:2]):
         old, new = args[0], args[1]
         return len(owner) + (owner.count(old) if old else len(owner) + 1) * len(new)  # type: ignore[arg-type]
+    if function in (str, repr):
+        return sum(text_size(a) for a in args)
     numbers = [a for a in args if isinstance(a, int)]
     if function is math.factorial and numbers and numbers[0] > 1:
         return math.ceil(math.lgamma(numbers[0] + 1) / math.log(10))
@@ -311,11 +315,31 @@ def format_size(template: str, args: tuple[object, ...] | list[object], widths_i
     widths from the arguments (`*`, a nested field), every integer argument."""
     size = len(template) + sum(int(n) if len(n) < 19 else 10 ** 19 for n in _NUMBER.findall(template))
     for arg in args:
-        if isinstance(arg, _SEQUENCES):
-            size += len(arg)
-        elif isinstance(arg, int):
-            size += min(abs(arg), 10 ** 19) if widths_in_args else _digits(arg)
+        if isinstance(arg, int) and not isinstance(arg, bool) and widths_in_args:
+            size += min(abs(arg), 10 ** 19)
+        else:
+            size += text_size(arg)
     return size
+
+
+def text_size(value: object) -> int:
+    """About how many characters str() of a value writes: a part shared by several containers (a
+    list repeated into itself) is written out each time it appears, so it counts each time."""
+    sizes: dict[int, int] = {}
+
+    def size(item: object) -> int:
+        if isinstance(item, (str, bytes)):
+            return len(item) + 3
+        if isinstance(item, int):
+            return _digits(item)
+        if not isinstance(item, (list, tuple, dict, set, frozenset)):
+            return 24
+        if id(item) not in sizes:
+            parts = [p for pair in item.items() for p in pair] if isinstance(item, dict) else list(item)
+            sizes[id(item)] = 2 + sum(size(p) + 2 for p in parts)
+        return sizes[id(item)]
+
+    return size(value)
 
 
 def _digits(number: int) -> int:
@@ -389,11 +413,11 @@ class Evaluator(ast.NodeVisitor):
 
     def visit_FormattedValue(self, node: ast.FormattedValue) -> object:
         value = self.visit(node.value)
-        value = {ord("s"): str, ord("r"): repr, ord("a"): ascii}.get(node.conversion, lambda v: v)(value)
         spec = str(self.visit(node.format_spec)) if node.format_spec is not None else ""
-        budget.charge("characters", format_size(spec, (value,), False))
+        budget.charge("characters", format_size(spec, (value,), False))  # before it is written out
+        convert = {ord("s"): str, ord("r"): repr, ord("a"): ascii}.get(node.conversion, lambda v: v)
         try:
-            return format(value, spec)
+            return format(convert(value), spec)
         except (TypeError, ValueError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
 
