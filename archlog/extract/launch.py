@@ -7,9 +7,10 @@ pass_all_args), remaps apply to nodes declared after them in the same scope and 
 would stop with an error, archlog reports a diagnostic at the element and goes on.
 
 Each launch file given is one unit of the expansion budget (archlog.budget): every element
-(after includes) and nesting level counts, an include of a file that is being loaded (a cycle)
-is refused as roslaunch would fail, and a crossing ends that unit with a `budget-exceeded`
-diagnostic at the element that crossed it.
+(after includes) and nesting level counts, and an include of a file that is being loaded (a
+cycle) is refused as roslaunch would fail. A limit crossed is a `budget-exceeded` diagnostic at
+the innermost element that crossed it: a count spent past its limit ends the unit there (what
+was read stays), a nesting or a string refused before it was built skips only that element.
 """
 
 from __future__ import annotations
@@ -28,8 +29,8 @@ import yaml
 from lxml import etree
 
 from archlog import budget, names
-from archlog.extract import bounded_yaml
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract import bounded_yaml
 from archlog.extract.substitution import (SubstContext, SubstitutionError, UnknownArg, Unresolved, arithmetic,
                                           auto_value, substitute)
 from archlog.extract.workspace import Workspace

@@ -9,7 +9,8 @@ made there conditional on it. An OpaqueFunction runs at launch time with the con
 would give it. What cannot be read is an `Unread` value, reported where it ends up. Reading spends
 from the budget (archlog.budget): the source's nesting is checked before it is walked, each
 statement and expression evaluated is a step, and what the file builds (strings, lists) is
-charged before it is built; a crossing ends the reading at the statement that crossed it.
+charged before it is built. A value refused is Unread (reported at its line); steps spent past
+the limit end the reading at the statement that crossed it.
 """
 
 from __future__ import annotations

@@ -300,6 +300,8 @@ def call_size(function: object, args: list[object], kwargs: dict[str, object]) -
     numbers = [a for a in args if isinstance(a, int)]
     if function is math.factorial and numbers and numbers[0] > 1:
         return math.ceil(math.lgamma(numbers[0] + 1) / math.log(10))
+    if function is round and len(numbers) == 2 and numbers[1] < 0:  # computes 10 ** -ndigits
+        return -numbers[1]
     if function in (math.comb, math.perm) and len(numbers) == 2 and numbers[0] > 1:
         return math.ceil(min(numbers[0], abs(numbers[1])) * math.log10(numbers[0]))
     if function in (math.prod, math.lcm, sum):
