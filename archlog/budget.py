@@ -46,6 +46,12 @@ class Budget:
         if self.used[kind] > self.limits[kind]:
             raise BudgetExceeded(kind, self.limits[kind])
 
+    def charge(self, kind: str, amount: int) -> None:
+        """Spend `amount` of `kind` on something about to be built; when it would not fit, it is
+        refused (BudgetExceeded) without spending, so the unit can go on without it."""
+        self.check(kind, self.used[kind] + amount)
+        self.spend(kind, amount)
+
     def check(self, kind: str, value: int) -> None:
         """A measure that is not cumulative (a depth, a size about to be built) against its limit."""
         if value > self.limits[kind]:
@@ -92,11 +98,7 @@ def spend(kind: str, amount: int = 1) -> None:
 
 
 def charge(kind: str, amount: int) -> None:
-    """Spend `amount` of `kind` on something about to be built; when it would not fit, it is refused
-    (BudgetExceeded) without spending, so the unit can go on without it."""
-    budget = current()
-    budget.check(kind, budget.used[kind] + amount)
-    budget.spend(kind, amount)
+    current().charge(kind, amount)
 
 
 class Crossed(Exception):

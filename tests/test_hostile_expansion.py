@@ -121,6 +121,9 @@ CASES = [
          "laughs.launch", line=2),
     case("rosparam_deep", "ros1", {"deep.launch": ros1("  <rosparam>\n    a: " + "[" * 5000 + "]" * 5000
                                                        + "\n  </rosparam>\n")}, "deep.launch", line=2),
+    case("rviz_laughs", "ros1", {"rviz.launch": ros1('  <node pkg="rviz" type="rviz" name="rviz" '
+                                                     'args="-d $(find demo)/launch/laughs.rviz"/>\n'),
+                                 "laughs.rviz": laughs("")}, "rviz.launch", line=2),
     ros1_eval("eval_power_tower", "9**9**9**9"),
     ros1_eval("eval_factorial", "factorial(10**8)"),
     ros1_eval("eval_percent_width", "'%99999999d' % 1"),

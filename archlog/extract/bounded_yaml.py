@@ -4,7 +4,8 @@ Aliases make a small file stand for a huge tree ("billion laughs"): each alias i
 size of what it expands to (elements, characters of scalars, nesting), so consumers that walk the
 expanded tree stay within the budget. Nesting is checked while composing, before PyYAML's
 recursive composer can run out of stack. A recursive alias (an anchor used inside itself) would
-expand forever and crosses the depth limit. `where` is the line the loader was at when it stopped.
+expand forever and crosses the depth limit. A loader spends from the budget of the unit being
+read when it is made (outside one, from a budget of its own: one per file). `where` is the line the loader was at when it stopped.
 """
 
 from __future__ import annotations
@@ -21,18 +22,19 @@ _Size = tuple[int, int, int]  # elements, characters, height of a node's expande
 
 
 class BoundedLoader(yaml.SafeLoader):
-    """A SafeLoader that spends from the current budget as it composes."""
+    """A SafeLoader that spends, as it composes, from the budget current when it was made."""
 
     def __init__(self, stream: Any) -> None:
         super().__init__(stream)
         self.where = 1
+        self._budget = budget.current()
         self._depth = 0
         self._sizes: dict[int, _Size] = {}
 
     def compose_node(self, parent: yaml.Node | None, index: object) -> yaml.Node:
         event = self.peek_event()
         self.where = event.start_mark.line + 1
-        limits = budget.current()
+        limits = self._budget
         limits.check("depth", self._depth + 1)
         self._depth += 1
         try:
@@ -47,8 +49,8 @@ class BoundedLoader(yaml.SafeLoader):
             elements, characters, height = self._measure(node)
             self._sizes[id(node)] = (elements, characters, height)
             elements, characters = 1, characters if isinstance(node, yaml.ScalarNode) else 0
-        budget.charge("elements", elements)
-        budget.charge("characters", characters)
+        limits.charge("elements", elements)
+        limits.charge("characters", characters)
         limits.check("depth", self._depth + height)
         return node
 
@@ -72,5 +74,5 @@ def crossing_in(loader: BoundedLoader, shown: str) -> Iterator[None]:
 
 
 def load(text: str, loader: type[BoundedLoader] = BoundedLoader) -> object:
-    """The document in `text`, read within the budget (raises yaml.YAMLError or BudgetExceeded)."""
+    """The document in `text`, read within the budget; raises yaml.YAMLError or BudgetExceeded."""
     return yaml.load(text, Loader=loader)

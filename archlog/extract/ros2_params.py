@@ -32,16 +32,17 @@ def load_param_file(path: Path, shown: str, diagnostics: DiagnosticSink, text: s
         except (OSError, UnicodeDecodeError) as exc:
             diagnostics.add(shown, 1, "param-file", f"cannot read parameter file: {exc}", "error")
             return []
-    loader = BoundedLoader(text)
-    with budget.scope(), crossing_in(loader, shown):
-        try:
-            root = loader.get_single_node()
-        except yaml.YAMLError as exc:
-            mark = getattr(exc, "problem_mark", None)
-            diagnostics.add(shown, mark.line + 1 if mark else 1, "param-file", f"invalid YAML: {exc}", "error")
-            return []
-        finally:
-            loader.dispose()
+    with budget.scope():
+        loader = BoundedLoader(text)
+        with crossing_in(loader, shown):
+            try:
+                root = loader.get_single_node()
+            except yaml.YAMLError as exc:
+                mark = getattr(exc, "problem_mark", None)
+                diagnostics.add(shown, mark.line + 1 if mark else 1, "param-file", f"invalid YAML: {exc}", "error")
+                return []
+            finally:
+                loader.dispose()
     if root is None:
         return []
     entries: list[Entry] = []
