@@ -126,6 +126,7 @@ CASES = [
                                  "laughs.rviz": laughs("")}, "rviz.launch", line=2),
     ros1_eval("eval_power_tower", "9**9**9**9"),
     ros1_eval("eval_factorial", "factorial(10**8)"),
+    ros1_eval("eval_exponent_past_floats", "2**(10**400)"),
     ros1_eval("eval_percent_width", "'%99999999d' % 1"),
     ros1_eval("eval_fstring_width", "f'{1:>99999999}'"),
     ros1_eval("eval_format_width", "'{:>99999999}'.format(1)"),

@@ -202,6 +202,7 @@ _NUMBER = re.compile(r"\d+")
 _NESTED_FIELD = re.compile(r"\{[^{}]*\{")
 _FIELD_ATTRIBUTE = re.compile(r"\{[^{}:!]*\.")  # {0.attr}: str.format reading an attribute
 _SEQUENCES = (str, bytes, list, tuple)
+_HUGE = 2 ** 62  # more characters than any budget allows
 
 
 def auto_value(text: str) -> object:
@@ -279,7 +280,7 @@ def result_size(op: ast.operator, left: object, right: object) -> int:
     if isinstance(op, ast.Add) and isinstance(left, _SEQUENCES) and isinstance(right, _SEQUENCES):
         return len(left) + len(right)
     if isinstance(op, ast.Pow) and isinstance(left, int) and isinstance(right, int) and right > 0 and abs(left) > 1:
-        return math.ceil(right * math.log10(abs(left)))
+        return _times(right, math.log10(abs(left)))
     if isinstance(op, ast.Mod) and isinstance(left, str):
         return format_size(left, right if isinstance(right, tuple) else (right,), "*" in left)
     return 0
@@ -299,11 +300,11 @@ def call_size(function: object, args: list[object], kwargs: dict[str, object]) -
         return sum(text_size(a) for a in args)
     numbers = [a for a in args if isinstance(a, int)]
     if function is math.factorial and numbers and numbers[0] > 1:
-        return math.ceil(math.lgamma(numbers[0] + 1) / math.log(10))
+        return _times(numbers[0], math.log10(numbers[0]))  # n! < n**n
     if function is round and len(numbers) == 2 and numbers[1] < 0:  # computes 10 ** -ndigits
         return -numbers[1]
     if function in (math.comb, math.perm) and len(numbers) == 2 and numbers[0] > 1:
-        return math.ceil(min(numbers[0], abs(numbers[1])) * math.log10(numbers[0]))
+        return _times(min(numbers[0], abs(numbers[1])), math.log10(numbers[0]))
     if function in (math.prod, math.lcm, sum):
         items = args[0] if function is not math.lcm and args and isinstance(args[0], (list, tuple)) else args
         return sum(_digits(i) if isinstance(i, int) else len(i) if isinstance(i, _SEQUENCES) else 0
@@ -342,6 +343,11 @@ def text_size(value: object) -> int:
         return sizes[id(item)]
 
     return size(value)
+
+
+def _times(count: int, digits: float) -> int:
+    """`count` times `digits`, rounded up (a count too large for a float stands for "too many")."""
+    return math.ceil(count * digits) if count < _HUGE else _HUGE
 
 
 def _digits(number: int) -> int:
