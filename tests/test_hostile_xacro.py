@@ -174,7 +174,7 @@ def _fan_out(levels: int) -> str:
 
 
 BOMBS = {  # the body, the line that crosses the budget and what the message says
-    "power.xacro": ('  <link name="${10**10**10}"/>', 3, "digits"),
+    "power.xacro": ('  <link name="${10**10**10}"/>', 3, "characters"),
     "tower.xacro": ('  <link name="${((9**64)**64)**64}"/>', 3, "digits"),
     "repeat.xacro": ("  <e>${'a' * 10**9}</e>", 3, "characters"),
     "joined.xacro": ("  <e>${'-'.join(['a' * 100000] * 100000)}</e>", 3, "characters"),
