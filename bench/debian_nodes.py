@@ -53,7 +53,8 @@ INSTALL = ("libtopic-tools-dev libself-test-dev libpolled-camera-dev libpcl-ros-
            "libimage-publisher-dev libimage-view-dev image-transport-tools polled-camera-tool tf-tools "
            "tf2-tools libdiagnostic-aggregator-tools python3-diagnostic-common-diagnostics libself-test-tools "
            "libnodeletlib-tools ros-robot-state-publisher joint-state-publisher topic-tools python3-topic-tools "
-           "python3-rosbag pcl-ros-tools")
+           "python3-rosbag pcl-ros-tools python3-psutil python3-diagnostic-updater python3-opencv ntpdate "
+           "python3-cv-bridge python3-image-geometry python3-stereo-msgs")
 # Debian source package -> folder prefix in --debsrc (apt-get source's `NAME-VERSION`).
 SOURCES = {
     "ros-ros-comm": "ros-ros-comm-1.15.15+ds",
