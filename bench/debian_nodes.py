@@ -48,7 +48,8 @@ from archlog import observe  # noqa: E402
 FIXTURES = HERE / "debian_nodes"
 FEEDER = FIXTURES / "feeder.py"
 ARCHLOG = [sys.executable, "-m", "archlog"]
-INSTALL = ("libtopic-tools-dev libself-test-dev libpolled-camera-dev libpcl-ros-dev ros-image-proc ros-image-publisher ros-image-rotate ros-image-view ros-stereo-image-proc "
+INSTALL = ("libtopic-tools-dev libself-test-dev libpolled-camera-dev libpcl-ros-dev ros-image-proc ros-image-publisher "
+           "ros-image-rotate ros-image-view ros-stereo-image-proc "
            "libimage-proc-dev libdepth-image-proc-dev libstereo-image-proc-dev libimage-rotate-dev "
            "libimage-publisher-dev libimage-view-dev image-transport-tools polled-camera-tool tf-tools "
            "tf2-tools libdiagnostic-aggregator-tools python3-diagnostic-common-diagnostics libself-test-tools "
