@@ -78,7 +78,7 @@ def concat(*parts: Value) -> Value:
         return Unknown(f"{combinations} alternatives, more than the budget allows", "", 0)
     for index, part in enumerate(parts):
         if isinstance(part, Alternatives):
-            every, options = part.every, []
+            every, options = part.every, list[Value]()
             for option in part.options:
                 joined = concat(*parts[:index], option, *parts[index + 1:])
                 if isinstance(joined, Alternatives):  # several alternative parts: all combinations
