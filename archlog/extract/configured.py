@@ -9,7 +9,7 @@ from pathlib import Path
 
 import yaml
 
-from archlog import sandbox
+from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.command_line import split_options
 from archlog.extract.launch import LaunchConfig, LaunchNode
@@ -67,6 +67,10 @@ def _rviz(node: LaunchNode, config: Path, diagnostics: DiagnosticSink) -> list[P
     except sandbox.Refused as exc:
         diagnostics.add(node.elem.file, node.elem.line, exc.code,
                         f"rviz configuration not read ({exc}); its displays' topics are unknown", "warning")
+        return []
+    except budget.BudgetExceeded as exc:
+        diagnostics.add(node.elem.file, node.elem.line, "budget-exceeded",
+                        f"rviz configuration {config}: {exc}; its displays' topics are unknown", "error")
         return []
     except yaml.YAMLError as exc:
         diagnostics.add(node.elem.file, node.elem.line, "rviz-config",

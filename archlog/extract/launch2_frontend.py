@@ -19,6 +19,7 @@ import yaml
 from lxml import etree
 
 from archlog import sandbox
+from archlog.extract import bounded_yaml
 from archlog.extract.files import parse_xml
 from archlog.extract.launch import LaunchError
 from archlog.extract.launch2 import (Action, Component, Condition, DeclareArgument, Group, Include, LoadComponents,
@@ -111,8 +112,8 @@ class _LineDict(dict):
     line = 1
 
 
-class _LineLoader(yaml.SafeLoader):
-    """PyYAML's safe loader; mappings remember where they start."""
+class _LineLoader(bounded_yaml.BoundedLoader):
+    """PyYAML's safe loader within the budget; mappings remember where they start."""
 
 
 def _mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> _LineDict:
@@ -129,7 +130,10 @@ def describe_yaml(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
     """The actions of a ROS 2 YAML launch file; None (with a diagnostic) when it cannot be read."""
     shown = launcher.workspace.display(path)
     try:
-        data = yaml.load(sandbox.read_text(path, "launch"), Loader=_LineLoader)
+        loader = _LineLoader(sandbox.read_text(path, "launch"))
+        with bounded_yaml.crossing_in(loader, shown):
+            data = loader.get_single_data()
+        loader.dispose()
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         launcher.diagnostics.add(shown, mark.line + 1 if mark else 1, "launch-yaml", f"malformed launch YAML: {exc}",
