@@ -135,7 +135,7 @@ class Interpreter(Protocol):
 
     def not_given(self, name: str, line: int) -> None: ...
 
-    def refused(self, exc: RefusedRead, line: int) -> None:
+    def refused_read(self, exc: RefusedRead, line: int) -> None:
         """Report a file the sandbox will not read, named at `line`."""
 
     def call(self, function: object, args: list[object], kwargs: dict[str, object], line: int) -> object: ...
@@ -725,7 +725,7 @@ def read_text(value: object, line: int, interp: Interpreter) -> str | Unread:
     try:
         return read_file(path, "config")
     except RefusedRead as exc:
-        interp.refused(exc, line)
+        interp.refused_read(exc, line)
         return Unread(str(exc), line)
 
 

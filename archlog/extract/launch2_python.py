@@ -146,7 +146,7 @@ class _Interpreter(Evaluator):
         made in, when the entry function (generate_launch_description, an OpaqueFunction) called one."""
         return self.sites[1] if len(self.sites) > 1 else line
 
-    def refused(self, exc: RefusedRead, line: int) -> None:
+    def refused_read(self, exc: RefusedRead, line: int) -> None:
         self.launcher.diag(Where(self.path, line), exc.code, f"file not read: {exc}")
 
     # -- statements -----------------------------------------------------------------------
