@@ -37,6 +37,11 @@ from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace import manifests
 
 _KEEP_GOING = 0x200
+SOURCE_CAP = 512 << 10
+"""Largest C++ source parsed (bytes): libclang and the walk take ~13 s a MiB, and no node's file
+is near it (headers it includes are not capped: only their code a node calls is walked)."""
+MACRO_TOKENS = 1_000_000
+"""Most tokens one macro of the workspace may expand to (`#define A1 A0 A0`, ... doubles)."""
 _NOT_FOUND = re.compile(r"'([^']+)' file not found")
 _HEADER_SUFFIXES = {".h", ".hh", ".hpp", ".hxx", ".cuh"}
 
@@ -116,11 +121,17 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             diagnostics.add(name, 1, "cpp-missing", "source file listed in CMakeLists.txt does not exist", "error")
             summary.incomplete = summary.incomplete or f"{name}: missing"
             continue
-        cache_key = key(env.fingerprint, name, cls or "", " ".join(env.file_args(source)), source.read_bytes())
+        data = source.read_bytes()
+        if len(data) > SOURCE_CAP:
+            diagnostics.add(name, 1, "too-large", f"{len(data)} bytes, over the {SOURCE_CAP}-byte cap for C++ "
+                            "sources; its ROS calls are not recovered", "error")
+            summary.incomplete = summary.incomplete or f"{name}: too large to read"
+            continue
+        cache_key = key(env.fingerprint, name, cls or "", " ".join(env.file_args(source)), data)
         result = cache.get(cache_key)
         if not isinstance(result, FileResult) or not _still_valid(result, env):
             index = index or ci.Index.create()
-            result = _parse(index, source, name, env, cls)
+            result = _parse_guarded(index, source, name, env, cls)
             cache.put(cache_key, result)
         _merge(summary, result, diagnostics)
         behaviors.append(result.behavior)
@@ -139,9 +150,29 @@ def _settle_behavior(summary: NodeSummary) -> None:
     summary.writes = [w for w in summary.writes if w.var in guarded]
 
 
+def _parse_guarded(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
+    """`_parse`, with the walk's running out of memory or depth an error diagnostic."""
+    try:
+        return _parse(index, source, shown, env, cls)
+    except (MemoryError, RecursionError) as exc:
+        return _failed(shown, 1, "cpp-walk", f"the walk over this file's syntax tree ran out of "
+                       f"{'memory' if isinstance(exc, MemoryError) else 'depth'}; its ROS calls are not recovered")
+
+
+def _failed(shown: str, line: int, code: str, message: str) -> FileResult:
+    result = FileResult(incomplete=f"{shown}: not read")
+    result.diagnostics.append(Diagnostic(shown, line, code, message, "error"))
+    return result
+
+
 def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
     try:
         scan = _scan(source, env)
+        if scan.macro_bomb is not None:
+            where, line, name = scan.macro_bomb
+            return _failed(shown, line if where == source else 1, "cpp-macro",
+                           f"macro {name} ({where.name}:{line}) expands to more than {MACRO_TOKENS} tokens; "
+                           "the file is not parsed")
         if scan.ros2:
             tu, stand_ins = _parse_ros2(index, source, env, scan)
         else:
@@ -241,6 +272,7 @@ class _Scan:
     dual: list[str]
     spellings: set[str]
     ros2: bool
+    macro_bomb: tuple[Path, int, str] | None = None  # (file, line, name) of a macro expanding too far
 
 
 def _scan(source: Path, env: CppEnvironment) -> _Scan:
@@ -248,10 +280,12 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
     queue, seen, texts = [source], {source}, []
     missing: list[str] = []
     dual: list[str] = []
+    macros: dict[str, tuple[Path, int, list[str]]] = {}
     while queue and len(seen) < 400:
         path = queue.pop(0)
         text = path.read_text(errors="replace")
         texts.append(text)
+        macros.update(_defines(path, text))
         for name in _INCLUDE.findall(text):
             found = env.find(name, [path.parent] + folders)
             if found is None:
@@ -261,7 +295,42 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
                 seen.add(found)
                 queue.append(found)
     return _Scan(list(dict.fromkeys(missing)), list(dict.fromkeys(dual)), spelled_types(texts),
-                 any(is_ros2(t) for t in texts))
+                 any(is_ros2(t) for t in texts), _macro_bomb(macros))
+
+
+_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)(?:\([^)\n]*\))?(.*)$", re.M)
+_WORD = re.compile(r"\w+")
+
+
+def _defines(path: Path, text: str) -> dict[str, tuple[Path, int, list[str]]]:
+    """The macros a file defines: name -> (file, line, the words of its body)."""
+    found, line, counted = {}, 1, 0
+    for m in _DEFINE.finditer(text):
+        line += text.count("\n", counted, m.start())
+        counted = m.start()
+        found[m.group(1)] = (path, line, _WORD.findall(m.group(2)))
+    return found
+
+
+def _macro_bomb(macros: dict[str, tuple[Path, int, list[str]]]) -> tuple[Path, int, str] | None:
+    """(file, line, name) of a macro whose expansion passes MACRO_TOKENS words, else None. Sizes
+    are computed bottom-up without recursion; a macro met again while expanding counts one word."""
+    size: dict[str, int] = {}
+    for root in (name for name in macros if name not in size):
+        stack, open_ = [(root, iter(macros[root][2]))], {root}
+        while stack:
+            name, words = stack[-1]
+            child = next((w for w in words if w in macros and w not in size and w not in open_), None)
+            if child is not None:
+                stack.append((child, iter(macros[child][2])))
+                open_.add(child)
+                continue
+            stack.pop()
+            open_.discard(name)
+            size[name] = sum(size.get(w, 1) if w in macros else 1 for w in macros[name][2])
+            if size[name] > MACRO_TOKENS:
+                return macros[name][0], macros[name][1], name
+    return None
 
 
 _STAND_IN_NAME = re.compile(r"\b(?:rclcpp\w*|rmw|rcl|tf2_ros|tf2|image_transport|message_filters|diagnostic_updater|"
