@@ -24,6 +24,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.substitution import (SubstContext, SubstitutionError, UnknownArg, Unresolved, arithmetic,
                                           auto_value, substitute)
 from archlog.extract.workspace import Workspace
+from archlog.extract.yaml_depth import DepthLimited, SafeLoader
 from archlog.values import Unknown
 
 if TYPE_CHECKING:
@@ -669,7 +670,7 @@ def _command_line(args: dict[str, str]) -> dict[str, str]:
     return kept
 
 
-class _RosparamLoader(yaml.SafeLoader):
+class _RosparamLoader(DepthLimited, yaml.SafeLoader):
     """PyYAML's safe loader plus the angle forms rosparam registers: rad(...), deg(...), !radians, !degrees."""
 
 
@@ -699,7 +700,7 @@ _RosparamLoader.add_implicit_resolver("!radians", re.compile(r"^rad\([^\)]*\)$")
 
 def _yaml(text: str, angles: bool) -> object:
     try:
-        return yaml.load(text, Loader=_RosparamLoader if angles else yaml.SafeLoader)
+        return yaml.load(text, Loader=_RosparamLoader if angles else SafeLoader)
     except yaml.YAMLError as exc:
         raise LaunchError(f"invalid YAML: {exc}") from None
 

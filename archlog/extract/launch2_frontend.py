@@ -25,6 +25,7 @@ from archlog.extract.launch2 import (Action, Component, Condition, DeclareArgume
                                      SetParametersFile, SetRemap, Where)
 from archlog.extract.launch2_subst import Parts, Text, parse, text, yaml_value
 from archlog.extract.substitution import SubstitutionError
+from archlog.extract.yaml_depth import DepthLimited
 
 if TYPE_CHECKING:
     from archlog.extract.launch2 import Ros2Launch
@@ -109,7 +110,7 @@ class _LineDict(dict):
     line = 1
 
 
-class _LineLoader(yaml.SafeLoader):
+class _LineLoader(DepthLimited, yaml.SafeLoader):
     """PyYAML's safe loader; mappings remember where they start."""
 
 

@@ -25,6 +25,7 @@ import yaml
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.summary import NodeSummary, Port
+from archlog.extract.yaml_depth import DepthLimited
 from archlog.values import ParamList, ParamRef, Value
 
 SECTIONS = {
@@ -37,7 +38,7 @@ BUILTIN_DIR = Path(__file__).resolve().parent.parent / "models"
 UNSET = "<not set>"  # the value of a `set: true` condition's parameter when the configuration lacks it
 
 
-class _LineLoader(yaml.SafeLoader):
+class _LineLoader(DepthLimited, yaml.SafeLoader):
     """A YAML loader that records each mapping's line as key '__line__'."""
 
     def construct_mapping(self, node: yaml.MappingNode, deep: bool = False) -> dict:
@@ -57,7 +58,13 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink) -> list[tup
     except OSError as exc:
         diagnostics.add(shown, 1, "model-read", f"cannot read model file: {exc.strerror}", "error")
         return []
+    except UnicodeDecodeError:
+        diagnostics.add(shown, 1, "model-read", "cannot read model file: not UTF-8", "error")
+        return []
     items = data.get("models", []) if isinstance(data, dict) and "models" in data else [data]
+    if not isinstance(items, list):
+        diagnostics.add(shown, data["__line__"], "model-schema", "invalid model file: models must be a list", "error")
+        return []
     result = []
     for item in items:
         line = item.get("__line__", 1) if isinstance(item, dict) else 1

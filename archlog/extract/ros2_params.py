@@ -14,6 +14,7 @@ from pathlib import Path
 import yaml
 
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.yaml_depth import SafeLoader
 
 PARAMS_KEY = "ros__parameters"
 Entry = tuple[str, str, object, int]
@@ -29,7 +30,7 @@ def load_param_file(path: Path, shown: str, diagnostics: DiagnosticSink, text: s
         except (OSError, UnicodeDecodeError) as exc:
             diagnostics.add(shown, 1, "param-file", f"cannot read parameter file: {exc}", "error")
             return []
-    loader = yaml.SafeLoader(text)
+    loader = SafeLoader(text)
     try:
         root = loader.get_single_node()
     except yaml.YAMLError as exc:
