@@ -25,17 +25,21 @@ from archlog import budget
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cmake import commands
 from archlog.extract.configured import configured_ports
+from archlog.extract.cpp_ast import line_finder
 from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode, convert
 from archlog.extract.models import load_models
 from archlog.extract.python import extract_python, parse_tolerant
 from archlog.extract.ros2_params import load_param_file
 from archlog.extract.ros2_stubs import _members
 from archlog.extract.workspace import Workspace
+from archlog.extract.yaml_depth import SafeLoader
 from archlog.facts.similarity import near_pairs, too_long
-from tests.support.hostile import Outside, problems, run_check
+from support.hostile import Outside, problems, run_check
 
 PACKAGE_XML = ("<package format='2'><name>{}</name><version>0.1.0</version><description>d</description>"
                "<maintainer email='dev@example.com'>m</maintainer><license>MIT</license></package>")
+LAUGHS = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n" + "".join(
+    f"a{i}: &a{i} [{', '.join([f'*a{i - 1}'] * 10)}]\n" for i in range(1, 10))  # 10^10 elements through aliases
 TALKER = "import rospy\nfrom std_msgs.msg import String\nrospy.init_node('talker')\nrospy.Publisher('chatter', String)\n"
 
 
@@ -92,6 +96,21 @@ def test_python_nested_too_deeply_is_a_diagnostic(tmp_path: Path, source: str, l
     sink = DiagnosticSink()
     summary = extract_python(path, "p", "deep.py", "deep.py", sink)
     assert [(d.line, d.code) for d in sink.items] == [(line, "python-nesting")] and summary.incomplete
+
+
+@settings(max_examples=50, deadline=None, database=None)
+@given(st.text(alphabet="ab\n", max_size=200), st.integers(0, 200))
+def test_line_finder_counts_newlines_before_the_offset(text: str, offset: int) -> None:
+    assert line_finder(text)(offset) == text.count("\n", 0, offset) + 1
+
+
+def test_yaml_nesting_and_alias_expansion_are_bounded() -> None:
+    begin = time.monotonic()
+    for document in ("a: " + "[" * 5_000 + "]" * 5_000, LAUGHS):
+        with pytest.raises(yaml.YAMLError, match="raise \\[budget\\]"):
+            yaml.load(document, Loader=SafeLoader)
+    assert time.monotonic() - begin < 2
+    assert yaml.load("q: &q {depth: 5}\na: *q\nb: *q\n", Loader=SafeLoader)["b"] == {"depth": 5}
 
 
 def test_names_of_20k_segments_are_not_compared() -> None:
@@ -152,11 +171,15 @@ def case_long_names(root: Path) -> list[tuple[str, str]]:
 def case_cpp(root: Path) -> list[tuple[str, str]]:
     macros = "".join(f"#define A{i} A{i - 1} A{i - 1}\n" for i in range(1, 41))
     pkg = _package(root, "demo", "cmake_minimum_required(VERSION 3.5)\nproject(demo)\n"
-                   "add_executable(doubling src/doubling.cpp)\nadd_executable(big src/big.cpp)\n")
+                   "add_executable(doubling src/doubling.cpp)\nadd_executable(big src/big.cpp)\n"
+                   "add_executable(fallback src/fallback.cpp)\n")
     (pkg / "src").mkdir()
     (pkg / "src" / "doubling.cpp").write_text(f"#include <ros/ros.h>\n#define A0 x\n{macros}int f() {{ return A40; }}\n")
     (pkg / "src" / "big.cpp").write_text("#include <ros/ros.h>\n" + "int f(int a) { return a; }\n" * 300_000)
-    return [("doubling.cpp", "cpp-macro"), ("big.cpp", "too-large")]
+    calls = "".join(f'nh.advertise<std_msgs::String>("t", &C::cb{i}\n' for i in range(11_000))  # no ';' anywhere
+    (pkg / "src" / "fallback.cpp").write_text("#include <ros/ros.h>\nvoid f() { ros::NodeHandle nh; undeclared();\n"
+                                              + calls)
+    return [("doubling.cpp", "cpp-macro"), ("big.cpp", "too-large"), ("fallback.cpp", "cpp-compile")]
 
 
 def case_deep_yaml(root: Path) -> list[tuple[str, str]]:
@@ -173,14 +196,16 @@ def case_deep_yaml(root: Path) -> list[tuple[str, str]]:
             "<node pkg='rviz' type='rviz' name='rviz_typed' args='-d $(find demo)/rviz/typed.rviz'/>\n"
             "<node pkg='demo' type='talker.py' name='talker'><rosparam file='$(find demo)/params.yaml'/></node>")
     (root / "deep_model.yaml").write_text("models: " + "[" * 5_000 + "]" * 5_000 + "\n")
+    (root / "laughs_model.yaml").write_text("package: p\nexecutable: e\nx:\n" + "".join(f"  {line}\n" for line in LAUGHS.splitlines()))
     (root / "typed_model.yaml").write_text("models:\n  - {package: p, executable: e, publishers: {a: 1}}\n"
                                            "  - {package: [1], executable: {x: 2}}\n  - 5\n")
-    return [("deep.rviz", "rviz-config"), ("deep_model.yaml", "model-yaml"), ("typed_model.yaml", "model-schema")]
+    return [("deep.rviz", "rviz-config"), ("deep_model.yaml", "model-yaml"), ("laughs_model.yaml", "model-yaml"),
+            ("typed_model.yaml", "model-schema"), ("typed.rviz", "rviz-config")]
 
 
 CASES = [case_cmake_tokens, case_python_repair, case_long_names, case_cpp, case_deep_yaml]
 OPTIONS = {case_deep_yaml: ("--launch", "src/demo/launch/main.launch", "--model", "deep_model.yaml",
-                            "--model", "typed_model.yaml")}
+                            "--model", "laughs_model.yaml", "--model", "typed_model.yaml")}
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.__name__ for c in CASES])
@@ -223,7 +248,8 @@ DOCUMENTS = (st.binary(max_size=300) | TREES.map(lambda t: yaml.safe_dump(t).enc
              | xml_trees().map(etree.tostring)
              | st.integers(50, 3_000).map(lambda n: ("[" * n + "]" * n).encode())
              | st.integers(50, 3_000).map(lambda n: ("a: " + "{b: " * n + "1" + "}" * n).encode())
-             | st.integers(50, 3_000).map(lambda n: ("<launch>" + "<group>" * n + "</group>" * n + "</launch>").encode()))
+             | st.integers(50, 3_000).map(lambda n: ("<launch>" + "<group>" * n + "</group>" * n + "</launch>").encode())
+             | st.just(LAUGHS.encode()))
 
 
 def _launch_node(config: Path) -> LaunchNode:
