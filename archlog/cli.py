@@ -18,7 +18,7 @@ from archlog import __version__
 from archlog.analysis import Analysis, ConfigError, analyse
 from archlog.config import Config
 from archlog.config import ConfigError as ConfigFileError
-from archlog.config import find_config, load_config
+from archlog.config import find_config, load_config, workspace_config
 from archlog.diagnostics import SEVERITIES
 from archlog.queries.session import QueryError, Result, Session
 from archlog.reports.codequality import to_codequality
@@ -44,12 +44,26 @@ def _arg_pairs(values: tuple[str, ...]) -> dict[str, str]:
     return pairs
 
 
+def _env_pairs(values: tuple[str, ...]) -> dict[str, str]:
+    pairs = {}
+    for value in values:
+        name, sep, val = value.partition("=")
+        if not sep or not name:  # the message never shows a value
+            raise click.BadParameter(f"expected NAME=VALUE, got {value!r}" if not sep else "NAME= is empty",
+                                     param_hint="--env")
+        pairs[name] = val
+    return pairs
+
+
 def _system_options(func):
     options = [
         click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path)),
         click.option("--launch", "launches", multiple=True, metavar="FILE_OR_PKG/FILE",
                      help="Launch file of the configuration (repeatable; together they form one system)."),
         click.option("--arg", "args", multiple=True, metavar="NAME:=VALUE", help="Launch argument (repeatable)."),
+        click.option("--env", "env", multiple=True, metavar="NAME=VALUE",
+                     help="Environment variable launch files may read (repeatable); no other is read from this "
+                          "machine but ROS_DISTRO, ROS_VERSION and ROS_PYTHON_VERSION."),
         click.option("--model", "models", multiple=True, type=click.Path(path_type=Path),
                      help="YAML node models for nodes without source, or external producers/consumers."),
         click.option("--rules", "rule_paths", multiple=True, type=click.Path(exists=True, path_type=Path),
@@ -65,18 +79,21 @@ def _system_options(func):
     return func
 
 
-def _load(paths, launches, args, models, rule_paths, config_path, profile, threshold,
+def _load(paths, launches, args, models, rule_paths, config_path, profile, threshold, env,
           quiet: bool = False) -> tuple[Analysis, RuleSet, Config]:
     """Configuration, rules (checked before the slow part), then the analysis, with a progress bar
-    on a terminal."""
+    on a terminal. The environment is [env] of the configuration with --env over it."""
     config = load_config(config_path or find_config(list(paths)), profile)
+    if config_path is None and config.source is not None:
+        config = workspace_config(config)
     if threshold is not None:
         config.near_miss_threshold = threshold
     ruleset = load_rules([*config.rule_paths, *rule_paths])
+    given = {**config.env, **_env_pairs(env)}
     stderr = Console(stderr=True)
     if quiet or not stderr.is_terminal:
-        return analyse(list(paths), list(launches), _arg_pairs(args), list(models), config.near_miss_threshold), \
-            ruleset, config
+        return analyse(list(paths), list(launches), _arg_pairs(args), list(models), config.near_miss_threshold,
+                       env=given, limits=config.limits), ruleset, config
     with Progress(SpinnerColumn(), TextColumn("reading nodes"), BarColumn(), MofNCompleteColumn(),
                   TimeElapsedColumn(), console=stderr, transient=True) as bar:
         task = bar.add_task("nodes", total=None)
@@ -85,7 +102,7 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
             bar.update(task, completed=done, total=total if total > 0 else None)
 
         analysis = analyse(list(paths), list(launches), _arg_pairs(args), list(models), config.near_miss_threshold,
-                           advance)
+                           advance, env=given, limits=config.limits)
     return analysis, ruleset, config
 
 
@@ -107,11 +124,11 @@ def main() -> None:
 @click.option("--write-baseline", type=click.Path(dir_okay=False, path_type=Path),
               help="Record the current findings as the baseline.")
 @click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
-def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, fmt, output,
+def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, output,
           fail_on, baseline, write_baseline, quiet) -> None:
     """Check a ROS system configuration and report findings."""
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                      near_miss_threshold, quiet or fmt != "text" and output is None)
+                                      near_miss_threshold, env, quiet or fmt != "text" and output is None)
     root = analysis.workspace.roots[0]
     findings = Session(analysis.store, ruleset, config).findings()
     files = {str(row[1]) for row in analysis.store.rows("location")}
@@ -146,11 +163,11 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
 @_system_options
 @click.option("--format", "fmt", type=click.Choice(["csv", "json"]), default="csv", show_default=True)
 @click.argument("directory", type=click.Path(file_okay=False, path_type=Path))
-def facts(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, fmt,
+def facts(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
           directory) -> None:
     """Export the recovered facts, one file per relation, into DIRECTORY (the last argument)."""
     analysis, _ruleset, _config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                        near_miss_threshold)
+                                        near_miss_threshold, env)
     written = analysis.store.export(directory, fmt)
     for diag in analysis.diagnostics.items:
         click.echo(str(diag), err=True)
@@ -161,11 +178,12 @@ def facts(paths, launches, args, models, rule_paths, config_path, profile, near_
 @_system_options
 @click.option("--format", "fmt", type=click.Choice(["table", "json", "csv"]), default="table", show_default=True)
 @click.argument("goal")
-def query(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, goal, fmt) -> None:
+def query(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, goal,
+          fmt) -> None:
     """Print every binding of the variables of GOAL (the last argument: a conjunction of literals such
     as 'publisher(P, N, T, _), not subscribed(T)') over the facts and derived relations."""
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                      near_miss_threshold)
+                                      near_miss_threshold, env)
     try:
         result = Session(analysis.store, ruleset, config).query(goal)
     except QueryError as exc:
@@ -175,12 +193,12 @@ def query(paths, launches, args, models, rule_paths, config_path, profile, near_
 
 @main.command()
 @_system_options
-def repl(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold) -> None:
+def repl(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env) -> None:
     """Interactive queries over the system: extraction runs once."""
     from archlog.queries.repl import run_repl
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                      near_miss_threshold)
+                                      near_miss_threshold, env)
     run_repl(Session(analysis.store, ruleset, config), analysis)
 
 
@@ -190,13 +208,13 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
 @click.option("--focus", help="Keep what is near this node, topic or service (its resolved name).")
 @click.option("--depth", type=click.IntRange(0, 20), default=2, show_default=True, help="Edges around --focus.")
 @click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write here instead of stdout.")
-def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, fmt, focus, depth,
-          output) -> None:
+def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus,
+          depth, output) -> None:
     """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
     from archlog.reports import graph as views
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                      near_miss_threshold, quiet=output is None)
+                                      near_miss_threshold, env, quiet=output is None)
     drawn = views.build(analysis.store, Session(analysis.store, ruleset, config).findings())
     if focus:
         try:
@@ -253,12 +271,13 @@ def observe_command(master_uri, output, write_models, node_info) -> None:
 @click.option("--observed", required=True, type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="A JSON file written by `archlog observe`.")
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
-def diff(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, observed, fmt) -> None:
+def diff(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, observed,
+         fmt) -> None:
     """Compare the recovered architecture with an observed one (exit 1 when they differ)."""
     from archlog import observe
 
     analysis, _ruleset, _config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                        near_miss_threshold, quiet=True)
+                                        near_miss_threshold, env, quiet=True)
     try:
         seen = observe.Architecture.from_json(observed.read_text(encoding="utf-8"))
     except (ValueError, KeyError, TypeError) as exc:
@@ -284,12 +303,13 @@ def diff(paths, launches, args, models, rule_paths, config_path, profile, near_m
 @main.command()
 @_system_options
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
-def behavior(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, fmt) -> None:
+def behavior(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env,
+             fmt) -> None:
     """Print each node's behavior: state, and the triggers, guards and required inputs of its outputs."""
     from archlog.reports.behavior import behavior_model, print_behavior
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                      near_miss_threshold)
+                                      near_miss_threshold, env)
     model = behavior_model(analysis.store, Session(analysis.store, ruleset, config).ctl)
     if fmt == "json":
         sys.stdout.write(json.dumps({"nodes": model}, indent=1) + "\n")
@@ -299,7 +319,8 @@ def behavior(paths, launches, args, models, rule_paths, config_path, profile, ne
 
 @main.command("test-rules")
 @click.argument("folders", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False, path_type=Path))
-@click.option("--update", is_flag=True, help="Write the .expected files from the current results.")
+@click.option("--update", is_flag=True, help="Write the .expected files that differ from the current results "
+              "(each file written is named).")
 def test_rules(folders, update) -> None:
     """Run each rule's fixtures and compare with their .expected files (exit 1 on a difference)."""
     from archlog.queries.rule_tests import run_rule_tests

@@ -12,6 +12,11 @@
     reason = "debug topics are read by hand"
     [profiles.ci]                     # --profile ci: overrides the keys above
     ignore = ["AL104"]
+    [env]                             # environment variables launch files may read ($(env), os.environ);
+    ROBOT_NAME = "r2"                 # --env NAME=VALUE adds or overrides; no other variable of the
+                                      # machine is read but ROS_DISTRO, ROS_VERSION, ROS_PYTHON_VERSION
+    [budget]                          # expansion limits per unit of input (archlog.budget.LIMITS)
+    elements = 500000                 # keys: elements, characters, steps, alternatives, depth
 
 Built-in profiles: `ci` (precision: only high- and medium-precision rules, threshold 0.4) and
 `audit` (recall: every rule, threshold 0.6); a configuration file may redefine them.
@@ -23,6 +28,7 @@ import tomllib
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from archlog.budget import LIMITS
 from archlog.diagnostics import SEVERITIES
 from archlog.rules.ruleset import Rule
 
@@ -30,7 +36,8 @@ BUILTIN_PROFILES = {
     "ci": {"precision": ["high", "medium"], "near-miss-threshold": 0.4},
     "audit": {"near-miss-threshold": 0.6},
 }
-KEYS = {"rules", "select", "ignore", "severity", "near-miss-threshold", "precision", "profiles", "suppress"}
+KEYS = {"rules", "select", "ignore", "severity", "near-miss-threshold", "precision", "profiles", "suppress", "env",
+        "budget"}
 
 
 class ConfigError(Exception):
@@ -46,6 +53,8 @@ class Config:
     precision: list[str] = field(default_factory=list)
     near_miss_threshold: float = 0.5
     suppress: list[dict] = field(default_factory=list)
+    env: dict[str, str] = field(default_factory=dict)
+    limits: dict[str, int] = field(default_factory=dict)
     source: Path | None = None
 
     def applies(self, rule: Rule) -> bool:
@@ -94,7 +103,7 @@ def load_config(path: Path | None, profile: str | None) -> Config:
         select=list(data.get("select", [])), ignore=list(data.get("ignore", [])),
         severity=dict(data.get("severity", {})), precision=list(data.get("precision", [])),
         near_miss_threshold=float(data.get("near-miss-threshold", 0.5)), suppress=list(data.get("suppress", [])),
-        source=path,
+        env=_env(data.get("env", {}), path), limits=_budget(data.get("budget", {}), path), source=path,
     )
     for rule_id, level in config.severity.items():
         if level not in SEVERITIES:
@@ -103,6 +112,43 @@ def load_config(path: Path | None, profile: str | None) -> Config:
         if not rule_path.exists():
             raise ConfigError(f"{path}: rule path {rule_path} does not exist")
     return config
+
+
+def _env(table: object, path: Path | None) -> dict[str, str]:
+    """[env]: variable names to string values (a message never shows a value)."""
+    if not isinstance(table, dict):
+        raise ConfigError(f"{path}: [env] must be a table of NAME = \"value\"")
+    for name, value in table.items():
+        if not name or "=" in name or "\0" in name:
+            raise ConfigError(f"{path}: [env] {name!r} is not an environment variable name")
+        if not isinstance(value, str):
+            raise ConfigError(f"{path}: [env] {name} must be a string")
+    return dict(table)
+
+
+def _budget(table: object, path: Path | None) -> dict[str, int]:
+    """[budget]: limits (keys of archlog.budget.LIMITS) as positive integers."""
+    if not isinstance(table, dict):
+        raise ConfigError(f"{path}: [budget] must be a table of limit = number")
+    for kind, value in table.items():
+        if kind not in LIMITS:
+            raise ConfigError(f"{path}: [budget] {kind} is not a limit (known: {', '.join(LIMITS)})")
+        if isinstance(value, bool) or not isinstance(value, int) or value <= 0:
+            raise ConfigError(f"{path}: [budget] {kind} must be a positive whole number, not {value!r}")
+    return dict(table)
+
+
+def workspace_config(config: Config) -> Config:
+    """A configuration found next to the analysed paths is workspace content (it comes with the pull
+    request): its rule files must lie under its own folder, and its [budget] may lower limits but
+    not raise them. Give --config to use a trusted file as it is."""
+    assert config.source is not None
+    home = config.source.parent.resolve()
+    for rule_path in config.rule_paths:
+        if not rule_path.resolve().is_relative_to(home):
+            raise ConfigError(f"{config.source}: rule path {rule_path} is outside {home}; a configuration found "
+                              "in the workspace may only use rule files under its own folder (or pass --config)")
+    return replace(config, limits={kind: min(value, LIMITS[kind]) for kind, value in config.limits.items()})
 
 
 def _read(path: Path) -> dict:

@@ -1,10 +1,134 @@
-"""Diagnostics: problems with the input (not findings about the system), always with file:line."""
+"""Diagnostics: problems with the input (not findings about the system), always with file:line.
+
+Every code is registered in `CODES` (docs/diagnostics.md is generated from it); creating a
+diagnostic with an unregistered code is a programming error and raises `ValueError`.
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
 SEVERITIES = ("error", "warning", "note")
+
+
+@dataclass(frozen=True)
+class Code:
+    """A diagnostic code: its usual severity, what it means, and what to do about it."""
+
+    severity: str
+    meaning: str
+    help: str
+    group: str
+
+
+def _codes(group: str, table: dict[str, tuple[str, str, str]]) -> dict[str, Code]:
+    return {code: Code(severity, meaning, help_, group) for code, (severity, meaning, help_) in table.items()}
+
+
+CODES: dict[str, Code] = {
+    **_codes("Workspace", {
+        "package-xml": ("warning", "A package.xml is invalid; the package name is taken from its text if possible.",
+                        "Fix the manifest (catkin_pkg's message says what is wrong)."),
+        "duplicate-package": ("warning", "Two folders hold a package of the same name; the first is used.",
+                              "Remove or ignore (CATKIN_IGNORE) the copy."),
+        "plugin-xml": ("warning", "A plugin description file named in package.xml cannot be read.",
+                       "Check the export's plugin= path."),
+        "setup-cfg": ("warning", "setup.cfg does not parse; its entry points are unknown.", "Fix its syntax."),
+        "setup-py": ("warning", "setup.py does not parse; its entry points are unknown.",
+                     "Fix its syntax (it is read, never run)."),
+    }),
+    **_codes("Launch files", {
+        "launch-missing": ("error", "A launch file cannot be read.", "Check the path given with --launch."),
+        "launch-xml": ("error", "A launch file is not well-formed XML, or its root is not <launch>.",
+                       "Fix the XML at the line given."),
+        "launch-yaml": ("error", "A YAML launch file does not parse or has the wrong shape.",
+                        "Fix the YAML at the line given."),
+        "launch-python": ("error", "A Python launch file does not parse or lacks generate_launch_description().",
+                          "Fix the file; it is read with ast, never run."),
+        "launch-include": ("error", "An included launch file is not found.", "Check the include's file path."),
+        "launch-invalid": ("error", "An element is invalid as roslaunch or launch_ros would reject it.",
+                           "Fix the element as the message says."),
+        "launch-tag": ("warning", "An unrecognized tag is ignored.", "Check the tag's spelling."),
+        "launch-attr": ("warning", "An unknown attribute is ignored.", "Check the attribute's spelling."),
+        "launch-subst": ("error", "A substitution is invalid ($(...) syntax, an undefined arg).",
+                         "Fix the substitution."),
+        "launch-unresolved": ("warning", "A value depends on the machine (an unset variable, a package that is not "
+                              "here) and is not known statically; the element is skipped or its value unknown.",
+                              "Pass the value with --arg, --env, or add the package to the analysed paths."),
+        "launch-arg-unknown": ("note", "A launch argument has no value statically.", "Pass it with --arg NAME:=VALUE."),
+        "launch-condition": ("note", "An if/unless condition cannot be decided statically; the element is kept "
+                             "as conditional.", "Pass the args it depends on with --arg."),
+        "launch-process": ("note", "An ExecuteProcess that launch_ros does not start as a ROS node is left out.",
+                           "Nothing, unless it is a node: then launch it with Node."),
+        "launch-unknown": ("warning", "Part of a Python launch file is not read statically (a while loop, a loop "
+                           "over an unknown value).", "Write the launch description without run-time control flow, "
+                           "or model what it starts."),
+        "param-file": ("warning", "A parameter file is not found or cannot be read.", "Check the file path."),
+        "node-name": ("note", "A node's name or namespace is not known statically; a default is used.",
+                      "Name the node in the launch file."),
+        "controller-type": ("warning", "A controller spawner starts a controller whose type is not set.",
+                            "Load the controller's parameters (NAME/type) in this configuration."),
+    }),
+    **_codes("Sources", {
+        "cpp-missing": ("error", "A source file listed in CMakeLists.txt does not exist.", "Fix the CMake target."),
+        "cpp-parse": ("error", "libclang cannot parse a C++ file at all.", "Check the file."),
+        "cpp-compile": ("warning", "A C++ file does not compile here (often a missing header); its ROS calls are "
+                        "also read from the tokens.", "Install the package that provides the header, or add its "
+                        "include folder to the analysed paths."),
+        "cpp-crash": ("error", "The C++ parser crashed on an executable; its ROS calls are not recovered.",
+                      "Report it; meanwhile describe the node with --model."),
+        "cpp-stand-in": ("note", "archlog's stand-in ROS 2 headers lack an API a line uses; it is read from the "
+                         "tokens.", "Nothing; report the API if its ports are missing."),
+        "cpp-private-name": ("error", "A NodeHandle method is given a ~name: roscpp throws at start-up.",
+                             "Use a NodeHandle(\"~\") and a relative name."),
+        "cpp-several-nodes": ("note", "A C++ file creates several nodes; they are read as one.",
+                              "Split the nodes, or model them."),
+        "msg-definition": ("warning", "A message definition cannot be turned into a C++ header.",
+                           "Fix the .msg/.srv/.action file."),
+        "msg-headers": ("note", "The workspace's message headers cannot be generated (gencpp missing or failed); "
+                        "C++ ports using them get unknown types.", "Install Debian's python3-gencpp."),
+        "python-read": ("error", "A Python source cannot be read.", "Check the file."),
+        "python-syntax": ("error", "A Python source parses neither as Python 3 nor after Python 2 repair.",
+                          "Fix the syntax."),
+        "python2": ("note", "Python 2 syntax was repaired line by line to read the file's ROS calls.",
+                    "Port the file to Python 3."),
+        "python-several-nodes": ("note", "A Python file creates several nodes; they are read as one.",
+                                 "Split the nodes, or model them."),
+        "python-behavior": ("note", "A file has more paths than the behavior walk's budget; some publish "
+                            "triggers are unknown.", "Nothing; the triggers not found are unknown."),
+    }),
+    **_codes("Models and configured ports", {
+        "no-model": ("warning", "A node has neither source nor model: its ports are unknown.",
+                     "Describe it in a YAML model passed with --model (see archlog/models/)."),
+        "model-read": ("error", "A model file cannot be read.", "Check the path."),
+        "model-yaml": ("error", "A model file is not valid YAML.", "Fix the YAML."),
+        "model-schema": ("error", "A model does not follow the model schema.",
+                         "Fix it as the message says (archlog/models/model.schema.json)."),
+        "robot-description": ("warning", "A robot description (URDF/xacro) cannot be read or expanded.",
+                              "Fix the description; xacro expressions are evaluated by archlog's restricted "
+                              "evaluator."),
+        "rviz-config": ("warning", "An rviz configuration cannot be read; its displays' topics are unknown.",
+                        "Check the -d path."),
+    }),
+    **_codes("Trust boundary (see docs/security.md)", {
+        "outside-workspace": ("error", "A file outside the analysed paths and package roots was asked for; it is "
+                              "not read, and only its path is shown.", "Add its folder to the analysed paths if "
+                              "it belongs to the system."),
+        "not-a-file": ("error", "A path that should be a file is a directory, device, FIFO or missing; it is not "
+                       "read.", "Point the reference at a regular file."),
+        "env-not-given": ("note", "An environment variable was read that was not given (--env, [env] in "
+                          "archlog.toml, or the allow-list); it reads as unset. Only its name is shown.",
+                          "Pass it with --env NAME=VALUE if the system depends on it."),
+        "too-large": ("error", "A file is over the size cap for its kind; it is not read.",
+                      "Raise the cap (docs/security.md) if the file is honest."),
+        "budget-exceeded": ("warning", "An expansion (a robot description, an expression) went past a limit of "
+                            "the budget; what it had read before stays.", "Raise the limit named in [budget] of "
+                            "archlog.toml (docs/security.md) if the input is honest."),
+    }),
+    **_codes("Reports", {
+        "unused-suppression": ("warning", "An inline suppression matches no finding.", "Remove it."),
+    }),
+}
 
 
 @dataclass(frozen=True, order=True)
@@ -18,8 +142,16 @@ class Diagnostic:
     severity: str = "warning"
     column: int = 0
 
+    def __post_init__(self) -> None:
+        if self.code not in CODES:
+            raise ValueError(f"unregistered diagnostic code {self.code!r}: add it to archlog.diagnostics.CODES")
+
     def __str__(self) -> str:
         return f"{self.file}:{self.line}: {self.severity}: {self.message} [{self.code}]"
+
+
+def _usual(code: str) -> str:
+    return CODES[code].severity if code in CODES else "warning"  # an unknown code raises in Diagnostic
 
 
 @dataclass
@@ -28,7 +160,9 @@ class DiagnosticSink:
 
     items: list[Diagnostic] = field(default_factory=list)
 
-    def add(self, file: str, line: int, code: str, message: str, severity: str = "warning", column: int = 0) -> None:
-        diag = Diagnostic(str(file), line, code, message, severity, column)
+    def add(self, file: str, line: int, code: str, message: str, severity: str | None = None,
+            column: int = 0) -> None:
+        """Record a diagnostic; without `severity`, the code's registered one."""
+        diag = Diagnostic(str(file), line, code, message, severity or _usual(code), column)
         if diag not in self.items:
             self.items.append(diag)

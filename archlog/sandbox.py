@@ -6,7 +6,9 @@ pull request), so reading is confined and the environment is an explicit input.
   is followed only when its target stays inside those roots. Anything else raises `Refused`,
   whose message names the path and never its content.
 - Environment: only variables given with `--env NAME=VALUE`, set in `archlog.toml` (`[env]`), or
-  on `ENV_ALLOWED` are visible; any other reads as unset.
+  on `ENV_ALLOWED` are visible; any other reads as unset. A reader that meets one calls
+  `not_given(name)`; the reader of the file collects those names (`reads_not_given()`) and reports
+  an `env-not-given` diagnostic at its place with `not_given_message` (the name, never a value).
 
 The policy in force is a context variable: `analyse()` installs one for the run with `active()`.
 Outside it (library use, unit tests) every path is inside, and the environment is the allow-list.
@@ -100,7 +102,13 @@ def machine_env(given: Mapping[str, str] | None = None) -> dict[str, str]:
     return env
 
 
+def not_given_message(name: str) -> str:
+    return (f"environment variable {name} is not given, so its value is unknown (archlog reads only the "
+            f"variables passed with --env {name}=... or set in [env] of archlog.toml)")
+
+
 _current: ContextVar[Sandbox | None] = ContextVar("archlog_sandbox", default=None)
+_not_given: ContextVar[list[str] | None] = ContextVar("archlog_env_not_given", default=None)
 
 
 def current() -> Sandbox:
@@ -128,3 +136,21 @@ def read_bytes(path: Path | str, kind: str = "source") -> bytes:
 
 def getenv(name: str) -> str | None:
     return current().getenv(name)
+
+
+def not_given(name: str) -> None:
+    """Note that the input read `name`, a variable the run was not given."""
+    names = _not_given.get()
+    if names is not None and name not in names:
+        names.append(name)
+
+
+@contextmanager
+def reads_not_given() -> Iterator[list[str]]:
+    """The variables read but not given while inside (an inner collection keeps its own)."""
+    names: list[str] = []
+    token = _not_given.set(names)
+    try:
+        yield names
+    finally:
+        _not_given.reset(token)

@@ -39,6 +39,18 @@ def finding_keys(findings: list[Finding]) -> list[tuple[str, str, int, str]]:
                   for f in findings)
 
 
+def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption("--update-goldens", action="store_true", default=False,
+                     help="rewrite every golden file the tests compare with (corpus case.json findings, *.expected "
+                          "files, rule fixtures, generated docs) from the current results; review the diff")
+
+
+@pytest.fixture(scope="session")
+def update_goldens(request: pytest.FixtureRequest) -> bool:
+    """True under `pytest --update-goldens` (tests/support/goldens.py lists the golden files)."""
+    return bool(request.config.getoption("--update-goldens"))
+
+
 @pytest.fixture(scope="session", autouse=True)
 def private_cache(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """Every run (and the CLI subprocesses it starts) uses a fresh archlog cache folder."""

@@ -2,12 +2,10 @@
 corpus/python, roscpp in corpus/cpp_ros1, rclcpp in corpus/cpp_ros2 (a file registering a
 component is read as that component: only its class is the node).
 
-Set ARCHLOG_UPDATE_EXPECTED=1 to rewrite the .expected files (then review the diff)."""
+`pytest --update-goldens` rewrites the .expected files that differ (then review the diff)."""
 
 from __future__ import annotations
 
-import difflib
-import os
 from functools import lru_cache
 from pathlib import Path
 
@@ -20,6 +18,7 @@ from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace import registered_components
 from conftest import ROOT
 from support.describe import describe
+from support.goldens import compare_text
 
 FOLDERS = ("python", "cpp_ros1", "cpp_ros2")
 FIXTURES = sorted(p for folder in FOLDERS for p in (ROOT / "corpus" / folder).iterdir() if p.suffix != ".expected")
@@ -47,12 +46,8 @@ def test_enough_fixtures() -> None:
 
 
 @pytest.mark.parametrize("fixture", FIXTURES, ids=lambda p: p.name)
-def test_fixture_matches_expected(fixture: Path) -> None:
+def test_fixture_matches_expected(fixture: Path, update_goldens: bool) -> None:
     sink = DiagnosticSink()
     got = describe(extract(fixture, sink), sink.items)
-    expected_file = fixture.with_name(fixture.name + ".expected")
-    if os.environ.get("ARCHLOG_UPDATE_EXPECTED"):
-        expected_file.write_text(got)
-    expected = expected_file.read_text() if expected_file.is_file() else ""
-    diff = "".join(difflib.unified_diff(expected.splitlines(True), got.splitlines(True), "expected", "got"))
+    diff = compare_text(fixture.with_name(fixture.name + ".expected"), got, update_goldens)
     assert not diff, diff

@@ -75,7 +75,7 @@ def test_unresolvable_condition_keeps_element_as_conditional(tmp_path: Path) -> 
 </launch>"""})
     [node] = config.nodes
     assert node.name == "/maybe" and node.condition.startswith('if="$(env ARCHLOG_TEST_SURELY_UNSET)"')
-    assert [(d.line, d.code) for d in sink.items] == [(2, "launch-condition")]
+    assert [(d.line, d.code) for d in sink.items] == [(2, "launch-condition"), (2, "env-not-given")]
 
 
 def test_params_types_rosparam_and_node_args(tmp_path: Path) -> None:

@@ -48,7 +48,7 @@ def test_queries_commands_and_explanations(repl: pexpect.spawn, tmp_path: Path) 
     repl.sendline(":explain 1")
     repl.expect(r"near_name\(.*\(fact\)")
     text = screen(repl)
-    assert "by " in text and "AL102_near_miss.lp" in text and "src/waypoint_nav/src/pure_pursuit.cpp:45" in text
+    assert "by " in text and "AL102_near_miss_topic.lp" in text and "src/waypoint_nav/src/pure_pursuit.cpp:45" in text
     repl.sendline(":explain --json 1")
     repl.expect(r'"because"')
     repl.sendline('many_pubs(T) :- publisher(_, N, T, _), publisher(_, M, T, _), N != M.')

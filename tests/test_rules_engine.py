@@ -58,7 +58,7 @@ def test_unknown_values_never_join(tmp_path: Path) -> None:
     ("hit(T, P) :- publisher(P, _, T, _), not subscriber(Q, _, X, _).\n", 8, 1, "unsafe"),
     ("hit(T, P) :- publisher(P, _, T, _), no_such_relation(T).\n", 8, 37, "unknown relation no_such_relation/1"),
     ("hit(T, P) :- publisher(P, T).\n", 8, 14, "publisher takes 4 columns, not 2"),
-    ("other(T, P) :- publisher(P, _, T, _).\n", 1, 1, "no rule derives the finding hit/2"),
+    ("other(T, P) :- publisher(P, _, T, _).\n", 5, 1, "no rule derives the finding hit/2"),
     ("hit(T, P) :- publisher(P, _, T, _).\npublisher(T) :- hit(T, _).\n", 9, 1, "fact relation"),
 ])
 def test_rule_errors_point_at_file_line_column(tmp_path: Path, body: str, line: int, column: int, words: str) -> None:
@@ -77,18 +77,52 @@ def test_non_stratified_rules_are_rejected(tmp_path: Path) -> None:
     assert "not stratified" in err.value.message and err.value.file == str(path)
 
 
-@pytest.mark.parametrize("change, words", [
-    (("%! severity: warning", "%! severity: fatal"), "severity must be one of"),
-    (("%! location: port", "%! location: nowhere"), "location column 'nowhere'"),
-    (('%! message: "{topic}"', '%! message: "{missing}"'), "unknown column"),
-    (("%! summary: test\n", ""), "metadata lacks summary"),
+@pytest.mark.parametrize("change, line, words", [
+    (("%! severity: warning", "%! severity: fatal"), 3, "severity must be one of"),
+    (("%! location: port", "%! location: nowhere"), 6, "location column 'nowhere'"),
+    (('%! message: "{topic}"', '%! message: "{missing}"'), 7, "unknown column"),
+    (('%! message: "{topic}"', '%! message: "{topic}"\n%! related: [elsewhere]'), 8, "location column 'elsewhere'"),
+    (("%! finding: hit(topic, port)", "%! finding: hit"), 5, "`finding` must look like"),
+    (('%! message: "{topic}"', '%! message: "{topic}"\n%! precision: great'), 8, "precision must be one of"),
+    (('%! message: "{topic}"', '%! message: "{topic}"\n%! tags: topics'), 8, "`tags` must be a list"),
+    (('%! message: "{topic}"', '%! message: "{topic}"\n%! lists: {l: nope}'), 8, "list 'l' must look like"),
+    (("%! summary: test\n", ""), 1, "metadata lacks summary"),
+    (("%! summary: test\n", "%! summary: test\n%! sumary: typo\n"), 5, "unknown metadata key 'sumary'"),
+    (("%! summary: test\n", "%! summary: test\n%! description: |\n%!   two\n%!   lines\n%! helps: x\n"), 8,
+     "unknown metadata key 'helps'"),
+    (("%! summary: test\n", "%! summary: test\n%! summary: again\n"), 5, "given twice (first on line 4)"),
+    (("%! summary: test\n", "%! summary: [test\n"), 5, "not valid YAML"),
 ])
-def test_bad_metadata(tmp_path: Path, change: tuple[str, str], words: str) -> None:
+def test_bad_metadata_is_reported_at_the_line_of_its_key(tmp_path: Path, change: tuple[str, str], line: int,
+                                                          words: str) -> None:
     path = rule_file(tmp_path, "hit(T, P) :- publisher(P, _, T, _).\n")
     path.write_text(path.read_text().replace(*change))
     with pytest.raises(RuleError) as err:
         load_rules([path])
-    assert words in err.value.message and err.value.line == 1
+    assert words in err.value.message and (err.value.file, err.value.line) == (str(path), line)
+
+
+def test_header_errors_of_a_second_rule_point_into_it(tmp_path: Path) -> None:
+    """Lines count from the top of the file, not from the header of the rule."""
+    first = rule_file(tmp_path, "hit(T, P) :- publisher(P, _, T, _).\n").read_text()
+    second = first.replace("USR1", "USR2").replace("hit", "hot").replace("%! severity: warning", "%! severity: loud")
+    path = tmp_path / "two.lp"
+    path.write_text(first + second)
+    with pytest.raises(RuleError) as err:
+        load_rules([path])
+    assert (err.value.line, "severity must be one of" in err.value.message) == (8 + 3, True)
+    path.write_text(first + first)
+    with pytest.raises(RuleError) as err:
+        load_rules([path])
+    assert (err.value.line, "defined twice" in err.value.message) == (8 + 1, True)
+
+
+def test_every_metadata_key_is_documented() -> None:
+    from archlog.rules.ruleset import KEYS
+
+    guide = (Path(__file__).resolve().parent.parent / "docs" / "writing-rules.md").read_text()
+    header = guide[guide.index("## The metadata header"):guide.index("## Five worked rules")]
+    assert [k for k in KEYS if f"%! {k}:" not in header] == []
 
 
 def test_shipped_rules_have_complete_metadata() -> None:

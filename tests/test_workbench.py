@@ -23,8 +23,8 @@ def archlog(*args: str | Path) -> subprocess.CompletedProcess:
 
 
 @pytest.mark.parametrize("folder", ["archlog/rules/builtin", "docs/examples/rules"])
-def test_rule_fixtures_match_their_expected_findings(folder: str) -> None:
-    result = archlog("test-rules", folder)
+def test_rule_fixtures_match_their_expected_findings(folder: str, update_goldens: bool) -> None:
+    result = archlog("test-rules", folder, *(["--update"] if update_goldens else []))
     assert result.returncode == 0, result.stdout
     assert "all passed" in result.stdout
 
@@ -34,10 +34,18 @@ def test_test_rules_shows_a_diff_on_mismatch(tmp_path: Path) -> None:
     case.mkdir(parents=True)
     (case / "facts.json").write_text(json.dumps({"service_client": [["p1", "/a", "/srv", "t/T"]],
                                                  "location": [["p1", "a.py", 2, 1]]}))
-    (case / "findings.expected").write_text("AL201 a.py:3 /srv\n")
+    message = "/a calls service /srv (t/T), which no node provides"
+    (case / "findings.expected").write_text(f"AL201 a.py:3 /srv: {message}\n")
     result = archlog("test-rules", tmp_path)
     assert result.returncode == 1
-    assert "-AL201 a.py:3 /srv" in result.stdout and "+AL201 a.py:2 /srv" in result.stdout
+    assert f"-AL201 a.py:3 /srv: {message}" in result.stdout and f"+AL201 a.py:2 /srv: {message}" in result.stdout
+    (case / "findings.expected").write_text("AL201 a.py:2 /srv: an older wording\n")
+    assert archlog("test-rules", tmp_path).returncode == 1  # the message is pinned too
+    updated = archlog("test-rules", tmp_path, "--update")
+    assert updated.returncode == 0 and f"wrote {case / 'findings.expected'}" in updated.stdout
+    assert (case / "findings.expected").read_text() == f"AL201 a.py:2 /srv: {message}\n"
+    again = archlog("test-rules", tmp_path, "--update")
+    assert again.returncode == 0 and "wrote" not in again.stdout
 
 
 def test_profiles_select_ignore_and_severity(tmp_path: Path) -> None:

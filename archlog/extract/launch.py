@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import re
 import shlex
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -19,7 +20,7 @@ from typing import TYPE_CHECKING
 import yaml
 from lxml import etree
 
-from archlog import names
+from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.substitution import (SubstContext, SubstitutionError, UnknownArg, Unresolved, arithmetic,
                                           auto_value, substitute)
@@ -246,21 +247,27 @@ class LaunchInterpreter:
                 if el.tag != "master":
                     self._diag(path, el, "launch-tag", f"unrecognized tag <{el.tag}> ignored", "warning")
                 continue
-            try:
-                enabled = self._enabled(scope, el)
-                if enabled is False:
-                    continue
-                if enabled is not True:
-                    self._conditional(path, el, enabled)
-                handler(path, el, scope if enabled is True else replace(scope, condition=enabled))
-            except (SubstitutionError, LaunchError) as exc:
-                self._report(path, el, exc)
+            with sandbox.reads_not_given() as unseen:
+                self._child(path, el, scope, handler)
+            for name in unseen:
+                self._diag(path, el, "env-not-given", sandbox.not_given_message(name), "note")
+
+    def _child(self, path: Path, el: etree._Element, scope: _Scope, handler: Callable[..., None]) -> None:
+        try:
+            enabled = self._enabled(scope, el)
+            if enabled is False:
+                return
+            if enabled is not True:
+                self._conditional(path, el, enabled)
+            handler(path, el, scope if enabled is True else replace(scope, condition=enabled))
+        except (SubstitutionError, LaunchError) as exc:
+            self._report(path, el, exc)
 
     def _report(self, path: Path, el: etree._Element, exc: SubstitutionError | LaunchError) -> None:
         """The diagnostic for an element roslaunch would reject (or that depends on this machine)."""
         if isinstance(exc, Unresolved):
             self._diag(path, el, "launch-unresolved",
-                       f"<{el.tag}> skipped: {exc}; pass the value with --arg or set it in the environment",
+                       f"<{el.tag}> skipped: {exc}; pass the value with --arg or --env",
                        "warning")
         else:
             self._diag(path, el, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TypeVar
 
-from archlog import names
+from archlog import names, sandbox
 from archlog.extract.launch import MAX_INCLUDE_DEPTH, Element, LaunchError, LaunchInterpreter, LaunchNode
 from archlog.extract.launch2_subst import (Context, Parts, Rewritten, describe, parse, perform, text, truth,
                                           typed_bool, unknown_reason, yaml_value)
@@ -267,7 +267,14 @@ class Ros2Launch:
 
     def _guarded(self, action: A, ctx: Context, execute: Callable[[A, Context, bool], None]) -> None:
         """Execute an action whose conditions hold (kept as conditional when they cannot be known;
-        `execute` is told so); what it cannot do is a diagnostic at the action."""
+        `execute` is told so); what it cannot do is a diagnostic at the action, and so is each
+        environment variable it read that the run was not given."""
+        with sandbox.reads_not_given() as unseen:
+            self._execute_guarded(action, ctx, execute)
+        for name in unseen:
+            self.diag(action.where, "env-not-given", sandbox.not_given_message(name), "note")
+
+    def _execute_guarded(self, action: A, ctx: Context, execute: Callable[[A, Context, bool], None]) -> None:
         try:
             state = self.condition(action.conditions, ctx)
         except (SubstitutionError, LaunchError) as exc:
@@ -375,6 +382,8 @@ class Ros2Launch:
                 raise Unresolved(f"set under {ctx.condition}")
             value = perform(action.value or (), ctx)
             old = ctx.env.get(name)
+            if action.append and name not in ctx.env:
+                sandbox.not_given(name)  # appended to the value the machine would have
             if action.append and old:
                 if isinstance(old, UnknownArg):
                     raise Unresolved(old.reason)

@@ -131,6 +131,8 @@ class Interpreter(Protocol):
 
     def site(self, line: int) -> int: ...
 
+    def not_given(self, name: str, line: int) -> None: ...
+
     def call(self, function: object, args: list[object], kwargs: dict[str, object], line: int) -> object: ...
 
 
@@ -626,6 +628,26 @@ def _os_path(function: Callable[..., object]) -> Callable[[CallSite], object]:
     return build
 
 
+def _expanduser(c: CallSite) -> object:
+    """os.path.expanduser with the HOME the run was given (never the home of archlog's machine)."""
+    path = _plain_path(c.arg(0, "path"))
+    if path is None or not path.startswith("~"):
+        return Unread("os.path.expanduser of a value not known statically", c.line) if path is None else path
+    user, sep, rest = path.partition("/")
+    if user != "~":
+        return Unread(f"the home folder of user {user[1:]}", c.line)
+    home = environment(c.interp, "HOME", Unread("the home folder (~): HOME is not given", c.line), c.line)
+    return (home.rstrip("/") + sep + rest or "/") if isinstance(home, str) else home
+
+
+def _getattr(c: CallSite) -> object:
+    """getattr(module, 'name'): the attribute of an imported name; of anything else, not read."""
+    target, name = c.arg(0, "object"), c.arg(1, "name")
+    if isinstance(target, Ref) and isinstance(name, str) and len(c.args) == 2:
+        return Ref(f"{target.name}.{name}")
+    return Unread("getattr()", c.line)
+
+
 def _join(c: CallSite) -> object:
     plain = [_plain_path(a) for a in c.args]
     if all(p is not None for p in plain) and plain:
@@ -637,12 +659,16 @@ def _getenv(c: CallSite) -> object:
     name, default = c.arg(0, "key"), c.arg(1, "default")
     if not isinstance(name, str):
         return Unread("an environment variable whose name is not known", c.line)
-    return environment(c.interp.env, name, default, c.line)
+    return environment(c.interp, name, default, c.line)
 
 
-def environment(env: dict[str, str | UnknownArg], name: str, default: object, line: int) -> object:
-    """An environment variable as os.environ.get(name, default) reads it."""
-    value = env.get(name, default)
+def environment(interp: Interpreter, name: str, default: object, line: int) -> object:
+    """An environment variable as os.environ.get(name, default) reads it, from the variables the
+    run was given; reading another is reported at `line`."""
+    if name not in interp.env:
+        interp.not_given(name, line)
+        return default
+    value = interp.env[name]
     return Unread(f"environment variable {name} is not known ({value.reason})", line) \
         if isinstance(value, UnknownArg) else value
 
@@ -713,10 +739,11 @@ FUNCTIONS: dict[str, Callable[[CallSite], object]] = {
     "os.path.join": _join,
     "os.path.dirname": _os_path(os.path.dirname), "os.path.basename": _os_path(os.path.basename),
     "os.path.abspath": _os_path(os.path.abspath), "os.path.realpath": _os_path(os.path.realpath),
-    "os.path.normpath": _os_path(os.path.normpath), "os.path.expanduser": _os_path(os.path.expanduser),
+    "os.path.normpath": _os_path(os.path.normpath), "os.path.expanduser": _expanduser,
     "os.path.exists": _os_path(os.path.exists), "os.path.isfile": _os_path(os.path.isfile),
     "os.path.isdir": _os_path(os.path.isdir), "os.path.splitext": _os_path(os.path.splitext),
-    "os.getenv": _getenv, "os.environ.get": _getenv,
+    "os.getenv": _getenv, "os.environ.get": _getenv, "os.environ.copy": lambda c: Ref("os.environ"),
+    "builtins.getattr": _getattr,
     "pathlib.Path": lambda c: PathValue(str(Path(*[_plain_path(a) or "" for a in c.args])))
     if all(_plain_path(a) is not None for a in c.args) else Unread("a path not known statically", c.line),
     "yaml.safe_load": _loader(yaml.safe_load), "yaml.load": _loader(yaml.safe_load),

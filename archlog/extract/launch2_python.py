@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from archlog import sandbox
 from archlog.extract.launch import LaunchError
 from archlog.extract.launch2 import Action, Condition, Where
 from archlog.extract.launch2_api import (API_MODULES, CONSTRUCTORS, FUNCTIONS, CallSite, ConfigsView, ContextValue,
@@ -130,6 +131,9 @@ class _Interpreter(Evaluator):
 
     def find(self, pkg: str) -> Path | None:
         return self.launcher.workspace.find(pkg)
+
+    def not_given(self, name: str, line: int) -> None:
+        self.launcher.diag(Where(self.path, line), "env-not-given", sandbox.not_given_message(name), "note")
 
     def site(self, line: int) -> int:
         """Where an action made at `line` is reported: at the call of the helper function it was
@@ -276,6 +280,8 @@ class _Interpreter(Evaluator):
                 return handler(CallSite(args, kwargs, line, self))
             except LaunchError as exc:
                 return Unread(str(exc), line)
+        if function is dict and args == [Ref("os.environ")] and not kwargs:
+            return args[0]  # a copy of the environment reads as the environment
         if any(function is builtin for builtin in BUILTINS.values()):
             args = [a.path if isinstance(a, PathValue) else a for a in args]  # str(path) is its text
             if any(isinstance(v, Unread) for v in [*args, *kwargs.values()]):
@@ -339,11 +345,11 @@ class _Interpreter(Evaluator):
         scope = self.scope.find(name)
         if scope is not None:
             return scope.vars[name]
-        if name in ("open", "range"):
+        if name in ("open", "range", "getattr"):
             return Ref(f"builtins.{name}")
         if name in BUILTINS:
             return BUILTINS[name]
-        if name in ("print", "hasattr", "type", "super", "vars", "locals", "globals", "getattr"):
+        if name in ("print", "hasattr", "type", "super", "vars", "locals", "globals"):
             return Unread(f"{name}()", self.line)
         return Unread(f"name '{name}' is not defined", self.line)
 
@@ -454,7 +460,7 @@ class _Interpreter(Evaluator):
         if isinstance(target, Ref) and target.name == "os.environ":
             if not isinstance(index, str):
                 return Unread("os.environ[?]", node.lineno)
-            return environment(self.env, index, Unread(f"environment variable {index} is not set", node.lineno),
+            return environment(self, index, Unread(f"environment variable {index} is not given", node.lineno),
                                node.lineno)
         if isinstance(target, ConfigsView):
             return self.config(target, index, None, node.lineno)

@@ -18,6 +18,7 @@ from pathlib import Path
 
 import yaml
 
+from archlog import sandbox
 from archlog.extract.launch import Element
 from archlog.extract.substitution import BUILTINS, MATH, SubstitutionError, UnknownArg, Unresolved, restricted_eval
 
@@ -278,9 +279,10 @@ def _env(args: tuple[Parts, ...], ctx: Context) -> str:
         if isinstance(value, UnknownArg):
             raise Unresolved(f"environment variable {name} is not known ({value.reason})")
         return value
+    sandbox.not_given(name)
     if len(args) > 1:
         return perform(args[1], ctx)
-    raise Unresolved(f"environment variable {name} is not set")
+    raise Unresolved(f"environment variable {name} is not given")
 
 
 def _find_share(args: tuple[Parts, ...], ctx: Context) -> str:

@@ -1,8 +1,9 @@
 """Ports that a robot description creates: the gazebo_ros plugins in its `<gazebo>` elements.
 
 The description is a parameter set from a URDF text (`textfile=`) or from a `command=` that runs
-xacro; xacro files are expanded with the xacro library (its own restricted evaluation; nothing is
-run), with `$(find pkg)` answered from the workspace. The plugins run inside gzserver once
+xacro; xacro files are expanded with the xacro library routed through archlog's restricted evaluator,
+sandboxed reading and budgets (see `xacro_expand`; nothing in them is run), with `$(find pkg)`
+answered from the workspace. The plugins run inside gzserver once
 `spawn_model -param NAME` inserts the model, so their ports are given to that spawn_model instance.
 """
 
@@ -13,12 +14,13 @@ import xml.dom.minidom
 from dataclasses import dataclass
 from pathlib import Path
 
-from archlog import names
+from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.command_line import split_options
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import Port
 from archlog.extract.workspace import Workspace
+from archlog.extract.xacro_expand import Place, XacroFailure, expand, parse_xml
 from archlog.values import Unknown
 
 
@@ -67,7 +69,7 @@ def spawned_ports(node: LaunchNode, words: list[str], config: LaunchConfig, work
         return []
     text, files = described
     try:
-        doc = xml.dom.minidom.parseString(text)
+        doc = parse_xml(text)
     except Exception as exc:  # noqa: BLE001 - expat raises several types for broken XML
         diagnostics.add(elem.file, elem.line, "robot-description", f"robot description is not XML: {exc}", "warning")
         return []
@@ -98,24 +100,20 @@ def _expand(value: object, elem: Element, workspace: Workspace,
 
 def _xacro(source: Path, mappings: dict[str, str], workspace: Workspace, elem: Element,
            diagnostics: DiagnosticSink) -> tuple[str, list[Path]] | None:
-    import xacro
-    import xacro.substitution_args as substitution
+    def at(place: Place) -> tuple[str, int]:
+        file, line = place
+        return (workspace.display(file), line or 1) if file else (elem.file, elem.line)
 
-    def find(pkg: str) -> str:
-        found = workspace.find(pkg)
-        if found is None:
-            raise substitution.SubstitutionException(f"package {pkg} not found")
-        return str(found)
-
-    original, substitution._eval_find = substitution._eval_find, find
     try:
-        doc = xacro.process_file(str(source), mappings=mappings)
-        return doc.toxml(), [source, *map(Path, xacro.all_includes)]
-    except Exception as exc:  # noqa: BLE001 - xacro reports every failure as some exception
-        diagnostics.add(elem.file, elem.line, "robot-description", f"xacro cannot expand {source}: {exc}", "warning")
+        expanded = expand(source, mappings, workspace.find)
+    except XacroFailure as failure:
+        for name, place in failure.unseen:
+            diagnostics.add(*at(place), "env-not-given", sandbox.not_given_message(name))
+        diagnostics.add(*at(failure.place), failure.code, str(failure))
         return None
-    finally:
-        substitution._eval_find = original
+    for name, place in expanded.unseen:
+        diagnostics.add(*at(place), "env-not-given", sandbox.not_given_message(name))
+    return expanded.text, expanded.files
 
 
 def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: list[Path], elem: Element,
@@ -148,9 +146,9 @@ def _where(library: str, files: list[Path], elem: Element, workspace: Workspace)
     """The line naming the plugin in the description's files, else the launch element."""
     for path in files:
         try:
-            for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            for number, line in enumerate(sandbox.read_text(path, "description").splitlines(), 1):
                 if f'"{library}"' in line:
                     return workspace.display(path), number
-        except OSError:
+        except sandbox.Refused:
             continue
     return elem.file, elem.line

@@ -15,13 +15,28 @@ import math
 import operator
 import os
 import re
+import string
+import sys
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from archlog import budget, sandbox
+from archlog.budget import BudgetExceeded
+
 
 class SubstitutionError(Exception):
     """A substitution roslaunch rejects."""
+
+
+class TooLarge(BudgetExceeded, SubstitutionError):
+    """An expression that would build a value (or take steps) past the budget, stopped before it
+    does. It is also a `SubstitutionError`, so a reader that knows only those still reports it."""
+
+    def __init__(self, kind: str, limit: int, what: str = "") -> None:
+        super().__init__(kind, limit)
+        if what:  # a limit that is not a [budget] setting
+            self.args = (what,)
 
 
 class Unresolved(SubstitutionError):
@@ -38,7 +53,8 @@ class UnknownArg:
 
 @dataclass
 class SubstContext:
-    """What substitutions can see: the current file's args, package lookup and environment.
+    """What substitutions can see: the current file's args, package lookup and environment (the
+    variables the run was given, archlog.sandbox; never the environment archlog itself runs in).
 
     `anon` holds the $(anon) names of this scope (roslaunch keeps them next to the args, so a
     group or node copies them and an include starts afresh); `serial` numbers them uniquely."""
@@ -47,7 +63,7 @@ class SubstContext:
     find: Callable[[str], Path | None]
     file: Path
     anon: dict[str, str] = field(default_factory=dict)
-    env: dict[str, str] = field(default_factory=lambda: dict(os.environ))
+    env: dict[str, str] = field(default_factory=lambda: dict(sandbox.current().env))
     serial: Iterator[int] = field(default_factory=lambda: itertools.count(1))
 
     def arg(self, name: str) -> str:
@@ -67,8 +83,9 @@ class SubstContext:
     def getenv(self, name: str, default: str | None = None) -> str:
         if name in self.env:
             return self.env[name]
+        sandbox.not_given(name)
         if default is None:
-            raise Unresolved(f"environment variable {name} is not set")
+            raise Unresolved(f"environment variable {name} is not given")
         return default
 
     def anonymous(self, name: str) -> str:
@@ -187,9 +204,37 @@ _CMPOPS = {
 STR_METHODS = {"lower", "upper", "strip", "lstrip", "rstrip", "startswith", "endswith", "replace", "split",
                 "join", "find", "count", "capitalize", "title", "isdigit", "format"}
 MATH = {k: v for k, v in vars(math).items() if not k.startswith("_")}
+INT_DIGITS = sys.get_int_max_str_digits() or 4300
+"""Longest integer an expression may build (Python's own limit for printing one)."""
+
+
+def _sum(values: object, start: object = 0) -> object:
+    """sum(), concatenating lists in linear time (the builtin copies the whole prefix each step)."""
+    items = list(values)  # type: ignore[call-overload]
+    if isinstance(start, list) and all(isinstance(item, list) for item in items):
+        joined = list(start)
+        for item in items:
+            joined.extend(item)
+            bounded(joined)
+        return joined
+    return sum(items, start)  # type: ignore[arg-type]
+
+
+def _range(*bounds: int) -> range:
+    """range() whose length is spent as evaluation steps (each element may be visited)."""
+    numbers = range(*bounds)
+    try:
+        spend("steps", len(numbers))
+    except OverflowError:  # longer than sys.maxsize
+        spend("steps", sys.maxsize)
+    return numbers
+
+
 BUILTINS = {f.__name__: f for f in (int, float, str, bool, list, dict, tuple, len, abs, min, max, round, sorted,
-                                    sum, map, filter, zip, any, all, reversed, enumerate, chr, ord, hex, oct, bin,
-                                    divmod, repr, isinstance)}
+                                    map, filter, zip, any, all, reversed, enumerate, chr, ord, hex, oct, bin,
+                                    divmod, repr, isinstance)} | {"sum": _sum}
+PURE_BUILTINS = {**BUILTINS, "range": _range, "set": set, "frozenset": frozenset}
+"""The builtins above, with range() and sets (for languages whose expressions offer them)."""
 _HUGE_WIDTH = re.compile(r"\d{5,}")
 
 
@@ -213,15 +258,61 @@ def _number(text: str) -> int | float | None:
         return None
 
 
-def restricted_eval(expr: str, lookup: Callable[[str], object]) -> object:
-    """Evaluate a Python expression over the AST whitelist of `Evaluator`; names come from `lookup`."""
+def restricted_eval(expr: str, lookup: Callable[[str], object],
+                    attribute: Callable[[object, str], object] | None = None) -> object:
+    """Evaluate a Python expression over the AST whitelist of `Evaluator`; names come from `lookup`,
+    `a.b` (when allowed) from `attribute`."""
     if "__" in expr:
         raise SubstitutionError("$(eval ...) may not contain double underscore expressions")
     try:
         tree = ast.parse(expr.strip(), mode="eval")
-    except SyntaxError as exc:
-        raise SubstitutionError(f"$(eval) syntax error: {exc.msg}") from None
-    return Evaluator(lookup).visit(tree.body)
+    except (SyntaxError, ValueError) as exc:  # ValueError: a NUL byte
+        raise SubstitutionError(f"$(eval) syntax error: {getattr(exc, 'msg', exc)}") from None
+    except (RecursionError, MemoryError):
+        raise TooLarge("depth", budget.current().limits["depth"]) from None
+    return Evaluator(lookup, attribute).visit(tree.body)
+
+
+def spend(kind: str, amount: int = 1) -> None:
+    """`budget.spend`, stopping the expression with `TooLarge`."""
+    try:
+        budget.spend(kind, amount)
+    except BudgetExceeded as exc:
+        raise TooLarge(exc.kind, exc.limit) from None
+
+
+def bounded(value: object) -> object:
+    """`value` if its text stays within the characters budget (and an integer within
+    `INT_DIGITS`); raises `TooLarge` otherwise."""
+    if isinstance(value, int) and _digits(value) > INT_DIGITS:
+        raise TooLarge("characters", INT_DIGITS, f"integer of more than {INT_DIGITS} digits")
+    limit = budget.current().limits["characters"]
+    if size(value) > limit:
+        raise TooLarge("characters", limit)
+    return value
+
+
+def size(value: object, memo: dict[int, int] | None = None, depth: int = 0) -> int:
+    """About how many characters `str(value)` has, a part shared several times counted each time
+    (each container is walked once; every entry walked spends an evaluation step)."""
+    if isinstance(value, str):
+        return len(value)
+    if isinstance(value, int):
+        return _digits(value)
+    if not isinstance(value, (list, tuple, dict, set, frozenset)):
+        return 24
+    memo = {} if memo is None else memo
+    if id(value) not in memo:
+        if depth > budget.current().limits["depth"]:
+            raise TooLarge("depth", budget.current().limits["depth"])
+        spend("steps", len(value))
+        items = [*value.keys(), *value.values()] if isinstance(value, dict) else value
+        memo[id(value)] = 2 + sum(size(item, memo, depth + 1) + 2 for item in items)
+    return memo[id(value)]
+
+
+def _digits(number: int) -> int:
+    return number.bit_length() * 30103 // 100000 + 1
 
 
 def _eval(expr: str, ctx: SubstContext) -> str:
@@ -254,10 +345,18 @@ def arithmetic(expr: str) -> object:
 
 
 class Evaluator(ast.NodeVisitor):
-    """Evaluates pure expressions (no attribute access, no calls but to what `lookup` gives)."""
+    """Evaluates pure expressions: no calls but to what `lookup` gives and the str methods of
+    `STR_METHODS`, no attribute access but through `attribute` (when given; never a name starting
+    with `_`). Every node spends an evaluation step, and every value built is `bounded`."""
 
-    def __init__(self, lookup: Callable[[str], object]) -> None:
+    def __init__(self, lookup: Callable[[str], object],
+                 attribute: Callable[[object, str], object] | None = None) -> None:
         self.lookup = lookup
+        self.attribute = attribute
+
+    def visit(self, node: ast.AST) -> object:
+        spend("steps")
+        return super().visit(node)
 
     def generic_visit(self, node: ast.AST) -> object:
         raise SubstitutionError(f"$(eval) does not allow {type(node).__name__}")
@@ -268,16 +367,21 @@ class Evaluator(ast.NodeVisitor):
     def visit_Name(self, node: ast.Name) -> object:
         return self.lookup(node.id)
 
+    def visit_Attribute(self, node: ast.Attribute) -> object:
+        if self.attribute is None or node.attr.startswith("_"):
+            return self.generic_visit(node)
+        return self.attribute(self.visit(node.value), node.attr)
+
     def visit_Dict(self, node: ast.Dict) -> object:
         if any(k is None for k in node.keys):
             return self.generic_visit(node)
-        return {self.visit(k): self.visit(v) for k, v in zip(node.keys, node.values)}  # type: ignore[arg-type]
+        return bounded({self.visit(k): self.visit(v) for k, v in zip(node.keys, node.values)})  # type: ignore[arg-type]
 
     def visit_Slice(self, node: ast.Slice) -> object:
         return slice(*(None if part is None else self.visit(part) for part in (node.lower, node.upper, node.step)))
 
     def visit_JoinedStr(self, node: ast.JoinedStr) -> object:
-        return "".join(str(self.visit(value)) for value in node.values)
+        return bounded("".join(str(self.visit(value)) for value in node.values))
 
     def visit_FormattedValue(self, node: ast.FormattedValue) -> object:
         value = self.visit(node.value)
@@ -291,16 +395,16 @@ class Evaluator(ast.NodeVisitor):
             raise SubstitutionError(f"$(eval) {exc}") from None
 
     def visit_List(self, node: ast.List) -> object:
-        return [self.visit(e) for e in node.elts]
+        return bounded([self.visit(e) for e in node.elts])
 
     def visit_Tuple(self, node: ast.Tuple) -> object:
-        return tuple(self.visit(e) for e in node.elts)
+        return bounded(tuple(self.visit(e) for e in node.elts))
 
     def visit_Subscript(self, node: ast.Subscript) -> object:
         target, index = self.visit(node.value), self.visit(node.slice)
         try:
             return target[index]  # type: ignore[index]
-        except (TypeError, KeyError, IndexError) as exc:
+        except (TypeError, KeyError, IndexError, AttributeError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
 
     def visit_BoolOp(self, node: ast.BoolOp) -> object:
@@ -324,15 +428,10 @@ class Evaluator(ast.NodeVisitor):
         if type(node.op) not in _BINOPS:
             return self.generic_visit(node)
         left, right = self.visit(node.left), self.visit(node.right)
-        if isinstance(node.op, ast.Pow) and isinstance(right, (int, float)) and abs(right) > 64:
-            raise SubstitutionError("$(eval) exponent too large")
-        if isinstance(node.op, ast.Mult) and any(isinstance(v, (str, list)) for v in (left, right)):
-            count = right if isinstance(right, int) else left
-            if isinstance(count, int) and count > 10_000:
-                raise SubstitutionError("$(eval) repetition too large")
+        _estimate(node.op, left, right)
         try:
-            return _BINOPS[type(node.op)](left, right)
-        except (TypeError, ZeroDivisionError, ValueError) as exc:
+            return bounded(_BINOPS[type(node.op)](left, right))
+        except (TypeError, ZeroDivisionError, ValueError, OverflowError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
 
     def visit_Compare(self, node: ast.Compare) -> object:
@@ -353,22 +452,67 @@ class Evaluator(ast.NodeVisitor):
     def visit_Call(self, node: ast.Call) -> object:
         if any(k.arg is None for k in node.keywords) or any(isinstance(a, ast.Starred) for a in node.args):
             return self.generic_visit(node)
+        function = self.callee(node.func)
         args = [self.visit(a) for a in node.args]
         kwargs = {k.arg: self.visit(k.value) for k in node.keywords}
-        if isinstance(node.func, ast.Name):
-            function = self.lookup(node.func.id)
-            if not callable(function):
-                raise SubstitutionError(f"$(eval) {node.func.id} is not callable")
-        elif isinstance(node.func, ast.Attribute) and node.func.attr in STR_METHODS:
-            target = self.visit(node.func.value)
-            if not isinstance(target, str):
-                raise SubstitutionError(f"$(eval) cannot call {node.func.attr} on {type(target).__name__}")
-            if node.func.attr == "format" and ("__" in target or _HUGE_WIDTH.search(target)):
-                raise SubstitutionError("$(eval) format string not allowed")
-            function = getattr(target, node.func.attr)
-        else:
-            raise SubstitutionError(f"$(eval) cannot call {ast.unparse(node.func)}")
+        target = getattr(function, "__self__", None)
+        if isinstance(target, str):  # a str method: the size of its result is known first
+            args = _str_call_size(target, function.__name__, args, kwargs)
         try:
-            return function(*args, **kwargs)  # type: ignore[operator]
-        except (TypeError, ValueError, OverflowError) as exc:
+            return bounded(function(*args, **kwargs))  # type: ignore[operator]
+        except (TypeError, ValueError, OverflowError, KeyError, IndexError, AttributeError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
+
+    def callee(self, func: ast.expr) -> Callable[..., object]:
+        """What a call calls: a name, a str method, or (with `attribute`) a name's attribute."""
+        if isinstance(func, ast.Name):
+            function = self.lookup(func.id)
+        elif isinstance(func, ast.Attribute) and not func.attr.startswith("_"):
+            target = self.visit(func.value)
+            if isinstance(target, str) and func.attr in STR_METHODS:
+                function = getattr(target, func.attr)
+            elif self.attribute is not None and not isinstance(target, str):
+                function = self.attribute(target, func.attr)
+            else:
+                raise SubstitutionError(f"$(eval) cannot call {func.attr} on {type(target).__name__}")
+        else:
+            raise SubstitutionError(f"$(eval) cannot call {ast.unparse(func)}")
+        if not callable(function):
+            raise SubstitutionError(f"$(eval) {ast.unparse(func)} is not callable")
+        return function
+
+
+def _estimate(op: ast.operator, left: object, right: object) -> None:
+    """Stop a power or a repetition whose result would be over budget before it is computed."""
+    if isinstance(op, ast.Pow) and isinstance(left, int) and isinstance(right, int) and abs(left) > 1 and right > 0:
+        if _digits(left) * right > INT_DIGITS:
+            raise TooLarge("characters", INT_DIGITS, f"integer of more than {INT_DIGITS} digits")
+    if isinstance(op, ast.Mult):
+        sequence, count = (left, right) if isinstance(right, int) else (right, left)
+        if isinstance(sequence, (str, list, tuple)) and isinstance(count, int):
+            limit = budget.current().limits["characters"]
+            if size(sequence) * count > limit:
+                raise TooLarge("characters", limit)
+
+
+def _str_call_size(target: str, name: str, args: list[object], kwargs: dict[str, object]) -> list[object]:
+    """The arguments of a str method call (an iterable joined becomes a list), once its result is
+    known to stay within the characters budget; format strings may not reach attributes or nest."""
+    limit = budget.current().limits["characters"]
+    if name == "join" and args:
+        args = [list(args[0]), *args[1:]]  # type: ignore[call-overload]
+        estimate = sum(size(item) for item in args[0]) + len(target) * len(args[0])  # type: ignore[union-attr]
+    elif name == "replace" and len(args) >= 2 and all(isinstance(a, str) for a in args[:2]):
+        old, new = args[0], args[1]
+        estimate = len(target) + (target.count(old) if old else len(target) + 1) * len(new)  # type: ignore[arg-type]
+    elif name == "format":
+        fields = [f for f in string.Formatter().parse(target) if f[1] is not None] if "{" in target else []
+        if "__" in target or _HUGE_WIDTH.search(target) or any("{" in (f[2] or "") or "." in f[1] or "[" in f[1]
+                                                                 for f in fields):
+            raise SubstitutionError("$(eval) format string not allowed")
+        estimate = len(target) + len(fields) * max((size(a) for a in [*args, *kwargs.values()]), default=0)
+    else:
+        return args
+    if estimate > limit:
+        raise TooLarge("characters", limit)
+    return args

@@ -23,6 +23,7 @@ class Relation:
     columns: tuple[Column, ...]
     doc: str
     group: str
+    source: str = ""  # derived relations: the rule file (under archlog/rules/builtin/) that defines it
 
     @property
     def arity(self) -> int:
@@ -129,3 +130,56 @@ RELATIONS: tuple[Relation, ...] = (
 )
 
 BY_NAME: dict[str, Relation] = {r.name: r for r in RELATIONS}
+
+
+def _derived(source: str, name: str, doc: str, *cols: tuple[str, str, str]) -> Relation:
+    return Relation(name, tuple(Column(*c) for c in cols), doc, "rules", source)
+
+
+_PRELUDE = "prelude.lp"
+_AL601 = "AL601_required_input_unreachable.lp"
+_SUB = ("sub", "id", "the subscriber port")
+
+# Relations the shipped rules derive that Python code reads from the grounded program (reports,
+# finding lists) or that the guide offers to rule writers. Not facts: `archlog facts` does not
+# export them, and a rule may not add rows to them from facts of its own. A finding predicate of a
+# shipped rule (near_miss/9, ...) is declared by that rule's `finding:` header instead.
+DERIVED: tuple[Relation, ...] = (
+    _derived(_PRELUDE, "is_unknown", "A value static analysis could not know (a term unknown(N)).",
+             ("value", "id", "the unknown term")),
+    _derived(_PRELUDE, "port_node", "The node instance a port of any kind belongs to.", _PORT, _NODE),
+    _derived(_PRELUDE, "published", "A topic some publisher uses.", ("topic", "name", "the topic")),
+    _derived(_PRELUDE, "subscribed", "A topic some subscriber uses.", ("topic", "name", "the topic")),
+    _derived(_PRELUDE, "provided", "A service some server provides.", ("service", "name", "the service")),
+    _derived(_PRELUDE, "connected", "A topic both published and subscribed.", ("topic", "name", "the topic")),
+    _derived(_PRELUDE, "compatible", "Two message types used by ports that can meet: equal, or either one unknown.",
+             ("a", "type", "a message type"), ("b", "type", "another one")),
+    _derived(_PRELUDE, "dangling_sub", "A subscriber with no publisher on its (known) name nor on another of its "
+             "alternative names; /tf and /tf_static are never dangling.",
+             _PORT, _NODE, ("topic", "name", "the topic"), ("type", "type", "message type")),
+    _derived(_PRELUDE, "dangling_pub", "A publisher with no subscriber on its (known) name nor on another of its "
+             "alternative names.", _PORT, _NODE, ("topic", "name", "the topic"), ("type", "type", "message type")),
+    _derived(_PRELUDE, "has_near", "A port that AL102 reports as a near miss (AL103 and AL104 leave it to AL102).",
+             _PORT),
+    _derived(_PRELUDE, "opaque_node", "A node instance whose ports are not (all) known: no source or model, or "
+             "incomplete extraction.", _NODE),
+    _derived(_PRELUDE, "system_opaque", "Some node instance of the configuration is opaque."),
+    _derived(_PRELUDE, "qos_pair", "A publisher and a subscriber of one topic whose QoS is known, so their policies "
+             "must be compatible for them to connect.", ("topic", "name", "the topic"),
+             ("pub", "id", "the publisher port"), ("pub_node", "name", "its node"), _SUB,
+             ("sub_node", "name", "its node")),
+    _derived(_PRELUDE, "requires", "An output (publisher port) that every call publishing it publishes only after "
+             "the input's callback ran.", ("pub", "id", "the publisher port"), _SUB),
+    _derived(_PRELUDE, "required_topic", "A topic an output requires (`archlog behavior` lists them).",
+             ("pub", "id", "the publisher port"), ("topic", "name", "the required input's topic")),
+    _derived(_PRELUDE, "starved_input", "A required input that nothing in the configuration publishes.",
+             ("topic", "name", "the input's topic"), _SUB, _NODE),
+    _derived(_AL601, "starved_output", "A topic published only after a starved input (AL601's `outputs` list).",
+             _SUB, ("topic", "name", "the output's topic")),
+    _derived(_AL601, "silenced_node", "A node silenced downstream of a starved input (AL601's `silenced` list).",
+             _SUB, _NODE),
+    _derived(_AL601, "near_publisher", "A candidate for a starved input: a published near-miss name, or a topic of "
+             "its type published to nobody (AL601's `near` list).", _SUB, ("topic", "name", "the candidate topic")),
+)
+
+DERIVED_BY_NAME: dict[str, Relation] = {r.name: r for r in DERIVED}

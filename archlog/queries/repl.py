@@ -19,7 +19,7 @@ from rich.text import Text
 
 from archlog.analysis import Analysis
 from archlog.extract.cache import cache_dir
-from archlog.facts.schema import BY_NAME
+from archlog.facts.schema import BY_NAME, DERIVED_BY_NAME
 from archlog.queries.session import QueryError, Result, Session
 from archlog.rules.engine import Finding, render
 from archlog.rules.ruleset import RuleError
@@ -98,11 +98,13 @@ class Repl:
         self.console.print(table)
 
     def cmd_schema(self, args: list[str]) -> None:
-        relation = BY_NAME.get(args[0]) if args else None
+        relation = (BY_NAME.get(args[0]) or DERIVED_BY_NAME.get(args[0])) if args else None
         if relation is None:
-            self.console.print("schema of a fact relation: :schema publisher (derived relations: see their rule file)")
+            self.console.print("schema of a fact relation: :schema publisher (derived relations: docs/facts.md, or "
+                               "their rule file)")
             return
-        self.console.print(f"{relation.name}: {relation.doc}", markup=False)
+        where = f" (derived in {relation.source})" if relation.source else ""
+        self.console.print(f"{relation.name}: {relation.doc}{where}", markup=False)
         for column in relation.columns:
             self.console.print(f"  {column.name} ({column.type}): {column.doc}", markup=False)
 

@@ -4,7 +4,8 @@ DIR holds rule files (`*.lp`) and a `tests/` folder with one folder per case. A 
 fact file `facts.json` ({"relation": [[cell, ...], ...]}, an unknown cell as {"unknown": "expr"},
 near-miss names computed unless given) or a workspace with `case.json` ({"launch": [...],
 "args": {...}}). Its `findings.expected` lists one finding per line:
-`RULE file:line subject`, sorted.
+`RULE file:line subject: message`, sorted. A case folder is named after its rule file's stem:
+`<stem>` for a case where the rule fires, `<stem>__clean` (the defect fixed) where it does not.
 """
 
 from __future__ import annotations
@@ -36,9 +37,11 @@ def run_rule_tests(folders: list[Path], update: bool, console: Console) -> bool:
             count += 1
             got = describe(case_findings(case, ruleset))
             expected_file = case / EXPECTED
-            if update:
-                expected_file.write_text(got)
             expected = expected_file.read_text() if expected_file.is_file() else ""
+            if update and got != expected:
+                expected_file.write_text(got)
+                console.print(f"wrote {escape(str(expected_file))}", highlight=False)
+                expected = got
             if got == expected:
                 console.print(f"[green]ok[/]   {escape(str(case))}")
                 continue
@@ -71,6 +74,7 @@ def load_facts(path: Path) -> FactStore:
 
 
 def describe(findings: list[Finding]) -> str:
-    lines = sorted(f"{f.rule.id} {f.location.file}:{f.location.line} {render(next(iter(f.values.values())))}"
-                   for f in findings)
+    """One line per finding, sorted: `RULE file:line subject: message` (the rendered message)."""
+    lines = sorted(f"{f.rule.id} {f.location.file}:{f.location.line} {render(next(iter(f.values.values())))}: "
+                   f"{f.message}" for f in findings)
     return "".join(line + "\n" for line in lines)

@@ -146,9 +146,9 @@ def check(ruleset: RuleSet) -> str:
         _safety(program, declared)
     for rule in ruleset.rules:
         if (rule.predicate, len(rule.columns)) not in heads:
-            raise RuleError(rule.file, rule.line, f"no rule derives the finding {rule.predicate}/{len(rule.columns)} "
-                            "(hint: the `finding:` header must name the head of a rule below it, with as many "
-                            "columns)")
+            raise RuleError(rule.file, rule.lines.get("finding", rule.line), f"no rule derives the finding "
+                            f"{rule.predicate}/{len(rule.columns)} (hint: the `finding:` header must name the head of "
+                            "a rule below it, with as many columns)")
     return declared
 
 

@@ -10,6 +10,8 @@
     type_mismatch(T, S, SN, ST, P, PN, PT) :- ...
 
 A file without a header holds shared derived relations (a library, like prelude.lp).
+Rule files may come from the workspace under analysis, so they may not embed scripts (`#script`,
+which clingo would run as Python or Lua) nor read other files (`#include`).
 """
 
 from __future__ import annotations
@@ -24,7 +26,11 @@ from archlog.diagnostics import SEVERITIES
 
 BUILTIN = Path(__file__).resolve().parent / "builtin"
 REQUIRED = ("id", "name", "severity", "finding", "location", "message", "summary")
+OPTIONAL = ("related", "description", "help", "tags", "precision", "lists")
+KEYS = REQUIRED + OPTIONAL  # a closed set: any other key is an error (docs/writing-rules.md documents each)
+PRECISIONS = ("high", "medium", "low")
 _HEAD = re.compile(r"^\s*(\w+)\s*\(([^()]*)\)\s*$")
+_FORBIDDEN = re.compile(r"#(script|include)\b")  # anywhere, comments and strings too: clingo never sees it
 
 
 class RuleError(Exception):
@@ -55,6 +61,8 @@ class Rule:
     # name -> (relation, column): the second arguments of the relation's binary rows whose first
     # argument is the finding's value in that column, listed in the finding (e.g. nodes silenced)
     lists: dict[str, tuple[str, str]] = field(default_factory=dict)
+    # metadata key -> its line in the file (errors about a key point at it)
+    lines: dict[str, int] = field(default_factory=dict)
 
 
 @dataclass
@@ -76,7 +84,8 @@ class RuleSet:
         known = {r.id for r in self.rules}
         for rule in rules:
             if rule.id in known:
-                raise RuleError(rule.file, rule.line, f"rule id {rule.id} is defined twice")
+                raise RuleError(rule.file, rule.lines.get("id", rule.line), f"rule id {rule.id} is defined twice")
+            known.add(rule.id)
         self.rules += rules
         self.programs += programs
 
@@ -93,6 +102,11 @@ def load_rules(paths: list[Path], builtin: bool = True) -> RuleSet:
 
 
 def parse_rule_file(text: str, file: str) -> tuple[list[Rule], list[Program]]:
+    forbidden = _FORBIDDEN.search(text)
+    if forbidden:
+        line = text.count("\n", 0, forbidden.start()) + 1
+        raise RuleError(file, line, f"rule files may not contain {forbidden.group()} (archlog runs no code and "
+                        "reads no file a rule file names)", forbidden.start() - text.rfind("\n", 0, forbidden.start()))
     lines = text.splitlines()
     rules: list[Rule] = []
     programs: list[Program] = []
@@ -113,41 +127,69 @@ def parse_rule_file(text: str, file: str) -> tuple[list[Rule], list[Program]]:
 
 
 def _rule(header: list[str], file: str, line: int) -> Rule:
+    """One rule's metadata; every error is reported at the file line of the key it concerns."""
+    loader = yaml.SafeLoader("\n".join(header))
     try:
-        meta = yaml.safe_load("\n".join(header)) or {}
+        node = loader.get_single_node()
+        meta = loader.construct_document(node) if node is not None else {}
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         raise RuleError(file, line + (mark.line if mark else 0), f"metadata is not valid YAML: {exc}") from None
-    if not isinstance(meta, dict):
+    finally:
+        loader.dispose()
+    if not isinstance(meta, dict) or not isinstance(node, yaml.MappingNode):
         raise RuleError(file, line, "metadata must be `key: value` lines")
+    lines: dict[str, int] = {}
+    for key_node, _value in node.value:
+        key, at = key_node.value, line + key_node.start_mark.line
+        if not isinstance(key_node, yaml.ScalarNode) or key not in KEYS:
+            raise RuleError(file, at, f"unknown metadata key '{key}' (known keys: {', '.join(KEYS)})")
+        if key in lines:
+            raise RuleError(file, at, f"metadata key '{key}' is given twice (first on line {lines[key]})")
+        lines[key] = at
+
+    def fail(key: str, message: str) -> RuleError:
+        return RuleError(file, lines.get(key, line), message)
+
     missing = [k for k in REQUIRED if k not in meta]
     if missing:
         raise RuleError(file, line, f"metadata lacks {', '.join(missing)}")
+    for key in ("id", "name", "summary", "message", "description", "help", "precision"):
+        if key in meta and not isinstance(meta[key], (str, int, float)):
+            raise fail(key, f"`{key}` must be a single value")
+    for key in ("related", "tags"):
+        if not isinstance(meta.get(key) or [], list) or not all(isinstance(v, str) for v in meta.get(key) or []):
+            raise fail(key, f"`{key}` must be a list such as [a, b]")
     head = _HEAD.match(str(meta["finding"]))
     if not head:
-        raise RuleError(file, line, "`finding` must look like predicate(col1, col2, ...)")
+        raise fail("finding", "`finding` must look like predicate(col1, col2, ...)")
     columns = [c.strip() for c in head.group(2).split(",") if c.strip()]
     related = meta.get("related") or []
-    for col in [meta["location"], *related]:
-        if col not in columns:
-            raise RuleError(file, line, f"location column '{col}' is not a column of {head.group(1)}")
+    for key, cols in (("location", [meta["location"]]), ("related", related)):
+        for col in cols:
+            if col not in columns:
+                raise fail(key, f"location column '{col}' is not a column of {head.group(1)}")
     if meta["severity"] not in SEVERITIES:
-        raise RuleError(file, line, f"severity must be one of {', '.join(SEVERITIES)}")
+        raise fail("severity", f"severity must be one of {', '.join(SEVERITIES)}")
+    precision = str(meta.get("precision", "high"))
+    if precision not in PRECISIONS:
+        raise fail("precision", f"precision must be one of {', '.join(PRECISIONS)}")
+    if not isinstance(meta.get("lists") or {}, dict):
+        raise fail("lists", "`lists` must be a mapping such as {name: relation(column)}")
     lists = {}
     for name, spec in (meta.get("lists") or {}).items():
         match = _HEAD.match(str(spec))
         if not match or match.group(2).strip() not in columns:
-            raise RuleError(file, line, f"list '{name}' must look like relation(column), with a column of "
-                            f"{head.group(1)}")
+            raise fail("lists", f"list '{name}' must look like relation(column), with a column of {head.group(1)}")
         lists[str(name)] = (match.group(1), match.group(2).strip())
     try:
         str(meta["message"]).format(**{c: "" for c in [*columns, *lists]})
-    except (KeyError, IndexError, ValueError) as exc:
-        raise RuleError(file, line, f"message template uses an unknown column: {exc}") from None
+    except (KeyError, IndexError, ValueError, AttributeError) as exc:
+        raise fail("message", f"message template uses an unknown column: {exc}") from None
     return Rule(
         id=str(meta["id"]), name=str(meta["name"]), severity=meta["severity"], summary=str(meta["summary"]),
         message=str(meta["message"]), predicate=head.group(1), columns=columns, location=meta["location"],
         related=list(related), description=str(meta.get("description", "")).strip(),
-        help=str(meta.get("help", "")).strip(), tags=list(meta.get("tags", [])),
-        precision=str(meta.get("precision", "high")), file=file, line=line, lists=lists,
+        help=str(meta.get("help", "")).strip(), tags=list(meta.get("tags") or []),
+        precision=precision, file=file, line=line, lists=lists, lines=lines,
     )

@@ -11,11 +11,12 @@ import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
-from archlog import names
+from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch import LaunchInterpreter
 from archlog.extract.substitution import auto_value
 from archlog.extract.workspace import Workspace
+from archlog.sandbox import Sandbox
 from archlog.values import Unknown
 
 ORACLE = Path(__file__).with_name("roslaunch_oracle.py")
@@ -34,12 +35,18 @@ class View:
     diagnostics: list = None
 
 
-def roslaunch_view(files: list[Path], args: dict[str, str], package_path: list[Path]) -> View:
+def oracle_env(package_path: list[Path]) -> dict[str, str]:
+    """The environment roslaunch runs in; archlog is given the same one explicitly."""
     env = {**os.environ, "ROS_PACKAGE_PATH": os.pathsep.join(map(str, package_path)),
            "PATH": "/usr/bin:" + os.environ.get("PATH", ""), "ROS_HOME": "/tmp/archlog-oracle-home"}
     env.pop("PYTHONPATH", None)
+    return env
+
+
+def roslaunch_view(files: list[Path], args: dict[str, str], package_path: list[Path]) -> View:
     out = subprocess.run(["/usr/bin/python3", str(ORACLE)], input=json.dumps({"files": list(map(str, files)),
-                         "args": args}), capture_output=True, text=True, env=env, timeout=60, check=False)
+                         "args": args}), capture_output=True, text=True, env=oracle_env(package_path), timeout=60,
+                         check=False)
     if out.returncode != 0:
         raise RuntimeError(f"oracle failed: {out.stderr[-2000:]}")
     data = json.loads(out.stdout.strip().splitlines()[-1])
@@ -67,7 +74,8 @@ def roslaunch_view(files: list[Path], args: dict[str, str], package_path: list[P
 
 def archlog_view(files: list[Path], args: dict[str, str], package_path: list[Path]) -> View:
     sink = DiagnosticSink()
-    config = LaunchInterpreter(Workspace(package_path, sink), sink).load(files, args)
+    with sandbox.active(Sandbox(None, oracle_env(package_path))):
+        config = LaunchInterpreter(Workspace(package_path, sink), sink).load(files, args)
     nodes = {}
     for node in config.nodes:
         nodes[_anon(node.name)] = {"pkg": node.pkg, "type": node.type, "namespace": node.namespace,
