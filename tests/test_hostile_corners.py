@@ -182,6 +182,16 @@ def case_cpp(root: Path) -> list[tuple[str, str]]:
     return [("doubling.cpp", "cpp-macro"), ("big.cpp", "too-large"), ("fallback.cpp", "cpp-compile")]
 
 
+def case_cpp_ros2_fallback(root: Path) -> list[tuple[str, str]]:
+    pkg = _package(root, "demo", "cmake_minimum_required(VERSION 3.5)\nproject(demo)\n"
+                   "add_executable(fallback src/fallback.cpp)\n", ros2=True)
+    (pkg / "src").mkdir()
+    calls = 'node->create_publisher<std_msgs::msg::String>("t", rclcpp::QoS(10\n' * 7_000  # never closed
+    (pkg / "src" / "fallback.cpp").write_text("#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+                                              "void f(rclcpp::Node::SharedPtr node) { undeclared();\n" + calls)
+    return [("fallback.cpp", "cpp-compile")]
+
+
 def case_deep_yaml(root: Path) -> list[tuple[str, str]]:
     pkg = _package(root, "demo")
     _node(pkg, "talker.py", TALKER)
@@ -203,7 +213,7 @@ def case_deep_yaml(root: Path) -> list[tuple[str, str]]:
             ("typed_model.yaml", "model-schema"), ("typed.rviz", "rviz-config")]
 
 
-CASES = [case_cmake_tokens, case_python_repair, case_long_names, case_cpp, case_deep_yaml]
+CASES = [case_cmake_tokens, case_python_repair, case_long_names, case_cpp, case_cpp_ros2_fallback, case_deep_yaml]
 OPTIONS = {case_deep_yaml: ("--launch", "src/demo/launch/main.launch", "--model", "deep_model.yaml",
                             "--model", "laughs_model.yaml", "--model", "typed_model.yaml")}
 

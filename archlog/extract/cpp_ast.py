@@ -169,7 +169,7 @@ def unary_operator(expr: ci.Cursor) -> str:
     return words[0] if words and not words[0][0].isalnum() else words[-1] if words else ""
 
 
-CALL_WINDOW = 4096
+CALL_WINDOW = 1024
 """Characters after a call's start that the token fallback reads for its arguments."""
 
 
