@@ -100,7 +100,8 @@ CODES: dict[str, Code] = {
                            "its tree) allows; its ROS calls are not recovered.", "Flatten the expression at the "
                            "line given."),
         "cpp-macro": ("error", "A macro of a C++ file or its workspace headers expands to more than a million "
-                      "tokens; the file is not parsed.", "Remove the macro, or describe the node with --model."),
+                      "tokens (doubling macros, or nested calls of a macro that copies its argument); the file is "
+                      "not parsed.", "Remove the macro, or describe the node with --model."),
         "cpp-walk": ("error", "The walk over a C++ file's syntax tree ran out of memory or depth; its ROS calls "
                      "are not recovered.", "Split the file, or describe the node with --model."),
         "name-too-long": ("note", "A topic or service name has too many segments or characters to be compared for "

@@ -172,14 +172,17 @@ def case_cpp(root: Path) -> list[tuple[str, str]]:
     macros = "".join(f"#define A{i} A{i - 1} A{i - 1}\n" for i in range(1, 41))
     pkg = _package(root, "demo", "cmake_minimum_required(VERSION 3.5)\nproject(demo)\n"
                    "add_executable(doubling src/doubling.cpp)\nadd_executable(big src/big.cpp)\n"
-                   "add_executable(fallback src/fallback.cpp)\n")
+                   "add_executable(fallback src/fallback.cpp)\nadd_executable(copies src/copies.cpp)\n")
     (pkg / "src").mkdir()
     (pkg / "src" / "doubling.cpp").write_text(f"#include <ros/ros.h>\n#define A0 x\n{macros}int f() {{ return A40; }}\n")
     (pkg / "src" / "big.cpp").write_text("#include <ros/ros.h>\n" + "int f(int a) { return a; }\n" * 300_000)
     calls = "".join(f'nh.advertise<std_msgs::String>("t", &C::cb{i}\n' for i in range(11_000))  # no ';' anywhere
     (pkg / "src" / "fallback.cpp").write_text("#include <ros/ros.h>\nvoid f() { ros::NodeHandle nh; undeclared();\n"
                                               + calls)
-    return [("doubling.cpp", "cpp-macro"), ("big.cpp", "too-large"), ("fallback.cpp", "cpp-compile")]
+    (pkg / "src" / "copies.cpp").write_text("#include <ros/ros.h>\n#define F(x) x x\nint f() { return "
+                                            + "F(" * 40 + "1" + ")" * 40 + "; }\n")
+    return [("doubling.cpp", "cpp-macro"), ("big.cpp", "too-large"), ("fallback.cpp", "cpp-compile"),
+            ("copies.cpp", "cpp-macro")]
 
 
 def case_cpp_ros2_fallback(root: Path) -> list[tuple[str, str]]:

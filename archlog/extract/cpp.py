@@ -28,6 +28,7 @@ import clang.cindex as ci
 
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cache import ResultCache, cache_dir, key
+from archlog.extract.cpp_ast import line_finder
 from archlog.extract.cpp_behavior import FileBehavior, link_files
 from archlog.extract.cpp_walk import FileResult, walk
 from archlog.extract.ros2_stubs import API_DIR, DUAL, INTERFACE_INCLUDE, Interfaces, is_ros2, library_for, \
@@ -277,14 +278,15 @@ class _Scan:
 
 def _scan(source: Path, env: CppEnvironment) -> _Scan:
     folders = env.folders(source)
-    queue, seen, texts = [source], {source}, []
+    queue, seen, texts, read = [source], {source}, [], []
     missing: list[str] = []
     dual: list[str] = []
-    macros: dict[str, tuple[Path, int, list[str]]] = {}
+    macros: dict[str, _Macro] = {}
     while queue and len(seen) < 400:
         path = queue.pop(0)
         text = path.read_text(errors="replace")
         texts.append(text)
+        read.append((path, text))
         macros.update(_defines(path, text))
         for name in _INCLUDE.findall(text):
             found = env.find(name, [path.parent] + folders)
@@ -295,41 +297,67 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
                 seen.add(found)
                 queue.append(found)
     return _Scan(list(dict.fromkeys(missing)), list(dict.fromkeys(dual)), spelled_types(texts),
-                 any(is_ros2(t) for t in texts), _macro_bomb(macros))
+                 any(is_ros2(t) for t in texts), _macro_bomb(macros) or _nested_calls(read, macros))
 
 
-_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)(?:\([^)\n]*\))?(.*)$", re.M)
+_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)(\([^)\n]*\))?(.*)$", re.M)
 _WORD = re.compile(r"\w+")
+_CALL_OR_PAREN = re.compile(r"(\w+)\s*\(|[()]")
 
 
-def _defines(path: Path, text: str) -> dict[str, tuple[Path, int, list[str]]]:
-    """The macros a file defines: name -> (file, line, the words of its body)."""
-    found, line, counted = {}, 1, 0
+@dataclass(frozen=True)
+class _Macro:
+    file: Path
+    line: int
+    words: list[str]  # of its body
+    copies: int = 1  # function-like: the most times its body uses one parameter
+
+
+def _defines(path: Path, text: str) -> dict[str, _Macro]:
+    """The macros a file defines, by name."""
+    found, line_of = {}, line_finder(text)
     for m in _DEFINE.finditer(text):
-        line += text.count("\n", counted, m.start())
-        counted = m.start()
-        found[m.group(1)] = (path, line, _WORD.findall(m.group(2)))
+        words = _WORD.findall(m.group(3))
+        params = _WORD.findall(m.group(2) or "")
+        found[m.group(1)] = _Macro(path, line_of(m.start()), words, max((words.count(p) for p in params), default=1))
     return found
 
 
-def _macro_bomb(macros: dict[str, tuple[Path, int, list[str]]]) -> tuple[Path, int, str] | None:
+def _nested_calls(texts: list[tuple[Path, str]], macros: dict[str, _Macro]) -> tuple[Path, int, str] | None:
+    """(file, line, name) where calls of function-like macros that copy their argument nest so
+    deep that the copies pass MACRO_TOKENS (`#define F(x) x x` and F(F(F(...))))."""
+    for path, text in texts:
+        product, stack = 1, []
+        for m in _CALL_OR_PAREN.finditer(text):
+            if m.group(0) == ")":
+                product //= stack.pop() if stack else 1
+                continue
+            copies = macros[m.group(1)].copies if m.group(1) in macros else 1
+            stack.append(copies)
+            product *= copies
+            if product > MACRO_TOKENS:
+                return path, line_finder(text)(m.start()), m.group(1)
+    return None
+
+
+def _macro_bomb(macros: dict[str, _Macro]) -> tuple[Path, int, str] | None:
     """(file, line, name) of a macro whose expansion passes MACRO_TOKENS words, else None. Sizes
     are computed bottom-up without recursion; a macro met again while expanding counts one word."""
     size: dict[str, int] = {}
     for root in (name for name in macros if name not in size):
-        stack, open_ = [(root, iter(macros[root][2]))], {root}
+        stack, open_ = [(root, iter(macros[root].words))], {root}
         while stack:
             name, words = stack[-1]
             child = next((w for w in words if w in macros and w not in size and w not in open_), None)
             if child is not None:
-                stack.append((child, iter(macros[child][2])))
+                stack.append((child, iter(macros[child].words)))
                 open_.add(child)
                 continue
             stack.pop()
             open_.discard(name)
-            size[name] = sum(size.get(w, 1) if w in macros else 1 for w in macros[name][2])
+            size[name] = sum(size.get(w, 1) if w in macros else 1 for w in macros[name].words)
             if size[name] > MACRO_TOKENS:
-                return macros[name][0], macros[name][1], name
+                return macros[name].file, macros[name].line, name
     return None
 
 
