@@ -262,11 +262,17 @@ DOCUMENTS = (st.binary(max_size=300) | TREES.map(lambda t: yaml.safe_dump(t).enc
              | st.integers(50, 3_000).map(lambda n: ("[" * n + "]" * n).encode())
              | st.integers(50, 3_000).map(lambda n: ("a: " + "{b: " * n + "1" + "}" * n).encode())
              | st.integers(50, 3_000).map(lambda n: ("<launch>" + "<group>" * n + "</group>" * n + "</launch>").encode())
-             | st.just(LAUGHS.encode()))
+             | st.just(LAUGHS.encode())
+             | st.integers(1_000, 100_000).map(lambda n: ("x = " + "-" * n + "1\n").encode()))
 
 
 def _launch_node(config: Path) -> LaunchNode:
     return LaunchNode(Element("e1", "main.launch", 1), "rviz", "rviz", "/rviz", "/", args=f"-d {config}")
+
+
+def _with_manifest(folder: Path) -> bool:
+    (folder / "package.xml").write_text(PACKAGE_XML.format("demo"))
+    return True
 
 
 def _read_launch(folder: Path, name: str) -> None:
@@ -278,6 +284,7 @@ READERS: dict[str, Callable[[Path], object]] = {
     "package.xml": lambda folder: Workspace([folder], DiagnosticSink()),
     "CMakeLists.txt": lambda folder: commands((folder / "CMakeLists.txt").read_text(errors="replace"), None,
                                               lambda line, message: None),
+    "setup.py": lambda folder: _with_manifest(folder) and Workspace([folder], DiagnosticSink()),
     "main.launch": lambda folder: _read_launch(folder, "main.launch"),
     "main.launch.xml": lambda folder: _read_launch(folder, "main.launch.xml"),
     "main.launch.yaml": lambda folder: _read_launch(folder, "main.launch.yaml"),

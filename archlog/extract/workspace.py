@@ -344,8 +344,9 @@ def _console_scripts(folder: Path, diagnostics: DiagnosticSink, display) -> list
     if setup_py.is_file():
         try:
             tree = ast.parse(setup_py.read_text(errors="replace"))
-        except SyntaxError as exc:
-            diagnostics.add(display(setup_py), exc.lineno or 1, "setup-py", "setup.py does not parse", "warning")
+        except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:  # the last two: nested too deeply
+            line = (exc.lineno or 1) if isinstance(exc, SyntaxError) else 1
+            diagnostics.add(display(setup_py), line, "setup-py", "setup.py does not parse", "warning")
             return specs
         for node in ast.walk(tree):
             if isinstance(node, ast.Dict):
