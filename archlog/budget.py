@@ -46,6 +46,12 @@ class Budget:
         if self.used[kind] > self.limits[kind]:
             raise BudgetExceeded(kind, self.limits[kind])
 
+    def charge(self, kind: str, amount: int) -> None:
+        """Spend `amount` of `kind` on something about to be built; when it would not fit, it is
+        refused (BudgetExceeded) without spending, so the unit can go on without it."""
+        self.check(kind, self.used[kind] + amount)
+        self.spend(kind, amount)
+
     def check(self, kind: str, value: int) -> None:
         """A measure that is not cumulative (a depth, a size about to be built) against its limit."""
         if value > self.limits[kind]:
@@ -88,3 +94,34 @@ def current() -> Budget:
 
 def spend(kind: str, amount: int = 1) -> None:
     current().spend(kind, amount)
+
+
+
+def charge(kind: str, amount: int) -> None:
+    current().charge(kind, amount)
+
+
+class Crossed(Exception):
+    """A limit crossed at file:line. `final` when a count was spent past its limit (or an expansion
+    ran out of stack or memory): that ends the unit of input being read, whose reader reports it
+    once, keeping what it read before; otherwise (a nesting or a build refused before it happened)
+    only what crossed is skipped, reported by the nearest reader of elements."""
+
+    def __init__(self, file: str, line: int, exceeded: BudgetExceeded, final: bool) -> None:
+        super().__init__(f"{file}:{line}: {exceeded}")
+        self.file, self.line, self.exceeded, self.final = file, line, exceeded, final
+
+
+def crossed(file: str, line: int, error: BudgetExceeded | RecursionError | MemoryError) -> Crossed:
+    """The crossing at file:line for a BudgetExceeded or, as a last resort, for the RecursionError or
+    MemoryError of an expansion no limit stopped earlier."""
+    if isinstance(error, BudgetExceeded):
+        return Crossed(file, line, error, exhausted())
+    kind = "depth" if isinstance(error, RecursionError) else "characters"
+    return Crossed(file, line, BudgetExceeded(kind, current().limits[kind]), True)
+
+
+def exhausted() -> bool:
+    """Whether the current unit has spent a count past its limit (every further spend fails)."""
+    budget = current()
+    return any(budget.used[kind] > limit for kind, limit in budget.limits.items())

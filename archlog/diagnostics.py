@@ -46,6 +46,8 @@ CODES: dict[str, Code] = {
         "launch-python": ("error", "A Python launch file does not parse or lacks generate_launch_description().",
                           "Fix the file; it is read with ast, never run."),
         "launch-include": ("error", "An included launch file is not found.", "Check the include's file path."),
+        "launch-include-cycle": ("error", "A launch file includes itself, directly or through others (roslaunch "
+                                 "would recurse until it fails); the include is skipped.", "Break the cycle."),
         "launch-invalid": ("error", "An element is invalid as roslaunch or launch_ros would reject it.",
                            "Fix the element as the message says."),
         "launch-tag": ("warning", "An unrecognized tag is ignored.", "Check the tag's spelling."),

@@ -130,7 +130,8 @@ def from_facts(store: FactStore) -> Architecture:
         return frozenset((str(n), t, ty if isinstance(ty, str) else "") for _p, n, t, ty in store.rows(relation)
                          if not isinstance(t, Unknown))
 
-    services = frozenset((str(n), s) for _p, n, s, _ty in store.rows("service_server") if not isinstance(s, Unknown))
+    services = frozenset((str(n), str(s)) for _p, n, s, _ty in store.rows("service_server")
+                         if not isinstance(s, Unknown))
     return Architecture(frozenset(str(r[0]) for r in store.rows("node")), rows("publisher"), rows("subscriber"),
                         services)
 

@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+
+from archlog import budget
 
 
 @dataclass(frozen=True)
@@ -68,10 +71,14 @@ def alternatives(options: list["Value"], every: bool, at: Unknown) -> "Value":
 
 
 def concat(*parts: Value) -> Value:
-    """Join values; literal neighbours fold into one string; alternatives distribute."""
+    """Join values; literal neighbours fold into one string; alternatives distribute (unless they
+    would stand for more combinations than the budget's alternatives: then the value is unknown)."""
+    combinations = math.prod(len(p.options) for p in parts if isinstance(p, Alternatives))
+    if combinations > budget.current().limits["alternatives"]:
+        return Unknown(f"{combinations} alternatives, more than the budget allows", "", 0)
     for index, part in enumerate(parts):
         if isinstance(part, Alternatives):
-            every, options = part.every, []
+            every, options = part.every, list[Value]()
             for option in part.options:
                 joined = concat(*parts[:index], option, *parts[index + 1:])
                 if isinstance(joined, Alternatives):  # several alternative parts: all combinations

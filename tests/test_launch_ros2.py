@@ -686,7 +686,8 @@ def test_python_that_would_run_away_is_cut_short(tmp_path: Path) -> None:
             ])
         """)}, "main.launch.py")
     assert [n.name for n in config.nodes] == ["/still_here"]
-    assert codes(sink) == [("main.launch.py", 18, "launch-unknown"), ("deep.launch.py", 1, "launch-python")]
+    assert codes(sink) == [("main.launch.py", 22, "budget-exceeded"), ("main.launch.py", 18, "launch-unknown"),
+                           ("deep.launch.py", 1, "budget-exceeded")]
 
 
 def test_parameter_files_of_composable_nodes_are_applied_by_launch(tmp_path: Path) -> None:

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import yaml
 
+from archlog import budget
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.command_line import split_options
 from archlog.extract.launch import LaunchConfig, LaunchNode
@@ -63,6 +64,10 @@ def _recorded(node: LaunchNode, words: list[str]) -> list[Port]:
 def _rviz(node: LaunchNode, config: Path, diagnostics: DiagnosticSink) -> list[Port]:
     try:
         data = yaml.load(config.read_text(encoding="utf-8"), Loader=_LineLoader)
+    except budget.BudgetExceeded as exc:
+        diagnostics.add(node.elem.file, node.elem.line, "budget-exceeded",
+                        f"rviz configuration {config}: {exc}; its displays' topics are unknown", "error")
+        return []
     except (OSError, UnicodeDecodeError, yaml.YAMLError) as exc:
         diagnostics.add(node.elem.file, node.elem.line, "rviz-config",
                         f"rviz configuration {config} cannot be read ({exc}); its displays' topics are unknown",

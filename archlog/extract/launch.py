@@ -5,14 +5,22 @@ its parent, an `<include>` starts a fresh arg scope fed by its `<arg>` children 
 pass_all_args), remaps apply to nodes declared after them in the same scope and below, and
 `~param`s outside a node apply to every node declared after them in that scope. Where roslaunch
 would stop with an error, archlog reports a diagnostic at the element and goes on.
+
+Each launch file given is one unit of the expansion budget (archlog.budget): every element
+(after includes) and nesting level counts, and an include of a file that is being loaded (a
+cycle) is refused as roslaunch would fail. A limit crossed is a `budget-exceeded` diagnostic at
+the innermost element that crossed it: a count spent past its limit ends the unit there (what
+was read stays), a nesting or a string refused before it was built skips only that element.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import shlex
-from collections.abc import Callable
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -20,18 +28,17 @@ from typing import TYPE_CHECKING
 import yaml
 from lxml import etree
 
-from archlog import names, sandbox
+from archlog import budget, names, sandbox
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract import bounded_yaml
 from archlog.extract.substitution import (SubstContext, SubstitutionError, UnknownArg, Unresolved, arithmetic,
                                           auto_value, substitute)
 from archlog.extract.workspace import Workspace
-from archlog.extract.yaml_depth import DepthLimited, SafeLoader
 from archlog.values import Unknown
 
 if TYPE_CHECKING:
     from archlog.extract.launch2 import Ros2Launch
 
-MAX_INCLUDE_DEPTH = 32
 NODE_ATTRS = {"pkg", "type", "machine", "name", "args", "output", "respawn", "respawn_delay", "cwd", "ns",
               "clear_params", "launch-prefix", "required", "if", "unless"}
 TEST_ONLY_ATTRS = {"test-name", "time-limit", "retry"}
@@ -106,7 +113,6 @@ class _Scope:
     private: list[tuple[str, object, Element]]
     condition: str | None = None
     pass_all_args: bool = False
-    depth: int = 0
     chain: tuple[Element, ...] = ()  # the <include> elements that led here, outermost first
 
     def child(self, ns: str | None) -> "_Scope":
@@ -138,6 +144,7 @@ class LaunchInterpreter:
 
     def __init__(self, workspace: Workspace, diagnostics: DiagnosticSink) -> None:
         self.workspace = workspace
+        self.display = functools.cache(workspace.display)  # paths as reports show them (resolving is slow)
         self.diagnostics = diagnostics
         self.config = LaunchConfig()
         self._count = 0
@@ -146,12 +153,17 @@ class LaunchInterpreter:
         self._declared: list[tuple[str, Path, etree._Element, LaunchNode]] = []
         self._rosparam_yaml = False  # roslaunch imports rosparam (and its YAML angles) at the first load
         self._ros2: Ros2Launch | None = None
+        self._nesting = 0  # element lists being loaded (a file, its groups, the files it includes)
 
     def load(self, files: list[Path], args: dict[str, str]) -> LaunchConfig:
         for path in files:
             subst = SubstContext(_command_line(args), self.workspace.find, path)
             root = args["__ns"] if "__ns" in args else subst.env.get("ROS_NAMESPACE", "/")
-            self._file(path, _Scope(names.join("/", root), subst, [], [], []))
+            with budget.scope():
+                try:
+                    self._file(path, _Scope(names.join("/", root), subst, [], [], []))
+                except budget.Crossed as crossing:
+                    self.report_crossing(crossing)
         for machine, path, el in self._machine_uses:
             if machine not in self._machines:
                 self._diag(path, el, "launch-invalid", f"<{el.tag}>: unknown machine [{machine}]")
@@ -176,11 +188,18 @@ class LaunchInterpreter:
     def element_at(self, file: Path, line: int) -> Element:
         """A new element at file:line (ids are shared by both launch dialects)."""
         self._count += 1
-        return Element(f"e{self._count:05d}", self.workspace.display(file), line)
+        return Element(f"e{self._count:05d}", self.display(file), line)
+
+    def include_cycle(self, target: Path, file: Path, chain: tuple[Element, ...]) -> str | None:
+        """When `target` is being loaded already (by `file` or the includes of `chain` that led to
+        it), the files of the cycle an include of it would close, else None."""
+        opened = [e.file for e in chain] + [self.display(file)]
+        shown = self.display(target)
+        return " -> ".join([*opened[opened.index(shown):], shown]) if shown in opened else None
 
     def _diag(self, file: Path, el: etree._Element | None, code: str, message: str, severity: str = "error") -> None:
         line = el.sourceline if el is not None and el.sourceline else 1
-        self.diagnostics.add(self.workspace.display(file), line, code, message, severity)
+        self.diagnostics.add(self.display(file), line, code, message, severity)
 
     @staticmethod
     def _attr(scope: _Scope, el: etree._Element, key: str) -> str | None:
@@ -210,7 +229,7 @@ class LaunchInterpreter:
     # -- files and children ---------------------------------------------------------------
     def _file(self, path: Path, scope: _Scope) -> bool:
         """Load a file into the scope; False when it could not be read at all."""
-        shown = self.workspace.display(path)
+        shown = self.display(path)
         if path.suffix in (".py", ".yaml", ".yml"):
             return self._ros2_file(path, scope)
         try:
@@ -239,20 +258,51 @@ class LaunchInterpreter:
         return self._ros2.load(path, scope.subst.args, scope.subst.env, scope.chain)
 
     def _children(self, path: Path, parent: etree._Element, scope: _Scope) -> None:
-        for el in parent:
-            if not isinstance(el.tag, str):
-                continue
-            handler = getattr(self, f"_tag_{el.tag}", None)
-            if handler is None:
-                if el.tag != "master":
-                    self._diag(path, el, "launch-tag", f"unrecognized tag <{el.tag}> ignored", "warning")
-                continue
-            with sandbox.reads_not_given() as unseen:
-                self._child(path, el, scope, handler)
-            for name in unseen:
-                self._diag(path, el, "env-not-given", sandbox.not_given_message(name), "note")
+        budget.current().check("depth", self._nesting + 1)
+        self._nesting += 1
+        try:
+            for el in parent:
+                if isinstance(el.tag, str):
+                    self._child(path, el, scope)
+        finally:
+            self._nesting -= 1
 
-    def _child(self, path: Path, el: etree._Element, scope: _Scope, handler: Callable[..., None]) -> None:
+    def _child(self, path: Path, el: etree._Element, scope: _Scope) -> None:
+        """One element of a launch file or group, within the budget; each environment variable it
+        read that the run was not given is noted at it."""
+        with sandbox.reads_not_given() as unseen:
+            with self._crossing_at(path, el):
+                budget.spend("elements")
+                self._tag(path, el, scope)
+        for name in unseen:
+            self._diag(path, el, "env-not-given", sandbox.not_given_message(name), "note")
+
+    @contextmanager
+    def _crossing_at(self, path: Path, el: etree._Element) -> Iterator[None]:
+        """A limit crossed inside `el` (and not deeper) is crossed at `el`; a crossing that does not
+        end the unit is reported and `el` skipped."""
+        try:
+            yield
+            return
+        except (budget.BudgetExceeded, RecursionError, MemoryError) as exc:
+            crossing = budget.crossed(self.display(path), el.sourceline or 1, exc)
+        except budget.Crossed as exc:
+            crossing = exc
+        if crossing.final:
+            raise crossing
+        self.report_crossing(crossing)
+
+    def report_crossing(self, crossing: budget.Crossed) -> None:
+        """The `budget-exceeded` diagnostic of a crossing."""
+        after = "the rest of this launch configuration is not read" if crossing.final else "skipped"
+        self.diagnostics.add(crossing.file, crossing.line, "budget-exceeded", f"{crossing.exceeded}; {after}", "error")
+
+    def _tag(self, path: Path, el: etree._Element, scope: _Scope) -> None:
+        handler = getattr(self, f"_tag_{el.tag}", None)
+        if handler is None:
+            if el.tag != "master":
+                self._diag(path, el, "launch-tag", f"unrecognized tag <{el.tag}> ignored", "warning")
+            return
         try:
             enabled = self._enabled(scope, el)
             if enabled is False:
@@ -369,8 +419,6 @@ class LaunchInterpreter:
     def _tag_include(self, path: Path, el: etree._Element, scope: _Scope) -> None:
         target = Path(self._required(scope, el, "file"))
         pass_all = _bool_attr(self._attr(scope, el, "pass_all_args") or "false", "pass_all_args")
-        if scope.depth >= MAX_INCLUDE_DEPTH:
-            raise LaunchError("include nesting too deep (a cycle?)")
         ns = _child_ns(scope.ns, self._ns_attr(scope, el))
         self._clear_params(scope, el, is_node=False)
         passed: dict[str, str | UnknownArg] = dict(scope.subst.args) if pass_all else {}
@@ -388,10 +436,11 @@ class LaunchInterpreter:
             try:
                 if self._enabled(arg_scope, child) is not True:
                     continue
-                if tag == "env":
-                    self._tag_env(path, child, arg_scope)
-                else:
-                    arg_elements[self._tag_arg(path, child, arg_scope, passed)] = child
+                with self._crossing_at(path, child):
+                    if tag == "env":
+                        self._tag_env(path, child, arg_scope)
+                    else:
+                        arg_elements[self._tag_arg(path, child, arg_scope, passed)] = child
             except (SubstitutionError, LaunchError) as exc:
                 self._report(path, child, exc)
                 return
@@ -404,10 +453,15 @@ class LaunchInterpreter:
         if not target.is_file():
             self._diag(path, el, "launch-include", f"included file not found: {target}")
             return
+        cycle = self.include_cycle(target, path, scope.chain)
+        if cycle is not None:
+            self._diag(path, el, "launch-include-cycle", f"<include>: {target.name} is being loaded already "
+                       f"({cycle}); roslaunch would fail")
+            return
         # roslaunch hands the ~param list on to the included file, unless it is still empty
         private = scope.private if scope.private else []
         child_scope = _Scope(ns, scope.subst.child(args=passed, file=target), [], list(scope.remaps), private,
-                             scope.condition, pass_all, scope.depth + 1, (*scope.chain, self._element(path, el)))
+                             scope.condition, pass_all, (*scope.chain, self._element(path, el)))
         if self._file(target, child_scope) and not pass_all:
             for name in passed:
                 if name not in child_scope.declared:
@@ -529,7 +583,8 @@ class LaunchInterpreter:
         local: list[tuple[str, object, Element]] = []
         for child_el in el:
             if isinstance(child_el.tag, str):
-                self._node_child(path, child_el, scope, child, node_ns, local)
+                with self._crossing_at(path, child_el):
+                    self._node_child(path, child_el, scope, child, node_ns, local)
         # the scope's ~params first, then the node's own <param>s (its <rosparam>s are already set)
         for pname, value, pelem in scope.private + local:
             self._put_private(node_ns, pname, value, pelem)
@@ -677,7 +732,7 @@ def _command_line(args: dict[str, str]) -> dict[str, str]:
     return kept
 
 
-class _RosparamLoader(DepthLimited, yaml.SafeLoader):
+class _RosparamLoader(bounded_yaml.BoundedLoader):
     """PyYAML's safe loader plus the angle forms rosparam registers: rad(...), deg(...), !radians, !degrees."""
 
 
@@ -707,7 +762,7 @@ _RosparamLoader.add_implicit_resolver("!radians", re.compile(r"^rad\([^\)]*\)$")
 
 def _yaml(text: str, angles: bool) -> object:
     try:
-        return yaml.load(text, Loader=_RosparamLoader if angles else SafeLoader)
+        return bounded_yaml.load(text, _RosparamLoader if angles else bounded_yaml.BoundedLoader)
     except yaml.YAMLError as exc:
         raise LaunchError(f"invalid YAML: {exc}") from None
 

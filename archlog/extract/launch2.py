@@ -8,6 +8,11 @@ launch shares them); an include is not scoped (its arguments and what it sets st
 namespace is launch_ros's: a relative one is appended to the pushed one, an absolute one replaces
 it. Its remaps and parameters come in command-line order: those in its own arguments, then the
 scope's (set_remap, set_parameter), then its own. rcl applies the first remap that matches.
+
+Within the launch configuration's budget (archlog.budget), each action visited counts as an
+element and each nested list of actions (group, include, OpaqueFunction) as a level of depth;
+including a file that is being run already (a cycle, where launch would recurse until it
+fails) is refused.
 """
 
 from __future__ import annotations
@@ -20,8 +25,8 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TypeVar
 
-from archlog import names, sandbox
-from archlog.extract.launch import MAX_INCLUDE_DEPTH, Element, LaunchError, LaunchInterpreter, LaunchNode
+from archlog import budget, names, sandbox
+from archlog.extract.launch import Element, LaunchError, LaunchInterpreter, LaunchNode
 from archlog.extract.launch2_subst import (Context, Parts, Rewritten, describe, parse, perform, text, truth,
                                           typed_bool, unknown_reason, yaml_value)
 from archlog.extract.ros2_params import load_param_file
@@ -233,6 +238,7 @@ class Ros2Launch:
         self._param_files: dict[tuple[Path, str | None], list[tuple[str, str, object, Element]]] = {}
         self._templates: dict[Path, Parts] = {}  # parameter files read as substitutions
         self._launched: dict[int, str] = {}  # id of a container's Node action -> its full name
+        self._nesting = 0  # lists of actions being run (a file, its groups, the files it includes)
 
     # -- entry points -------------------------------------------------------------------
     def load(self, path: Path, args: dict[str, str | UnknownArg], env: dict[str, str | UnknownArg],
@@ -255,26 +261,44 @@ class Ros2Launch:
         return self._descriptions[key]
 
     def diag(self, where: Where, code: str, message: str, severity: str = "warning") -> None:
-        self.diagnostics.add(self.workspace.display(where.file), where.line, code, message, severity)
+        self.diagnostics.add(self.interp.display(where.file), where.line, code, message, severity)
 
     def element(self, file: Path, line: int) -> Element:
         return self.interp.element_at(file, line)
 
     # -- visiting -----------------------------------------------------------------------
     def run(self, actions: list[Action] | tuple[Action, ...], ctx: Context) -> None:
-        for action in actions:
-            self._guarded(action, ctx, self._execute)
+        budget.current().check("depth", self._nesting + 1)
+        self._nesting += 1
+        try:
+            for action in actions:
+                self._guarded(action, ctx, self._execute)
+        finally:
+            self._nesting -= 1
 
     def _guarded(self, action: A, ctx: Context, execute: Callable[[A, Context, bool], None]) -> None:
         """Execute an action whose conditions hold (kept as conditional when they cannot be known;
-        `execute` is told so); what it cannot do is a diagnostic at the action, and so is each
-        environment variable it read that the run was not given."""
+        `execute` is told so); what it cannot do is a diagnostic at the action, a limit of the
+        budget crossed inside it (and not deeper) is crossed there, and each environment variable it
+        read that the run was not given is noted there."""
+        crossing: budget.Crossed | None = None
         with sandbox.reads_not_given() as unseen:
-            self._execute_guarded(action, ctx, execute)
+            try:
+                budget.spend("elements")
+                self._within(action, ctx, execute)
+            except (budget.BudgetExceeded, RecursionError, MemoryError) as exc:
+                crossing = budget.crossed(self.interp.display(action.where.file), action.where.line, exc)
+            except budget.Crossed as exc:
+                crossing = exc
         for name in unseen:
             self.diag(action.where, "env-not-given", sandbox.not_given_message(name), "note")
+        if crossing is None:
+            return
+        if crossing.final:
+            raise crossing
+        self.interp.report_crossing(crossing)
 
-    def _execute_guarded(self, action: A, ctx: Context, execute: Callable[[A, Context, bool], None]) -> None:
+    def _within(self, action: A, ctx: Context, execute: Callable[[A, Context, bool], None]) -> None:
         try:
             state = self.condition(action.conditions, ctx)
         except (SubstitutionError, LaunchError) as exc:
@@ -407,8 +431,6 @@ class Ros2Launch:
         self.run(action.actions, inner)
 
     def _include(self, action: Include, ctx: Context) -> None:
-        if ctx.depth >= MAX_INCLUDE_DEPTH:
-            raise LaunchError("include nesting too deep (a cycle?)")
         target = Path(perform(action.target, ctx))
         target = target if target.is_absolute() else ctx.file.parent / target
         for key, value in action.args:
@@ -416,11 +438,16 @@ class Ros2Launch:
         if not target.is_file():
             self.diag(action.where, "launch-include", f"included file not found: {target}", "error")
             return
+        cycle = self.interp.include_cycle(target, ctx.file, ctx.chain)
+        if cycle is not None:
+            self.diag(action.where, "launch-include-cycle", f"include: {target.name} is being launched already "
+                      f"({cycle}); launch would recurse until it fails", "error")
+            return
         description = self.describe(target, action.dialect)
         if description is None:
             return
         elem = self.element(action.where.file, action.where.line)
-        self.run(description, replace(ctx, file=target, chain=(*ctx.chain, elem), depth=ctx.depth + 1))
+        self.run(description, replace(ctx, file=target, chain=(*ctx.chain, elem)))
 
     def _set_remap(self, action: SetRemap, ctx: Context) -> None:
         src, dst = perform(action.src, ctx), perform(action.dst, ctx)
@@ -435,11 +462,7 @@ class Ros2Launch:
             self.diag(action.where, "launch-unknown", f"{action.reason}: not interpreted; the nodes it may start "
                       "are not part of this configuration")
             return
-        try:
-            actions = action.run(ctx)
-        except RecursionError:
-            raise LaunchError("the OpaqueFunction is too deeply nested to read statically") from None
-        self.run(actions, ctx)
+        self.run(action.run(ctx), ctx)
 
     # -- nodes --------------------------------------------------------------------------
     def _node(self, action: Node, ctx: Context) -> None:
@@ -599,7 +622,7 @@ class Ros2Launch:
         content = self._substituted(path, where, ctx) if substitute else None
         key = (path.resolve(), content)
         if key not in self._param_files:
-            shown = self.workspace.display(path)
+            shown = self.interp.display(path)
             self._param_files[key] = [(pattern, name, value, self.element(path, line)) for pattern, name, value, line
                                       in load_param_file(path, shown, self.diagnostics, content)]
         entries = self._param_files[key]

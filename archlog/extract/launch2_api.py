@@ -15,6 +15,7 @@ from typing import Protocol
 
 import yaml
 
+from archlog.extract import bounded_yaml
 from archlog.extract.launch import LaunchError
 from archlog.extract.launch2 import (PYTHON, XML, YAML, Action, Component, Condition, DeclareArgument, Group,
                                      Include, LoadComponents, Node, Opaque, ParamDict, ParamFile, ParamItem,
@@ -746,8 +747,8 @@ FUNCTIONS: dict[str, Callable[[CallSite], object]] = {
     "builtins.getattr": _getattr,
     "pathlib.Path": lambda c: PathValue(str(Path(*[_plain_path(a) or "" for a in c.args])))
     if all(_plain_path(a) is not None for a in c.args) else Unread("a path not known statically", c.line),
-    "yaml.safe_load": _loader(yaml.safe_load), "yaml.load": _loader(yaml.safe_load),
-    "yaml.full_load": _loader(yaml.safe_load), "json.load": _loader(json.loads), "json.loads": _loader(json.loads),
+    "yaml.safe_load": _loader(bounded_yaml.load), "yaml.load": _loader(bounded_yaml.load),
+    "yaml.full_load": _loader(bounded_yaml.load), "json.load": _loader(json.loads), "json.loads": _loader(json.loads),
     "builtins.open": _open, "builtins.range": _range, "itertools.chain": _chain,
     "launch.utilities.perform_substitutions": lambda c: perform_in(c.arg(1, "subs"), c.arg(0, "context"), c.line),
 }

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 import yaml
 from lxml import etree
 
+from archlog.extract import bounded_yaml
 from archlog.extract.launch import LaunchError
 from archlog.extract.launch2 import (Action, Component, Condition, DeclareArgument, Group, Include, LoadComponents,
                                      Node, ParamDict, ParamFile, ParamItem, ParamSource, ParamText, Process,
@@ -25,7 +26,6 @@ from archlog.extract.launch2 import (Action, Component, Condition, DeclareArgume
                                      SetParametersFile, SetRemap, Where)
 from archlog.extract.launch2_subst import Parts, Text, parse, text, yaml_value
 from archlog.extract.substitution import SubstitutionError
-from archlog.extract.yaml_depth import DepthLimited
 
 if TYPE_CHECKING:
     from archlog.extract.launch2 import Ros2Launch
@@ -110,8 +110,8 @@ class _LineDict(dict):
     line = 1
 
 
-class _LineLoader(DepthLimited, yaml.SafeLoader):
-    """PyYAML's safe loader; mappings remember where they start."""
+class _LineLoader(bounded_yaml.BoundedLoader):
+    """PyYAML's safe loader within the budget; mappings remember where they start."""
 
 
 def _mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> _LineDict:
@@ -128,7 +128,10 @@ def describe_yaml(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
     """The actions of a ROS 2 YAML launch file; None (with a diagnostic) when it cannot be read."""
     shown = launcher.workspace.display(path)
     try:
-        data = yaml.load(path.read_text(encoding="utf-8"), Loader=_LineLoader)
+        loader = _LineLoader(path.read_text(encoding="utf-8"))
+        with bounded_yaml.crossing_in(loader, shown):
+            data = loader.get_single_data()
+        loader.dispose()
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         launcher.diagnostics.add(shown, mark.line + 1 if mark else 1, "launch-yaml", f"malformed launch YAML: {exc}",

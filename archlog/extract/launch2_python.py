@@ -6,7 +6,11 @@ do: calls of the launch API (launch2_api), of functions defined in the file, and
 methods of strings, lists, dicts and launch objects; comprehensions over known lists. A branch
 whose test is not known (it depends on a launch argument) is read on both sides, the actions
 made there conditional on it. An OpaqueFunction runs at launch time with the context launch
-would give it. What cannot be read is an `Unread` value, reported where it ends up.
+would give it. What cannot be read is an `Unread` value, reported where it ends up. Reading spends
+from the budget (archlog.budget): the source's nesting is checked before it is walked, each
+statement and expression evaluated is a step, and what the file builds (strings, lists) is
+charged before it is built. A value refused is Unread (reported at its line); steps spent past
+the limit end the reading at the statement that crossed it.
 """
 
 from __future__ import annotations
@@ -17,20 +21,20 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from archlog import sandbox
+from archlog import budget, sandbox
 from archlog.extract.launch import LaunchError
 from archlog.extract.launch2 import Action, Condition, Where
 from archlog.extract.launch2_api import (API_MODULES, CONSTRUCTORS, FUNCTIONS, CallSite, ConfigsView, ContextValue,
                                          Description, FileHandle, LineDict, LineTuple, PathValue, Ref, S, Unread,
                                          entities, environment, perform_in, read_text, to_parts)
 from archlog.extract.launch2_subst import text
-from archlog.extract.substitution import BUILTINS, STR_METHODS, Evaluator, SubstitutionError, UnknownArg
+from archlog.extract.substitution import (BUILTINS, STR_METHODS, Evaluator, SubstitutionError, TooDeep, UnknownArg,
+                                          call_size, parse, result_size)
 
 if TYPE_CHECKING:
     from archlog.extract.launch2 import Ros2Launch
 
 MAX_DEPTH = 16
-MAX_STEPS = 200_000
 MAX_ITEMS = 10_000
 _LIST_METHODS = {"append", "extend", "insert", "pop", "index", "count", "copy", "remove", "reverse"}
 _DICT_METHODS = {"get", "items", "keys", "values", "update", "copy", "setdefault", "pop"}
@@ -50,25 +54,26 @@ def describe(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
         launcher.diagnostics.add(shown, 1, "launch-missing", f"cannot read launch file: {exc}", "error")
         return None
     try:
-        tree = ast.parse(source, str(path))
-    except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
+        tree = parse(source, str(path))
+    except (SyntaxError, ValueError) as exc:
         line = exc.lineno if isinstance(exc, SyntaxError) and exc.lineno else 1
         launcher.diagnostics.add(shown, line, "launch-python", f"Python launch file does not parse: {exc}", "error")
         return None
+    except TooDeep as exc:
+        raise budget.crossed(shown, exc.line, exc) from None
     interp = _Interpreter(path, launcher)
     try:
         with suppress(_Return, _Break, _Stop):  # module code that returns or raises ends there
-            interp.block(tree.body)
+            interp.block(tree.body)  # type: ignore[attr-defined]
         function = interp.globals.get("generate_launch_description")
         if not isinstance(function, _Function):
             launcher.diagnostics.add(shown, 1, "launch-python", "no generate_launch_description() in this Python "
                                      "launch file: nothing is launched from it", "warning")
             return None
         result = interp.call(function, [], {}, function.node.lineno)
-    except RecursionError:
-        launcher.diagnostics.add(shown, 1, "launch-python", "too deeply nested to read statically", "error")
-        return None
-    return entities(result, Where(path, function.node.lineno))
+        return entities(result, Where(path, function.node.lineno))
+    except (budget.BudgetExceeded, RecursionError, MemoryError) as exc:
+        raise budget.crossed(shown, interp.line, exc) from None
 
 
 @dataclass(frozen=True)
@@ -126,8 +131,8 @@ class _Interpreter(Evaluator):
         self.scope = self.module
         self.depth = 0
         self.sites: list[int] = []  # the lines of the function calls in progress
-        self.steps = 0
         self.line = 1
+        self.refused: set[int] = set()  # lines where a value was refused within the budget
 
     def find(self, pkg: str) -> Path | None:
         return self.launcher.workspace.find(pkg)
@@ -143,9 +148,7 @@ class _Interpreter(Evaluator):
     # -- statements -----------------------------------------------------------------------
     def block(self, body: list[ast.stmt]) -> None:
         for stmt in body:
-            self.steps += 1
-            if self.steps > MAX_STEPS:
-                raise _Return(Unread("the file runs too long to read statically", stmt.lineno))
+            budget.spend("steps")
             self.line = stmt.lineno
             self.statement(stmt)
 
@@ -286,6 +289,7 @@ class _Interpreter(Evaluator):
             args = [a.path if isinstance(a, PathValue) else a for a in args]  # str(path) is its text
             if any(isinstance(v, Unread) for v in [*args, *kwargs.values()]):
                 return next(v for v in [*args, *kwargs.values()] if isinstance(v, Unread))
+            budget.charge("characters", call_size(function, args, kwargs))
             if any(not _plain(v) for v in [*args, *kwargs.values()]):
                 return Unread(f"{getattr(function, '__name__', 'a builtin')}() of a launch object", line)
             try:
@@ -335,11 +339,20 @@ class _Interpreter(Evaluator):
 
     # -- expressions ----------------------------------------------------------------------
     def value(self, node: ast.expr) -> object:
-        """An expression's value, or Unread where the evaluator cannot follow it."""
+        """An expression's value, or Unread where the evaluator cannot follow it (or refuses to build
+        it within the budget: reported once per line)."""
+        line = getattr(node, "lineno", self.line)
         try:
             return self.visit(node)
         except SubstitutionError as exc:
-            return Unread(str(exc), getattr(node, "lineno", self.line))
+            return Unread(str(exc), line)
+        except budget.BudgetExceeded as exc:
+            if budget.exhausted():
+                raise
+            if line not in self.refused:
+                self.refused.add(line)
+                self.launcher.diag(Where(self.path, line), "budget-exceeded", f"{exc}; the value is not read", "error")
+            return Unread(str(exc), line)
 
     def _lookup(self, name: str) -> object:
         scope = self.scope.find(name)
@@ -384,7 +397,9 @@ class _Interpreter(Evaluator):
         for element in node.elts:
             if isinstance(element, ast.Starred):
                 spread = self.value(element.value)
-                items.extend(spread if isinstance(spread, (list, tuple)) else [spread])
+                spread = spread if isinstance(spread, (list, tuple)) else [spread]
+                budget.charge("characters", len(spread))
+                items.extend(spread)
             else:
                 items.append(self.value(element))
         return items
@@ -394,6 +409,7 @@ class _Interpreter(Evaluator):
         bad = next((p for p in pieces if not isinstance(p, str)), None)
         if bad is not None:
             return bad if isinstance(bad, Unread) else Unread("a launch object formatted into a string", node.lineno)
+        budget.charge("characters", sum(len(p) for p in pieces))  # type: ignore[arg-type]
         return "".join(pieces)  # type: ignore[arg-type]
 
     def visit_FormattedValue(self, node: ast.FormattedValue) -> object:
@@ -412,10 +428,13 @@ class _Interpreter(Evaluator):
                 return side
         if isinstance(node.op, ast.Add) and (isinstance(left, S) or isinstance(right, S)) and \
                 all(isinstance(v, (str, S)) for v in (left, right)):
-            return S(to_parts(left, node.lineno) + to_parts(right, node.lineno))
+            parts = to_parts(left, node.lineno), to_parts(right, node.lineno)
+            budget.charge("characters", len(parts[0]) + len(parts[1]))
+            return S(parts[0] + parts[1])
         if isinstance(node.op, ast.Div) and isinstance(left, PathValue) and isinstance(right, (str, PathValue)):
             return PathValue(str(Path(left.path) / (right if isinstance(right, str) else right.path)))
         if isinstance(node.op, ast.Add) and isinstance(left, (list, tuple)) and isinstance(right, (list, tuple)):
+            budget.charge("characters", result_size(node.op, left, right))
             return [*left, *right] if isinstance(left, list) else (*left, *right)
         if not (_plain(left) and _plain(right)):
             return Unread(f"{ast.unparse(node)} over launch objects", node.lineno)
@@ -594,6 +613,7 @@ class _Interpreter(Evaluator):
                    else {"index", "count"} if isinstance(target, tuple) else set())
         if name not in allowed:
             return Unread(f"{_why(target)}.{name}()", line)
+        budget.charge("characters", sum(len(a) for a in args if isinstance(a, (list, tuple, dict))))
         try:
             result = getattr(target, name)(*args, **kwargs)
         except (TypeError, ValueError, KeyError, IndexError, AttributeError) as exc:
@@ -633,7 +653,9 @@ def _constant(value: object) -> ast.Constant:
 
 
 def _plain(value: object) -> bool:
-    """A plain Python value (what the restricted evaluator computes with)."""
+    """A plain Python value (what the restricted evaluator computes with); looking at each element
+    is an evaluation step."""
+    budget.spend("steps")
     if isinstance(value, (list, tuple)):
         return all(_plain(v) for v in value)
     if isinstance(value, dict):

@@ -18,7 +18,8 @@ from pathlib import Path
 
 import yaml
 
-from archlog import sandbox
+from archlog import budget, sandbox
+from archlog.extract import bounded_yaml
 from archlog.extract.launch import Element
 from archlog.extract.substitution import BUILTINS, MATH, SubstitutionError, UnknownArg, Unresolved, restricted_eval
 
@@ -81,7 +82,6 @@ class Context:
     serial: Iterator[int]
     condition: str | None = None
     chain: tuple[Element, ...] = ()  # the include Elements that led here, outermost first
-    depth: int = 0
 
     def scoped(self) -> "Context":
         """A pushed copy (launch's PushLaunchConfigurations + PushEnvironment): the dictionaries
@@ -194,8 +194,11 @@ def _flush(buffer: list[str], parts: list[Subst]) -> None:
 
 # -- evaluation ---------------------------------------------------------------------------
 def perform(parts: Parts, ctx: Context) -> str:
-    """The string `parts` evaluate to in `ctx`."""
-    return "".join(_perform_one(part, ctx) for part in parts)
+    """The string `parts` evaluate to in `ctx` (what substitutions bring in is charged to the budget
+    before it is joined)."""
+    pieces = [_perform_one(part, ctx) for part in parts]
+    budget.charge("characters", sum(len(piece) for part, piece in zip(parts, pieces) if not isinstance(part, Text)))
+    return "".join(pieces)
 
 
 def describe(parts: Parts) -> str:
@@ -235,7 +238,7 @@ def yaml_value(value: str) -> object:
     if not value:
         return ""
     try:
-        return yaml.safe_load(value)
+        return bounded_yaml.load(value)
     except yaml.YAMLError:
         return value
 

@@ -22,10 +22,11 @@ from pathlib import Path
 import jsonschema
 import yaml
 
+from archlog import budget
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract import bounded_yaml
 from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.summary import NodeSummary, Port
-from archlog.extract.yaml_depth import DepthLimited
 from archlog.values import ParamList, ParamRef, Value
 
 SECTIONS = {
@@ -38,8 +39,8 @@ BUILTIN_DIR = Path(__file__).resolve().parent.parent / "models"
 UNSET = "<not set>"  # the value of a `set: true` condition's parameter when the configuration lacks it
 
 
-class _LineLoader(DepthLimited, yaml.SafeLoader):
-    """A YAML loader that records each mapping's line as key '__line__'."""
+class _LineLoader(bounded_yaml.BoundedLoader):
+    """A YAML loader (within the budget) that records each mapping's line as key '__line__'."""
 
     def construct_mapping(self, node: yaml.MappingNode, deep: bool = False) -> dict:
         mapping = super().construct_mapping(node, deep=deep)
@@ -54,6 +55,9 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink) -> list[tup
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         diagnostics.add(shown, mark.line + 1 if mark else 1, "model-yaml", f"model file does not parse: {exc}", "error")
+        return []
+    except budget.BudgetExceeded as exc:
+        diagnostics.add(shown, 1, "budget-exceeded", f"{exc}; the model file is not read", "error")
         return []
     except OSError as exc:
         diagnostics.add(shown, 1, "model-read", f"cannot read model file: {exc.strerror}", "error")

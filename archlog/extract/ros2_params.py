@@ -3,7 +3,8 @@
 The layout is rcl_yaml_param_parser's: the mapping keys above `ros__parameters` form the node
 key (joined with `/`, so `ns: {talker: {ros__parameters: ...}}` is `ns/talker`), the keys below it
 form dotted parameter names. A node key may hold wildcards; `matches` decides whether it applies
-to a node as rclcpp does (`parameter_map_from`).
+to a node as rclcpp does (`parameter_map_from`). A file is read within the budget (aliases count
+at the size they expand to), a crossing being at its line in the file.
 """
 
 from __future__ import annotations
@@ -13,8 +14,9 @@ from pathlib import Path
 
 import yaml
 
+from archlog import budget
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.yaml_depth import SafeLoader
+from archlog.extract.bounded_yaml import BoundedLoader, crossing_in
 
 PARAMS_KEY = "ros__parameters"
 Entry = tuple[str, str, object, int]
@@ -30,15 +32,21 @@ def load_param_file(path: Path, shown: str, diagnostics: DiagnosticSink, text: s
         except (OSError, UnicodeDecodeError) as exc:
             diagnostics.add(shown, 1, "param-file", f"cannot read parameter file: {exc}", "error")
             return []
-    loader = SafeLoader(text)
-    try:
-        root = loader.get_single_node()
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        diagnostics.add(shown, mark.line + 1 if mark else 1, "param-file", f"invalid YAML: {exc}", "error")
-        return []
-    finally:
-        loader.dispose()
+    with budget.scope():
+        try:
+            loader = BoundedLoader(text)
+        except yaml.YAMLError as exc:  # a character YAML does not allow (NUL, ...)
+            diagnostics.add(shown, 1, "param-file", f"invalid YAML: {exc}", "error")
+            return []
+        with crossing_in(loader, shown):
+            try:
+                root = loader.get_single_node()
+            except yaml.YAMLError as exc:
+                mark = getattr(exc, "problem_mark", None)
+                diagnostics.add(shown, mark.line + 1 if mark else 1, "param-file", f"invalid YAML: {exc}", "error")
+                return []
+            finally:
+                loader.dispose()
     if root is None:
         return []
     entries: list[Entry] = []

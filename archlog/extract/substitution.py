@@ -4,7 +4,9 @@ The grammar follows roslaunch 1.15: `$(cmd words)` cannot nest (a `$` inside is 
 unterminated `$(` stays literal, `find` is resolved after the others, and `$(eval expr)` applies
 only when it is the whole value. `$(eval)` is interpreted over Python's AST with roslaunch's
 names (args, true/false, arg/find/env/optenv/anon/dirname, math, a few pure builtins); nothing
-from the project is ever executed.
+from the project is ever executed. Expansion spends from the budget (archlog.budget): characters
+for what substitutions and operations are about to build (checked before building), a step per
+evaluated node, and the nesting depth of an expression.
 """
 
 from __future__ import annotations
@@ -15,28 +17,16 @@ import math
 import operator
 import os
 import re
-import string
 import sys
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from archlog import budget, sandbox
-from archlog.budget import BudgetExceeded
 
 
 class SubstitutionError(Exception):
     """A substitution roslaunch rejects."""
-
-
-class TooLarge(BudgetExceeded, SubstitutionError):
-    """An expression that would build a value (or take steps) past the budget, stopped before it
-    does. It is also a `SubstitutionError`, so a reader that knows only those still reports it."""
-
-    def __init__(self, kind: str, limit: int, what: str = "") -> None:
-        super().__init__(kind, limit)
-        if what:  # a limit that is not a [budget] setting
-            self.args = (what,)
 
 
 class Unresolved(SubstitutionError):
@@ -105,6 +95,8 @@ class SubstContext:
 
 def substitute(text: str, ctx: SubstContext) -> str:
     """Resolve every substitution in `text` as roslaunch does."""
+    if "$(" not in text:
+        return text
     if text.startswith("$(eval ") and text.endswith(")"):
         return _eval(text[7:-1], ctx)
     text = _pass(text, ctx, ("env", "optenv", "dirname", "anon", "arg"))
@@ -125,7 +117,9 @@ def _pass(text: str, ctx: SubstContext, commands: tuple[str, ...]) -> str:
             if words[0] == "find":
                 resolved = _find(resolved, placeholder, words[1:], ctx)
             else:
-                resolved = resolved.replace(placeholder, _one(words[0], words[1:], ctx))
+                value = _one(words[0], words[1:], ctx)
+                budget.charge("characters", resolved.count(placeholder) * len(value))
+                resolved = resolved.replace(placeholder, value)
     return resolved
 
 
@@ -235,7 +229,11 @@ BUILTINS = {f.__name__: f for f in (int, float, str, bool, list, dict, tuple, le
                                     divmod, repr, isinstance)} | {"sum": _sum}
 PURE_BUILTINS = {**BUILTINS, "range": _range, "set": set, "frozenset": frozenset}
 """The builtins above, with range() and sets (for languages whose expressions offer them)."""
-_HUGE_WIDTH = re.compile(r"\d{5,}")
+_NUMBER = re.compile(r"\d+")
+_NESTED_FIELD = re.compile(r"\{[^{}]*\{")
+_FIELD_ATTRIBUTE = re.compile(r"\{[^{}:!]*\.")  # {0.attr}: str.format reading an attribute
+_SEQUENCES = (str, bytes, list, tuple)
+_HUGE = 2 ** 62  # more characters than any budget allows
 
 
 def auto_value(text: str) -> object:
@@ -265,30 +263,21 @@ def restricted_eval(expr: str, lookup: Callable[[str], object],
     if "__" in expr:
         raise SubstitutionError("$(eval ...) may not contain double underscore expressions")
     try:
-        tree = ast.parse(expr.strip(), mode="eval")
+        tree = parse(expr.strip(), "<eval>", "eval")
     except (SyntaxError, ValueError) as exc:  # ValueError: a NUL byte
         raise SubstitutionError(f"$(eval) syntax error: {getattr(exc, 'msg', exc)}") from None
-    except (RecursionError, MemoryError):
-        raise TooLarge("depth", budget.current().limits["depth"]) from None
     return Evaluator(lookup, attribute).visit(tree.body)
 
 
-def spend(kind: str, amount: int = 1) -> None:
-    """`budget.spend`, stopping the expression with `TooLarge`."""
-    try:
-        budget.spend(kind, amount)
-    except BudgetExceeded as exc:
-        raise TooLarge(exc.kind, exc.limit) from None
+spend = budget.spend
 
 
 def bounded(value: object) -> object:
-    """`value` if its text stays within the characters budget (and an integer within
-    `INT_DIGITS`); raises `TooLarge` otherwise."""
+    """`value` if its text stays within the characters budget (raises `BudgetExceeded`) and an
+    integer within `INT_DIGITS` (raises `SubstitutionError`, as Python could not print it)."""
     if isinstance(value, int) and _digits(value) > INT_DIGITS:
-        raise TooLarge("characters", INT_DIGITS, f"integer of more than {INT_DIGITS} digits")
-    limit = budget.current().limits["characters"]
-    if size(value) > limit:
-        raise TooLarge("characters", limit)
+        raise SubstitutionError(f"$(eval) integer of more than {INT_DIGITS} digits")
+    budget.current().check("characters", size(value))
     return value
 
 
@@ -304,15 +293,129 @@ def size(value: object, memo: dict[int, int] | None = None, depth: int = 0) -> i
     memo = {} if memo is None else memo
     if id(value) not in memo:
         if depth > budget.current().limits["depth"]:
-            raise TooLarge("depth", budget.current().limits["depth"])
+            budget.current().check("depth", depth)
         spend("steps", len(value))
         items = [*value.keys(), *value.values()] if isinstance(value, dict) else value
         memo[id(value)] = 2 + sum(size(item, memo, depth + 1) + 2 for item in items)
     return memo[id(value)]
 
 
+class TooDeep(budget.BudgetExceeded):
+    """Source nested past the depth limit (at `line`)."""
+
+    def __init__(self, limit: int, line: int) -> None:
+        super().__init__("depth", limit)
+        self.line = line
+
+
+def parse(source: str, filename: str, mode: str = "exec") -> ast.AST:
+    """`ast.parse` within the depth budget: a source too deeply nested for the parser, or whose
+    tree is deeper than the limit, raises TooDeep (SyntaxError passes through)."""
+    limit = budget.current().limits["depth"]
+    try:
+        tree = ast.parse(source, filename, mode)
+    except (RecursionError, MemoryError):
+        raise TooDeep(limit, 1) from None
+    depth, line = tree_depth(tree)
+    if depth > limit:
+        raise TooDeep(limit, line)
+    return tree
+
+
+def tree_depth(tree: ast.AST) -> tuple[int, int]:
+    """How deeply a syntax tree nests, and the line where it is deepest (measured without recursion)."""
+    deepest, stack = (0, 1), [(tree, 1, 1)]
+    while stack:
+        node, depth, line = stack.pop()
+        line = getattr(node, "lineno", line)
+        deepest = max(deepest, (depth, line), key=lambda d: d[0])
+        stack.extend((child, depth + 1, line) for child in ast.iter_child_nodes(node))
+    return deepest
+
+
+def result_size(op: ast.operator, left: object, right: object) -> int:
+    """How many characters (digits, items) `left op right` is about to build: what it costs."""
+    if isinstance(op, ast.Mult):
+        for seq, count in ((left, right), (right, left)):
+            if isinstance(seq, _SEQUENCES) and isinstance(count, int):
+                return len(seq) * max(count, 0)
+        if isinstance(left, int) and isinstance(right, int):
+            return _digits(left) + _digits(right)
+    if isinstance(op, ast.Add) and isinstance(left, _SEQUENCES) and isinstance(right, _SEQUENCES):
+        return len(left) + len(right)
+    if isinstance(op, ast.Pow) and isinstance(left, int) and isinstance(right, int) and right > 0 and abs(left) > 1:
+        return _times(right, math.log10(abs(left)))
+    if isinstance(op, ast.Mod) and isinstance(left, str):
+        return format_size(left, right if isinstance(right, tuple) else (right,), "*" in left)
+    return 0
+
+
+def call_size(function: object, args: list[object], kwargs: dict[str, object]) -> int:
+    """How many characters (digits) a call of a pure function or str method is about to build."""
+    owner, name = getattr(function, "__self__", None), getattr(function, "__name__", "")
+    if isinstance(owner, str) and name == "format":
+        return format_size(owner, [*args, *kwargs.values()], bool(_NESTED_FIELD.search(owner)))
+    if isinstance(owner, str) and name == "join" and args and isinstance(args[0], (list, tuple)):
+        return sum(len(a) for a in args[0] if isinstance(a, str)) + len(owner) * len(args[0])
+    if isinstance(owner, str) and name == "replace" and len(args) >= 2 and all(isinstance(a, str) for a in args[:2]):
+        old, new = args[0], args[1]
+        return len(owner) + (owner.count(old) if old else len(owner) + 1) * len(new)  # type: ignore[arg-type]
+    if function in (str, repr):
+        return sum(text_size(a) for a in args)
+    numbers = [a for a in args if isinstance(a, int)]
+    if function is math.factorial and numbers and numbers[0] > 1:
+        return _times(numbers[0], math.log10(numbers[0]))  # n! < n**n
+    if function is round and len(numbers) == 2 and numbers[1] < 0:  # computes 10 ** -ndigits
+        return -numbers[1]
+    if function in (math.comb, math.perm) and len(numbers) == 2 and numbers[0] > 1:
+        return _times(min(numbers[0], abs(numbers[1])), math.log10(numbers[0]))
+    if function in (math.prod, math.lcm, sum):
+        items = args[0] if function is not math.lcm and args and isinstance(args[0], (list, tuple)) else args
+        return sum(_digits(i) if isinstance(i, int) else len(i) if isinstance(i, _SEQUENCES) else 0
+                   for i in [*items, *args[1:]])
+    return 0
+
+
+def format_size(template: str, args: tuple[object, ...] | list[object], widths_in_args: bool) -> int:
+    """An upper bound of what formatting `args` into `template` builds: the template, the arguments,
+    every number written in the template (a width or precision) and, when the template takes
+    widths from the arguments (`*`, a nested field), every integer argument."""
+    size = len(template) + sum(int(n) if len(n) < 19 else 10 ** 19 for n in _NUMBER.findall(template))
+    for arg in args:
+        if isinstance(arg, int) and not isinstance(arg, bool) and widths_in_args:
+            size += min(abs(arg), 10 ** 19)
+        else:
+            size += text_size(arg)
+    return size
+
+
+def text_size(value: object) -> int:
+    """About how many characters str() of a value writes: a part shared by several containers (a
+    list repeated into itself) is written out each time it appears, so it counts each time."""
+    sizes: dict[int, int] = {}
+
+    def size(item: object) -> int:
+        if isinstance(item, (str, bytes)):
+            return len(item) + 3
+        if isinstance(item, int):
+            return _digits(item)
+        if not isinstance(item, (list, tuple, dict, set, frozenset)):
+            return 24
+        if id(item) not in sizes:
+            parts = [p for pair in item.items() for p in pair] if isinstance(item, dict) else list(item)
+            sizes[id(item)] = 2 + sum(size(p) + 2 for p in parts)
+        return sizes[id(item)]
+
+    return size(value)
+
+
+def _times(count: int, digits: float) -> int:
+    """`count` times `digits`, rounded up (a count too large for a float stands for "too many")."""
+    return math.ceil(count * digits) if count < _HUGE else _HUGE
+
+
 def _digits(number: int) -> int:
-    return number.bit_length() * 30103 // 100000 + 1
+    return abs(number).bit_length() * 3 // 10 + 1
 
 
 def _eval(expr: str, ctx: SubstContext) -> str:
@@ -331,7 +434,11 @@ def _eval(expr: str, ctx: SubstContext) -> str:
             return auto_value(ctx.arg(name))
         return BUILTINS[name]
 
-    return str(restricted_eval(expr, lookup))
+    result = restricted_eval(expr, lookup)
+    try:
+        return str(result)
+    except ValueError as exc:  # an integer with more digits than Python converts
+        raise SubstitutionError(f"$(eval) {exc}") from None
 
 
 def arithmetic(expr: str) -> object:
@@ -355,7 +462,7 @@ class Evaluator(ast.NodeVisitor):
         self.attribute = attribute
 
     def visit(self, node: ast.AST) -> object:
-        spend("steps")
+        budget.spend("steps")
         return super().visit(node)
 
     def generic_visit(self, node: ast.AST) -> object:
@@ -381,16 +488,17 @@ class Evaluator(ast.NodeVisitor):
         return slice(*(None if part is None else self.visit(part) for part in (node.lower, node.upper, node.step)))
 
     def visit_JoinedStr(self, node: ast.JoinedStr) -> object:
-        return bounded("".join(str(self.visit(value)) for value in node.values))
+        pieces = [str(self.visit(value)) for value in node.values]
+        budget.charge("characters", sum(len(p) for p in pieces))
+        return "".join(pieces)
 
     def visit_FormattedValue(self, node: ast.FormattedValue) -> object:
         value = self.visit(node.value)
-        value = {ord("s"): str, ord("r"): repr, ord("a"): ascii}.get(node.conversion, lambda v: v)(value)
         spec = str(self.visit(node.format_spec)) if node.format_spec is not None else ""
-        if _HUGE_WIDTH.search(spec):
-            raise SubstitutionError("$(eval) format width too large")
+        budget.charge("characters", format_size(spec, (value,), False))  # before it is written out
+        convert = {ord("s"): str, ord("r"): repr, ord("a"): ascii}.get(node.conversion, lambda v: v)
         try:
-            return format(value, spec)
+            return format(convert(value), spec)
         except (TypeError, ValueError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
 
@@ -428,7 +536,7 @@ class Evaluator(ast.NodeVisitor):
         if type(node.op) not in _BINOPS:
             return self.generic_visit(node)
         left, right = self.visit(node.left), self.visit(node.right)
-        _estimate(node.op, left, right)
+        budget.charge("characters", result_size(node.op, left, right))
         try:
             return bounded(_BINOPS[type(node.op)](left, right))
         except (TypeError, ZeroDivisionError, ValueError, OverflowError) as exc:
@@ -455,12 +563,14 @@ class Evaluator(ast.NodeVisitor):
         function = self.callee(node.func)
         args = [self.visit(a) for a in node.args]
         kwargs = {k.arg: self.visit(k.value) for k in node.keywords}
-        target = getattr(function, "__self__", None)
-        if isinstance(target, str):  # a str method: the size of its result is known first
-            args = _str_call_size(target, function.__name__, args, kwargs)
+        owner = getattr(function, "__self__", None)
+        if isinstance(owner, str) and getattr(function, "__name__", "") == "format" and \
+                ("__" in owner or _FIELD_ATTRIBUTE.search(owner)):
+            raise SubstitutionError("$(eval) format string not allowed (it reads attributes)")
+        budget.charge("characters", call_size(function, args, kwargs))
         try:
             return bounded(function(*args, **kwargs))  # type: ignore[operator]
-        except (TypeError, ValueError, OverflowError, KeyError, IndexError, AttributeError) as exc:
+        except (TypeError, ValueError, OverflowError, LookupError, AttributeError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
 
     def callee(self, func: ast.expr) -> Callable[..., object]:
@@ -481,38 +591,3 @@ class Evaluator(ast.NodeVisitor):
             raise SubstitutionError(f"$(eval) {ast.unparse(func)} is not callable")
         return function
 
-
-def _estimate(op: ast.operator, left: object, right: object) -> None:
-    """Stop a power or a repetition whose result would be over budget before it is computed."""
-    if isinstance(op, ast.Pow) and isinstance(left, int) and isinstance(right, int) and abs(left) > 1 and right > 0:
-        if _digits(left) * right > INT_DIGITS:
-            raise TooLarge("characters", INT_DIGITS, f"integer of more than {INT_DIGITS} digits")
-    if isinstance(op, ast.Mult):
-        sequence, count = (left, right) if isinstance(right, int) else (right, left)
-        if isinstance(sequence, (str, list, tuple)) and isinstance(count, int):
-            limit = budget.current().limits["characters"]
-            if size(sequence) * count > limit:
-                raise TooLarge("characters", limit)
-
-
-def _str_call_size(target: str, name: str, args: list[object], kwargs: dict[str, object]) -> list[object]:
-    """The arguments of a str method call (an iterable joined becomes a list), once its result is
-    known to stay within the characters budget; format strings may not reach attributes or nest."""
-    limit = budget.current().limits["characters"]
-    if name == "join" and args:
-        args = [list(args[0]), *args[1:]]  # type: ignore[call-overload]
-        estimate = sum(size(item) for item in args[0]) + len(target) * len(args[0])  # type: ignore[union-attr]
-    elif name == "replace" and len(args) >= 2 and all(isinstance(a, str) for a in args[:2]):
-        old, new = args[0], args[1]
-        estimate = len(target) + (target.count(old) if old else len(target) + 1) * len(new)  # type: ignore[arg-type]
-    elif name == "format":
-        fields = [f for f in string.Formatter().parse(target) if f[1] is not None] if "{" in target else []
-        if "__" in target or _HUGE_WIDTH.search(target) or any("{" in (f[2] or "") or "." in f[1] or "[" in f[1]
-                                                                 for f in fields):
-            raise SubstitutionError("$(eval) format string not allowed")
-        estimate = len(target) + len(fields) * max((size(a) for a in [*args, *kwargs.values()]), default=0)
-    else:
-        return args
-    if estimate > limit:
-        raise TooLarge("characters", limit)
-    return args

@@ -41,7 +41,7 @@ class FactStore:
         self._seen.add(key)
         self._rows[relation].append(row)
         if relation == "location":
-            self._locations.setdefault(str(row[0]), (str(row[1]), int(row[2]), int(row[3])))
+            self._locations.setdefault(str(row[0]), (str(row[1]), int(str(row[2])), int(str(row[3]))))
         for cell in row:
             if isinstance(cell, Unknown) and cell not in self._unknowns:
                 self._unknowns[cell] = len(self._unknowns) + 1

@@ -200,7 +200,7 @@ def complete_input(lines: list[str]) -> bool:
 def run_repl(session: Session, analysis: Analysis) -> None:
     console = Console(no_color=bool(os.environ.get("NO_COLOR")), soft_wrap=True, highlight=False)
     repl = Repl(session, analysis, console)
-    prompt = PromptSession(history=FileHistory(str(cache_dir() / "repl_history")),
+    prompt: PromptSession[str] = PromptSession(history=FileHistory(str(cache_dir() / "repl_history")),
                            completer=WordCompleter(repl.words(), WORD=True))
     facts = sum(count for _n, _a, count, kind in session.relations() if kind == "fact")
     findings = len(session.findings())

@@ -24,26 +24,28 @@ def behavior_model(store: FactStore, ctl: clingo.Control) -> Model:
         required[pub].append(topic)
     triggers = defaultdict(list)
     for call, kind, source in store.rows("publish_trigger"):
-        triggers[call].append(_trigger(kind, source, ports, store))
+        triggers[call].append(_trigger(str(kind), str(source), ports, store))
     for call, period in store.rows("loop_period"):
         for trigger in triggers[call]:
             if trigger["kind"] == "loop":
                 trigger["period"] = render(period)
     guards = defaultdict(list)
     for call, var, value, gid in store.rows("publish_guard"):
-        guards[call].append({"var": var, "value": value, **_where(store, gid)})
+        guards[call].append({"var": var, "value": value, **_where(store, str(gid))})
     nodes: dict[str, dict] = {}
-    for call, node, pub in store.rows("publish_call"):
-        entry = _node(nodes, node, store)
+    for call, node, port in store.rows("publish_call"):
+        pub = str(port)
+        entry = _node(nodes, str(node), store)
         output = entry["outputs"].setdefault(pub, {**ports.get(pub, {"name": "?", "type": "?"}), **_where(store, pub),
                                                    "calls": [], "requires": sorted(set(required.get(pub, [])))})
-        output["calls"].append({**_where(store, call), "triggers": triggers[call], "guards": guards[call]})
+        output["calls"].append({**_where(store, str(call)), "triggers": triggers[call], "guards": guards[call]})
     for wid, node, var, value, source in store.rows("state_write"):
-        state = _node(nodes, node, store)["state"].setdefault(var, {"var": var, "initial": None, "set_by": []})
+        state = _node(nodes, str(node), store)["state"].setdefault(var, {"var": var, "initial": None, "set_by": []})
         if source == "none":
             state["initial"] = value
         else:
-            state["set_by"].append({"value": value, "by": ports.get(source, {}).get("name", "?"), **_where(store, wid)})
+            state["set_by"].append({"value": value, "by": ports.get(str(source), {}).get("name", "?"),
+                                     **_where(store, str(wid))})
     return [{**entry, "outputs": list(entry["outputs"].values()), "state": list(entry["state"].values())}
             for _name, entry in sorted(nodes.items())]
 
@@ -69,12 +71,12 @@ def print_behavior(model: Model, console: Console) -> None:
 
 def _ports(store: FactStore) -> dict[str, dict]:
     """Port id -> its name (topic, service or timer period) and type."""
-    found = {}
+    found: dict[str, dict] = {}
     for relation in ("publisher", "subscriber", "service_server", "action_server"):
         for pid, _node, name, type_ in store.rows(relation):
-            found[pid] = {"name": render(name), "type": render(type_), "kind": relation}
+            found[str(pid)] = {"name": render(name), "type": render(type_), "kind": relation}
     for pid, _node, period in store.rows("timer"):
-        found[pid] = {"name": f"{render(period)} s", "type": "", "kind": "timer"}
+        found[str(pid)] = {"name": f"{render(period)} s", "type": "", "kind": "timer"}
     return found
 
 

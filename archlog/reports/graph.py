@@ -18,7 +18,7 @@ from pathlib import Path
 import networkx as nx
 
 from archlog import names
-from archlog.facts.store import FactStore
+from archlog.facts.store import Cell, FactStore
 from archlog.rules.engine import Finding, render
 
 KINDS = {"n": "node", "t": "topic", "s": "service", "a": "action", "p": "parameter"}
@@ -136,7 +136,7 @@ def to_html(g: Graph, svg: str, title: str) -> str:
             .replace("__ELEMENTS__", json.dumps(elements).replace("</", "<\\/")))
 
 
-def _where(store: FactStore, ident: str, what: str) -> str:
+def _where(store: FactStore, ident: Cell, what: str) -> str:
     place = store.location(str(ident))
     return f"{place[0]}:{place[1]} {what}" if place else what
 
