@@ -75,9 +75,10 @@ def _rviz(node: LaunchNode, config: Path, diagnostics: DiagnosticSink) -> list[P
         return []
     manager = _mapping(data.get("Visualization Manager") if isinstance(data, dict) else None)
     shown = str(config)
-    ports = [port for display in _displays(manager.get("Displays")) if (port := _display_port(display, shown,
-                                                                                                diagnostics))]
-    for tool in manager.get("Tools") if isinstance(manager.get("Tools"), list) else []:
+    ports = [port for display in _displays(manager.get("Displays"))
+             if (port := _display_port(display, shown, diagnostics))]
+    tools = manager.get("Tools")
+    for tool in tools if isinstance(tools, list) else []:
         kind = _text(tool.get("Class"), tool, shown, diagnostics) if isinstance(tool, dict) else None
         if kind in RVIZ_TOOL_TOPICS:
             topic = _text(tool.get("Topic", RVIZ_TOOL_TOPICS[kind]), tool, shown, diagnostics)
@@ -111,7 +112,8 @@ def _displays(displays: object) -> list[dict]:
         if isinstance(display, dict) and display.get("Enabled") is not False:
             found.append(display)
             children = display.get("Displays")
-            pending += reversed(children) if isinstance(children, list) else []
+            if isinstance(children, list):
+                pending += reversed(children)
     return found
 
 

@@ -170,9 +170,9 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     try:
         scan = _scan(source, env)
         if scan.macro_bomb is not None:
-            where, line, name = scan.macro_bomb
-            return _failed(shown, line if where == source else 1, "cpp-macro",
-                           f"macro {name} ({where.name}:{line}) expands to more than {MACRO_TOKENS} tokens; "
+            file, at, macro = scan.macro_bomb
+            return _failed(shown, at if file == source else 1, "cpp-macro",
+                           f"macro {macro} ({file.name}:{at}) expands to more than {MACRO_TOKENS} tokens; "
                            "the file is not parsed")
         if scan.ros2:
             tu, stand_ins = _parse_ros2(index, source, env, scan)
@@ -327,7 +327,7 @@ def _nested_calls(texts: list[tuple[Path, str]], macros: dict[str, _Macro]) -> t
     """(file, line, name) where calls of function-like macros that copy their argument nest so
     deep that the copies pass MACRO_TOKENS (`#define F(x) x x` and F(F(F(...))))."""
     for path, text in texts:
-        product, stack = 1, []
+        product, stack = 1, list[int]()
         for m in _CALL_OR_PAREN.finditer(text):
             if m.group(0) == ")":
                 product //= stack.pop() if stack else 1

@@ -88,8 +88,8 @@ def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSi
     first_port: dict[str, str] = {}
     for row in (row for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)):
         first_port.setdefault(str(row[2]), str(row[0]))
-    for name, port in first_port.items() if diagnostics is not None else ():
-        if (why := too_long(name)) is not None:
+    for name, port in first_port.items():
+        if diagnostics is not None and (why := too_long(name)) is not None:
             file, line, _column = store.location(port) or ("", 0, 0)
             diagnostics.add(file, line, "name-too-long", f"name {name[:60]}... has {why}; no near miss is looked for",
                             "note")
