@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import signal
 import time
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
@@ -160,6 +161,10 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnost
     return summaries
 
 
+CPP_JOB_SECONDS = 300
+"""Longest one executable's C++ may take (libclang has no budget of its own)."""
+
+
 @dataclass(frozen=True)
 class _CppJob:
     sources: list[Path]
@@ -173,8 +178,13 @@ class _CppJob:
 
     def __call__(self) -> tuple[NodeSummary, list]:
         sink = DiagnosticSink()
-        with sandbox.active(self.policy), budget.active(self.limits):
-            summary = extract_cpp(self.sources, self.package, self.executable, self.env, self.shown, sink, self.cls)
+        signal.alarm(CPP_JOB_SECONDS)  # past it the worker dies: reported as a crash of this executable
+        try:
+            with sandbox.active(self.policy), budget.active(self.limits):
+                summary = extract_cpp(self.sources, self.package, self.executable, self.env, self.shown, sink,
+                                      self.cls)
+        finally:
+            signal.alarm(0)
         return summary, sink.items
 
 

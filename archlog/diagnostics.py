@@ -96,6 +96,16 @@ CODES: dict[str, Code] = {
                                  "Split the nodes, or model them."),
         "python-behavior": ("note", "A file has more paths than the behavior walk's budget; some publish "
                             "triggers are unknown.", "Nothing; the triggers not found are unknown."),
+        "python-nesting": ("error", "A Python source is nested deeper than Python's parser (or archlog's walk over "
+                           "its tree) allows; its ROS calls are not recovered.", "Flatten the expression at the "
+                           "line given."),
+        "cpp-macro": ("error", "A macro of a C++ file or its workspace headers expands to more than a million "
+                      "tokens (doubling macros, or nested calls of a macro that copies its argument); the file is "
+                      "not parsed.", "Remove the macro, or describe the node with --model."),
+        "cpp-walk": ("error", "The walk over a C++ file's syntax tree ran out of memory or depth; its ROS calls "
+                     "are not recovered.", "Split the file, or describe the node with --model."),
+        "name-too-long": ("note", "A topic or service name has too many segments or characters to be compared for "
+                          "near misses; it is not.", "Nothing, unless the name is a mistake."),
     }),
     **_codes("Models and configured ports", {
         "no-model": ("warning", "A node has neither source nor model: its ports are unknown.",

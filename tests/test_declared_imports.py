@@ -19,6 +19,7 @@ ROOT = Path(__file__).resolve().parent.parent
 # subprocesses: their imports come from Debian's packages (debian-packages.txt), not from PyPI.
 DEBIAN_PYTHON = {
     "archlog/extract/gencpp_driver.py",
+    "bench/debian_nodes/feeder.py",
     "tests/support/roslaunch_oracle.py",
     "tests/support/topic_monitor.py",
 }

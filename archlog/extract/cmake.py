@@ -1,12 +1,17 @@
 """A small CMakeLists.txt reader: commands with `${VAR}` expansion, `set()`, `list(APPEND)`,
 `foreach()` loops, and the package's own functions and macros expanded where they are called
 (with `${ARGN}`, `${ARGV<n>}` and `cmake_parse_arguments`); the commands they run are located at
-the call. Conditions are not evaluated (every branch is read)."""
+the call. Conditions are not evaluated (every branch is read). Each file spends from a budget
+(`archlog.budget`): a step per command run and loop item, the characters of every expanded argument
+and variable, so self-doubling variables, huge ranges and call fan-out stop at a limit."""
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
+
+from archlog import budget
 
 _TOKEN = re.compile(
     r'#\[(?P<eq>=*)\[.*?\](?P=eq)\]|#[^\n]*|"(?:\\.|[^"\\])*"|\[(?P<beq>=*)\[.*?\](?P=beq)\]|[()]|[^\s()#"]+',
@@ -39,17 +44,45 @@ class _Function:
 _MAX_CALL_DEPTH = 8
 
 
-def commands(text: str, variables: dict[str, str] | None = None) -> list[Command]:
-    """Parse and interpret CMake source; `variables`, if given, seeds them and receives the ones set."""
+class _Stopped(Exception):
+    """A budget ran out while running the command at `line`."""
+
+    def __init__(self, line: int, exceeded: budget.BudgetExceeded) -> None:
+        super().__init__(str(exceeded))
+        self.line, self.exceeded = line, exceeded
+
+
+def commands(text: str, variables: dict[str, str] | None = None,
+             on_budget: Callable[[int, str], None] | None = None) -> list[Command]:
+    """Parse and interpret CMake source; `variables`, if given, seeds them and receives the ones set.
+    When the budget runs out, `on_budget(line, message)` is told and the commands run so far are
+    returned (without `on_budget`, `BudgetExceeded` is raised)."""
     variables = {} if variables is None else variables
     result: list[Command] = []
-    _run(_parse(text), variables, result, {}, None)
+    try:
+        with budget.scope():
+            _run(_parse(text), variables, result, {}, None)
+    except _Stopped as stop:
+        if on_budget is None:
+            raise stop.exceeded from None
+        on_budget(stop.line, str(stop.exceeded))
     return result
 
 
+def _tokens(text: str) -> list[tuple[str, int]]:
+    """(token, line) of every token but comments; lines are counted from the previous token, so
+    reading is linear in the text."""
+    tokens, line, counted = [], 1, 0
+    for m in _TOKEN.finditer(text):
+        line += text.count("\n", counted, m.start())
+        counted = m.start()
+        if not m.group(0).startswith("#"):
+            tokens.append((m.group(0), line))
+    return tokens
+
+
 def _parse(text: str) -> list[_Raw]:
-    tokens = [(m.group(0), text.count("\n", 0, m.start()) + 1) for m in _TOKEN.finditer(text)]
-    tokens = [t for t in tokens if not t[0].startswith("#")]
+    tokens = _tokens(text)
     raws, i = [], 0
     while i < len(tokens):
         name, line = tokens[i]
@@ -74,25 +107,34 @@ def _run(raws: list[_Raw] | tuple[_Raw, ...], variables: dict[str, str], out: li
          functions: dict[str, _Function], call_line: int | None, depth: int = 0) -> None:
     """Interpret commands; `call_line`: the line of the function call they run for."""
     i = 0
-    while i < len(raws):
-        raw = raws[i]
-        if raw.name in ("function", "macro", "foreach"):
-            end = _matching_end(raws, i)
-            if raw.name == "foreach":
-                _loop(raw, raws[i + 1:end], variables, out, functions, call_line, depth)
-            else:
-                head = _expand_args(raw.args, variables)
-                if head:
-                    functions[head[0].lower()] = _Function(head[1:], tuple(raws[i + 1:end]), raw.name == "macro")
-            i = end + 1
-            continue
-        cmd = Command(raw.name, _expand_args(raw.args, variables), call_line or raw.line)
-        if cmd.name in functions and depth < _MAX_CALL_DEPTH:
-            _call(functions[cmd.name], cmd, variables, out, functions, depth)
+    try:
+        while i < len(raws):
+            i = _step(raws, i, variables, out, functions, call_line, depth)
+    except budget.BudgetExceeded as exc:
+        raise _Stopped(call_line or raws[i].line, exc) from None
+
+
+def _step(raws: list[_Raw] | tuple[_Raw, ...], i: int, variables: dict[str, str], out: list[Command],
+          functions: dict[str, _Function], call_line: int | None, depth: int) -> int:
+    """Run the command at `i` (a whole block for function, macro and foreach); the index after it."""
+    budget.spend("steps")
+    raw = raws[i]
+    if raw.name in ("function", "macro", "foreach"):
+        end = _matching_end(raws, i)
+        if raw.name == "foreach":
+            _loop(raw, raws[i + 1:end], variables, out, functions, call_line, depth)
         else:
-            _track(cmd, variables)
-            out.append(cmd)
-        i += 1
+            head = _expand_args(raw.args, variables)
+            if head:
+                functions[head[0].lower()] = _Function(head[1:], tuple(raws[i + 1:end]), raw.name == "macro")
+        return end + 1
+    cmd = Command(raw.name, _expand_args(raw.args, variables), call_line or raw.line)
+    if cmd.name in functions and depth < _MAX_CALL_DEPTH:
+        _call(functions[cmd.name], cmd, variables, out, functions, depth)
+    else:
+        _track(cmd, variables)
+        out.append(cmd)
+    return i + 1
 
 
 def _call(function: _Function, cmd: Command, variables: dict[str, str], out: list[Command],
@@ -139,6 +181,7 @@ def _loop(head: _Raw, body: list[_Raw], variables: dict[str, str], out: list[Com
     elif items[:1] == ["RANGE"]:
         bounds = [int(b) for b in items[1:] if b.lstrip("-").isdigit()]
         start, stop = (0, bounds[0]) if len(bounds) == 1 else (bounds[0], bounds[1]) if bounds else (0, -1)
+        budget.spend("steps", max(0, stop + 1 - start))  # before the items are built
         items = [str(n) for n in range(start, stop + 1)]
     for item in items:
         variables[var] = item
@@ -146,6 +189,7 @@ def _loop(head: _Raw, body: list[_Raw], variables: dict[str, str], out: list[Com
 
 
 def _expand_args(args: tuple[tuple[str, bool], ...], variables: dict[str, str]) -> tuple[str, ...]:
+    budget.spend("characters", sum(len(text) for text, _quoted in args))
     expanded: list[str] = []
     for text, quoted in args:
         value = _expand(text, variables)
@@ -154,11 +198,21 @@ def _expand_args(args: tuple[tuple[str, bool], ...], variables: dict[str, str]) 
 
 
 def _expand(value: str, variables: dict[str, str]) -> str:
+    """`${VAR}` references replaced (five rounds, for values that name variables); each
+    replacement is paid for before the new string is built."""
+    if "${" not in value:
+        return value
     for _ in range(5):
-        new = _VAR.sub(lambda m: variables.get(m.group(1), m.group(0)), value)
+        new = _VAR.sub(lambda m: _lookup(m, variables), value)
         if new == value:
             break
         value = new
+    return value
+
+
+def _lookup(match: re.Match[str], variables: dict[str, str]) -> str:
+    value = variables.get(match.group(1), match.group(0))
+    budget.spend("characters", len(value))
     return value
 
 
@@ -167,13 +221,15 @@ def _track(cmd: Command, variables: dict[str, str]) -> None:
         variables["PROJECT_NAME"] = cmd.args[0]
         variables.setdefault("PROJECT_SOURCE_DIR", variables.get("CMAKE_CURRENT_SOURCE_DIR", ""))
     elif cmd.name == "set" and cmd.args:
-        values = [a for a in cmd.args[1:] if a not in ("CACHE", "PARENT_SCOPE", "FORCE")]
+        # `${NAME}` left unexpanded in set(NAME ${NAME} ...) was unset: CMake reads it as nothing
+        values = [a for a in cmd.args[1:] if a not in ("CACHE", "PARENT_SCOPE", "FORCE", f"${{{cmd.args[0]}}}")]
         if "CACHE" in cmd.args:
             values = values[:1]
         variables[cmd.args[0]] = ";".join(values)
     elif cmd.name == "list" and len(cmd.args) > 1 and cmd.args[0] == "APPEND":
-        current = [v for v in variables.get(cmd.args[1], "").split(";") if v]
-        variables[cmd.args[1]] = ";".join(current + list(cmd.args[2:]))
+        current = variables.get(cmd.args[1], "")
+        budget.spend("characters", len(current))
+        variables[cmd.args[1]] = ";".join([v for v in current.split(";") if v] + list(cmd.args[2:]))
     elif cmd.name == "cmake_parse_arguments" and len(cmd.args) >= 4:
         _parse_arguments(cmd.args, variables)
 

@@ -77,36 +77,58 @@ def _rviz(node: LaunchNode, config: Path, diagnostics: DiagnosticSink) -> list[P
                         f"rviz configuration {config} cannot be read ({exc}); its displays' topics are unknown",
                         "warning")
         return []
-    manager = data.get("Visualization Manager", {}) if isinstance(data, dict) else {}
+    manager = _mapping(data.get("Visualization Manager") if isinstance(data, dict) else None)
     shown = str(config)
-    ports = [port for display in _displays(manager.get("Displays", []))
-             if (port := _display_port(display, shown)) is not None]
-    for tool in manager.get("Tools", []) or []:
-        kind = tool.get("Class") if isinstance(tool, dict) else None
+    ports = [port for display in _displays(manager.get("Displays"))
+             if (port := _display_port(display, shown, diagnostics))]
+    tools = manager.get("Tools")
+    for tool in tools if isinstance(tools, list) else []:
+        kind = _text(tool.get("Class"), tool, shown, diagnostics) if isinstance(tool, dict) else None
         if kind in RVIZ_TOOL_TOPICS:
-            topic = tool.get("Topic", RVIZ_TOOL_TOPICS[kind])
-            ports.append(Port("publisher", str(topic), RVIZ_TYPES[kind], shown, tool.get("__line__", 1)))
+            topic = _text(tool.get("Topic", RVIZ_TOOL_TOPICS[kind]), tool, shown, diagnostics)
+            if topic:
+                ports.append(Port("publisher", topic, RVIZ_TYPES[kind], shown, tool["__line__"]))
     return ports
 
 
+def _mapping(value: object) -> dict:
+    return value if isinstance(value, dict) else {}
+
+
+def _text(value: object, entry: dict, shown: str, diagnostics: DiagnosticSink) -> str | None:
+    """A display's or tool's Class or Topic: a string (or a number, as rviz reads it), else None
+    with a diagnostic at the entry."""
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return str(value)
+    diagnostics.add(shown, entry.get("__line__", 1), "rviz-config",
+                    f"expected a name here, found a {type(value).__name__}; this entry is not read", "warning")
+    return None
+
+
 def _displays(displays: object) -> list[dict]:
-    """Enabled displays, with those inside display groups."""
-    found = []
-    for display in displays if isinstance(displays, list) else []:
-        if not isinstance(display, dict) or display.get("Enabled") is False:
-            continue
-        found.append(display)
-        found += _displays(display.get("Displays", []))
+    """Enabled displays, with those inside display groups, in file order (walked without recursion)."""
+    found: list[dict] = []
+    pending = list(reversed(displays)) if isinstance(displays, list) else []
+    while pending:
+        display = pending.pop()
+        if isinstance(display, dict) and display.get("Enabled") is not False:
+            found.append(display)
+            children = display.get("Displays")
+            if isinstance(children, list):
+                pending += reversed(children)
     return found
 
 
-def _display_port(display: dict, shown: str) -> Port | None:
+def _display_port(display: dict, shown: str, diagnostics: DiagnosticSink) -> Port | None:
     topic = display.get("Topic") or display.get("Image Topic") or display.get("Marker Topic")
     if isinstance(topic, dict):
         topic = topic.get("Value")
-    if not topic:
+    topic = _text(topic, display, shown, diagnostics)
+    kind = _text(display.get("Class", ""), display, shown, diagnostics) if topic else None
+    if not topic or kind is None:
         return None
-    kind = display.get("Class", "")
     line = display.get("__line__", 1)
     type_ = RVIZ_TYPES.get(kind) or Unknown(f"rviz display {kind}", shown, line)
-    return Port("subscriber", str(topic), type_, shown, line)
+    return Port("subscriber", topic, type_, shown, line)

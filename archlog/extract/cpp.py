@@ -30,6 +30,7 @@ import clang.cindex as ci
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cache import ResultCache, cache_dir, key
+from archlog.extract.cpp_ast import line_finder
 from archlog.extract.cpp_behavior import FileBehavior, link_files
 from archlog.extract.cpp_walk import FileResult, walk
 from archlog.extract.files import files_under, unreadable
@@ -40,6 +41,11 @@ from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace import manifests, pruned
 
 _KEEP_GOING = 0x200
+SOURCE_CAP = 512 << 10
+"""Largest C++ source parsed (bytes): libclang and the walk take ~13 s a MiB, and no node's file
+is near it (headers it includes are not capped: only their code a node calls is walked)."""
+MACRO_TOKENS = 1_000_000
+"""Most tokens one macro of the workspace may expand to (`#define A1 A0 A0`, ... doubles)."""
 _NOT_FOUND = re.compile(r"'([^']+)' file not found")
 _HEADER_SUFFIXES = {".h", ".hh", ".hpp", ".hxx", ".cuh"}
 
@@ -125,15 +131,20 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             summary.incomplete = summary.incomplete or f"{name}: {'missing' if missing else 'not read'}"
             continue
         try:
-            text = sandbox.read_bytes(source, "source")
+            data = sandbox.read_bytes(source, "source")
         except sandbox.Refused as exc:  # changed since it was checked
             diagnostics.add(name, 1, exc.code, f"not read: {exc}", "error")
             continue
-        cache_key = key(env.fingerprint, name, cls or "", " ".join(env.file_args(source)), text)
+        if len(data) > SOURCE_CAP:
+            diagnostics.add(name, 1, "too-large", f"{len(data)} bytes, over the {SOURCE_CAP}-byte cap for C++ "
+                            "sources; its ROS calls are not recovered", "error")
+            summary.incomplete = summary.incomplete or f"{name}: too large to read"
+            continue
+        cache_key = key(env.fingerprint, name, cls or "", " ".join(env.file_args(source)), data)
         result = cache.get(cache_key)
         if not isinstance(result, FileResult) or not _still_valid(result, env):
             index = index or ci.Index.create()
-            result = _parse(index, source, name, env, cls)
+            result = _parse_guarded(index, source, name, env, cls)
             cache.put(cache_key, result)
         _merge(summary, result, diagnostics)
         behaviors.append(result.behavior)
@@ -152,9 +163,29 @@ def _settle_behavior(summary: NodeSummary) -> None:
     summary.writes = [w for w in summary.writes if w.var in guarded]
 
 
+def _parse_guarded(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
+    """`_parse`, with the walk's running out of memory or depth an error diagnostic."""
+    try:
+        return _parse(index, source, shown, env, cls)
+    except (MemoryError, RecursionError) as exc:
+        return _failed(shown, 1, "cpp-walk", f"the walk over this file's syntax tree ran out of "
+                       f"{'memory' if isinstance(exc, MemoryError) else 'depth'}; its ROS calls are not recovered")
+
+
+def _failed(shown: str, line: int, code: str, message: str) -> FileResult:
+    result = FileResult(incomplete=f"{shown}: not read")
+    result.diagnostics.append(Diagnostic(shown, line, code, message, "error"))
+    return result
+
+
 def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
     try:
         scan = _scan(source, env)
+        if scan.macro_bomb is not None:
+            file, at, macro = scan.macro_bomb
+            return _failed(shown, at if file == source else 1, "cpp-macro",
+                           f"macro {macro} ({file.name}:{at}) expands to more than {MACRO_TOKENS} tokens; "
+                           "the file is not parsed")
         tu, stand_ins = _parse_confined(index, source, env, scan)
     except ci.TranslationUnitLoadError as exc:
         result = FileResult()
@@ -287,6 +318,7 @@ class _Scan:
     dual: list[str]
     spellings: set[str]
     ros2: bool
+    macro_bomb: tuple[Path, int, str] | None = None  # (file, line, name) of a macro expanding too far
     blocked: list[str] = field(default_factory=list)  # files clang must not read (given empty)
 
     @property
@@ -300,11 +332,12 @@ class _Scan:
 
 def _scan(source: Path, env: CppEnvironment) -> _Scan:
     folders = env.folders(source)
-    queue, seen, texts = [source], {source}, []
+    queue, seen, texts, read = [source], {source}, [], []
     missing: list[str] = []
     dual: list[str] = []
     args = env.file_args(source)
     blocked = env.refused + _refused_includes([word for flag, word in zip(args, args[1:]) if flag == "-include"])
+    macros: dict[str, _Macro] = {}
     while queue and len(seen) < 400:
         path = queue.pop(0)
         try:
@@ -315,6 +348,8 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
         texts.append(text)
         dirs = [path.parent] + folders
         blocked += _refused_includes([str(folder / name) for name in _named_files(text) for folder in dirs])
+        read.append((path, text))
+        macros.update(_defines(path, text))
         for name in _INCLUDE.findall(text):
             found = env.find(name, dirs)
             if str(found) in blocked or found is None and any(str(folder / name) in blocked for folder in dirs):
@@ -326,7 +361,8 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
                 seen.add(found)
                 queue.append(found)
     return _Scan(list(dict.fromkeys(missing)), list(dict.fromkeys(dual)), spelled_types(texts),
-                 any(is_ros2(t) for t in texts), list(dict.fromkeys(blocked)))
+                 any(is_ros2(t) for t in texts), _macro_bomb(macros) or _nested_calls(read, macros),
+                 list(dict.fromkeys(blocked)))
 
 
 _ANY_INCLUDE = re.compile(r'^\s*#\s*(?:include|include_next|import)\s*[<"]([^>"\n]+)[>"]', re.M)
@@ -344,6 +380,67 @@ def _refused_includes(candidates: list[str]) -> list[str]:
     """The candidate paths of an include (and -include'd files) that exist but that the sandbox
     will not read: outside the reading roots, symlinked out, devices, FIFOs, folders."""
     return [p for p in candidates if os.path.lexists(p) and not _own(p) and unreadable(p, "source") is not None]
+
+
+_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)(\([^)\n]*\))?(.*)$", re.M)
+_WORD = re.compile(r"\w+")
+_CALL_OR_PAREN = re.compile(r"(\w+)\s*\(|[()]")
+
+
+@dataclass(frozen=True)
+class _Macro:
+    file: Path
+    line: int
+    words: list[str]  # of its body
+    copies: int = 1  # function-like: the most times its body uses one parameter
+
+
+def _defines(path: Path, text: str) -> dict[str, _Macro]:
+    """The macros a file defines, by name."""
+    found, line_of = {}, line_finder(text)
+    for m in _DEFINE.finditer(text):
+        words = _WORD.findall(m.group(3))
+        params = _WORD.findall(m.group(2) or "")
+        found[m.group(1)] = _Macro(path, line_of(m.start()), words, max((words.count(p) for p in params), default=1))
+    return found
+
+
+def _nested_calls(texts: list[tuple[Path, str]], macros: dict[str, _Macro]) -> tuple[Path, int, str] | None:
+    """(file, line, name) where calls of function-like macros that copy their argument nest so
+    deep that the copies pass MACRO_TOKENS (`#define F(x) x x` and F(F(F(...))))."""
+    for path, text in texts:
+        product, stack = 1, list[int]()
+        for m in _CALL_OR_PAREN.finditer(text):
+            if m.group(0) == ")":
+                product //= stack.pop() if stack else 1
+                continue
+            copies = macros[m.group(1)].copies if m.group(1) in macros else 1
+            stack.append(copies)
+            product *= copies
+            if product > MACRO_TOKENS:
+                return path, line_finder(text)(m.start()), m.group(1)
+    return None
+
+
+def _macro_bomb(macros: dict[str, _Macro]) -> tuple[Path, int, str] | None:
+    """(file, line, name) of a macro whose expansion passes MACRO_TOKENS words, else None. Sizes
+    are computed bottom-up without recursion; a macro met again while expanding counts one word."""
+    size: dict[str, int] = {}
+    for root in (name for name in macros if name not in size):
+        stack, open_ = [(root, iter(macros[root].words))], {root}
+        while stack:
+            name, words = stack[-1]
+            child = next((w for w in words if w in macros and w not in size and w not in open_), None)
+            if child is not None:
+                stack.append((child, iter(macros[child].words)))
+                open_.add(child)
+                continue
+            stack.pop()
+            open_.discard(name)
+            size[name] = sum(size.get(w, 1) if w in macros else 1 for w in macros[name].words)
+            if size[name] > MACRO_TOKENS:
+                return macros[name].file, macros[name].line, name
+    return None
 
 
 _STAND_IN_NAME = re.compile(r"\b(?:rclcpp\w*|rmw|rcl|tf2_ros|tf2|image_transport|message_filters|diagnostic_updater|"

@@ -3,6 +3,7 @@ qualified names, written arguments, literals, ROS message types from C++ types, 
 
 from __future__ import annotations
 
+import bisect
 import ctypes
 import re
 from collections.abc import Callable
@@ -166,3 +167,14 @@ def unary_operator(expr: ci.Cursor) -> str:
         return _UNARY[kind] if 0 < kind < len(_UNARY) else ""
     words = [t.spelling for t in expr.get_tokens()]
     return words[0] if words and not words[0][0].isalnum() else words[-1] if words else ""
+
+
+CALL_WINDOW = 1024
+"""Characters after a call's start that the token fallback reads for its arguments."""
+
+
+def line_finder(text: str) -> Callable[[int], int]:
+    """The line of an offset in `text`, by bisecting its newlines (each call O(log n), where
+    counting the newlines before every match of a file would be quadratic)."""
+    newlines = [m.start() for m in re.finditer("\n", text)]
+    return lambda offset: bisect.bisect_left(newlines, offset) + 1

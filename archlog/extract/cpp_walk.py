@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 
 import clang.cindex as ci
@@ -18,9 +19,9 @@ from archlog import names, sandbox
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cache import cache_dir
 from archlog.extract.cpp_behavior import FileBehavior, read_behavior
-from archlog.extract.cpp_ast import (K, SKIP, assignments, camera_info, default_constructed, is_rvalue, period,
-                                     qualified, ros_type, template_arg_type, type_from_spelling, unquote,
-                                     written_args)
+from archlog.extract.cpp_ast import (CALL_WINDOW, K, SKIP, assignments, camera_info, default_constructed, is_rvalue,
+                                     line_finder, period, qualified, ros_type, template_arg_type, type_from_spelling,
+                                     unquote, written_args)
 from archlog.extract.rclcpp_walk import RclcppWalker
 from archlog.extract.ros2_stubs import API_DIR
 from archlog.extract.summary import Port
@@ -516,8 +517,9 @@ class _Walker(RclcppWalker):
                         if m.group(1) in objects and m.group(1) not in handles})  # member initialisers
         handles.update({m.group(1): NODELET_HANDLES[m.group(2)] for m in re.finditer(
             r"NodeHandle\s*&?\s*(\w+)\s*=\s*(get(?:MT)?(?:Private)?NodeHandle)\s*\(\s*\)", text)})
+        line_of = line_finder(text)
         for match in _FALLBACK.finditer(text):
-            line = text.count("\n", 0, match.start()) + 1
+            line = line_of(match.start())
             if line in covered or (self.spans is not None and not any(a <= line <= b for a, b in self.spans)):
                 continue
             obj, method, template, first = match.groups()
@@ -536,17 +538,30 @@ class _Walker(RclcppWalker):
 def _callback_type(text: str, start: int) -> str | None:
     """The message type of a callback named in a call's arguments, from the callback's own
     signature in the file text (for calls the AST lost)."""
-    arguments = text[start: text.find(";", start)]
+    arguments = _call_text(text, start)
     callback = re.search(r"&\s*(?:\w+::)*(\w+)\s*[,)]", arguments)
     if callback is None:
         return None
-    signature = re.search(rf"\b{callback.group(1)}\s*\(\s*(?:const\s+)?([\w:]+)", text)
+    return _signature_type(text, callback.group(1))
+
+
+@lru_cache(maxsize=128)
+def _signature_type(text: str, function: str) -> str | None:
+    """The message type of a callback's first parameter, from its signature in the text."""
+    signature = re.search(rf"\b{function}\s*\(\s*(?:const\s+)?([\w:]+)", text)
     return type_from_spelling(signature.group(1)) if signature else None
+
+
+def _call_text(text: str, start: int) -> str:
+    """The rest of a call's statement from `start`, within CALL_WINDOW characters."""
+    window = text[start: start + CALL_WINDOW]
+    end = window.find(";")
+    return window if end < 0 else window[:end]
 
 
 def _argument_names(text: str, start: int) -> list[str]:
     """The names in a call's further arguments (`&Class::cb`, `cb`, `this`...), from the text."""
-    arguments = text[start: text.find(";", start)]
+    arguments = _call_text(text, start)
     return re.findall(r",\s*&?\s*(?:\w+::)*([A-Za-z_]\w*)\s*(?=[,)])", arguments)
 
 

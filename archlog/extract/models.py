@@ -62,7 +62,13 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink) -> list[tup
     except sandbox.Refused as exc:
         diagnostics.add(shown, 1, exc.code, f"cannot read model file: {exc}", "error")
         return []
+    except UnicodeDecodeError:
+        diagnostics.add(shown, 1, "model-read", "cannot read model file: not UTF-8", "error")
+        return []
     items = data.get("models", []) if isinstance(data, dict) and "models" in data else [data]
+    if not isinstance(items, list):
+        diagnostics.add(shown, data["__line__"], "model-schema", "invalid model file: models must be a list", "error")
+        return []
     result = []
     for item in items:
         line = item.get("__line__", 1) if isinstance(item, dict) else 1

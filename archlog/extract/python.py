@@ -10,7 +10,9 @@ that do not parse) so their ROS calls are still recovered.
 from __future__ import annotations
 
 import ast
+import heapq
 import re
+from collections import deque
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -58,24 +60,53 @@ _RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "get_
 _PARAMETER_VALUES = {"value", "string_value", "integer_value", "double_value", "bool_value"}
 _KIND = {ast.AugAssign: "augmented assignment", ast.For: "loop variable", ast.With: "with target"}
 _BRANCHING = (ast.If, ast.For, ast.While, ast.Try, ast.AsyncFor, ast.Match)
+_SELF = "self."  # the key of self.method() calls (no class is named so)
+
+
+SOURCE_CAP = 1 << 20
+"""Largest rospy/rclpy source read (bytes): reading costs ~5 s a MiB, and no node is near it."""
+
+
+class NestedTooDeeply(Exception):
+    """Code nested deeper than Python's parser allows (brackets, indentation, expressions)."""
+
+    def __init__(self, line: int) -> None:
+        super().__init__(f"nested too deeply at line {line}")
+        self.line = line
 
 
 def extract_python(path: Path, package: str, executable: str, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
     """Read one rospy/rclpy script; never imports or runs it."""
     summary = NodeSummary(package, executable, "python")
     try:
-        source = sandbox.read_text(path, "source")
+        data = sandbox.read_bytes(path, "source")
     except sandbox.Refused as exc:
         diagnostics.add(shown, 1, exc.code, f"not read: {exc}", "error")
         summary.incomplete = f"{shown}: cannot be read"
         return summary
+    if len(data) > SOURCE_CAP:
+        diagnostics.add(shown, 1, "too-large", f"{len(data)} bytes, over the {SOURCE_CAP}-byte cap for Python node "
+                        "sources; its ROS calls are not recovered", "error")
+        summary.incomplete = f"{shown}: too large to read"
+        return summary
+    try:
+        return _read(data.decode("utf-8", errors="replace"), summary, shown, diagnostics)
+    except (NestedTooDeeply, RecursionError, MemoryError) as exc:  # the parser's limits, or a walk's
+        diagnostics.add(shown, getattr(exc, "line", 1), "python-nesting", "code nested deeper than Python's parser "
+                        "(or archlog's walk over it) allows; its ROS calls are not recovered", "error")
+        return NodeSummary(package, executable, "python", incomplete=f"{shown}: nested too deeply")
+
+
+def _read(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
     tree, repaired, dropped = parse_tolerant(source)
     lines = source.splitlines()
     if tree is not None and len(repaired) * 2 > len([ln for ln in lines if ln.strip()]):
         tree = None  # mostly not Python: do not pretend to have read it
     if tree is None:
+        why = f"is not repaired: {len(lines)} lines, over the {REPAIR_LINES}-line repair cap" \
+            if len(lines) > REPAIR_LINES else "does not parse as Python 3 or 2"
         diagnostics.add(shown, repaired[0] if repaired else 1, "python-syntax",
-                        "does not parse as Python 3 or 2; its ROS calls are not recovered", "error")
+                        f"{why}; its ROS calls are not recovered", "error")
         summary.incomplete = f"{shown}: does not parse"
         return summary
     if repaired:
@@ -104,13 +135,14 @@ def _without_untyped_duplicates(ports: list[Port]) -> list[Port]:
 
 # -- Python 2 and broken sources ----------------------------------------------------------
 _ROS_WORDS = re.compile(r"rospy\.|rclpy|Publisher|Subscriber|Service|create_")
+# applied to lines without trailing blanks, so that no pattern backtracks over a run of them
 _REPAIRS = [
-    (re.compile(r"^(\s*)print\s*>>\s*[^,]+,\s*(.*?)\s*$"), r"\1print(\2)"),
-    (re.compile(r"^(\s*)print\s+(?!\()(.*?)\s*$"), r"\1print(\2)"),
-    (re.compile(r"^(\s*)print\s*$"), r"\1print()"),
+    (re.compile(r"^(\s*)print\s*>>\s*[^,]+,\s*(.*)$"), r"\1print(\2)"),
+    (re.compile(r"^(\s*)print\s+(?!\()(.*)$"), r"\1print(\2)"),
+    (re.compile(r"^(\s*)print$"), r"\1print()"),
     (re.compile(r"^(\s*except\s+[^,:]+),\s*(\w+)\s*:"), r"\1 as \2:"),
-    (re.compile(r"^(\s*)exec\s+(?!\()(.*?)\s*$"), r"\1exec(\2)"),
-    (re.compile(r"^(\s*raise\s+[\w.]+)\s*,\s*(.+?)\s*$"), r"\1(\2)"),
+    (re.compile(r"^(\s*)exec\s+(?!\()(.*)$"), r"\1exec(\2)"),
+    (re.compile(r"^(\s*raise\s+[\w.]+)\s*,\s*(.+)$"), r"\1(\2)"),
     (re.compile(r"\b0([0-7]+)\b"), r"0o\1"),
     (re.compile(r"\b(\d+)[lL]\b"), r"\1"),
     (re.compile(r"\bur(['\"])"), r"u\1"),
@@ -123,26 +155,40 @@ _REPAIRS = [
 ]
 
 
+REPAIR_LINES = 20_000
+"""Longest source that is repaired (parso reads ~10k lines a second); longer ones that do not
+parse are reported, not repaired."""
+_TOO_DEEP = ("too many nested parentheses", "too many levels of indentation")
+_REPAIR_ROUNDS = 6  # parso passes; each finds every error it can, so Python 2 needs one or two
+
+
 def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]]:
     """Parse with ast; on failure repair the lines parso (error recovery) or ast points at:
     first with Python 2 rewrites, then by neutralising the statement. Line numbers never move.
-    Returns the tree, the repaired lines, and those of them whose statement was dropped."""
+    Returns the tree, the repaired lines, and those of them whose statement was dropped.
+    Raises NestedTooDeeply for code nested deeper than Python's parser allows."""
     lines = source.splitlines()
-    repaired: list[int] = []
+    repaired: dict[int, None] = {}  # in the order repaired
     dropped: list[int] = []
     grammar = parso.load_grammar()
     budget = max(10, len(lines) // 4)  # past this many repairs the file is not Python 2 either
-    while len(repaired) <= budget:
+    for _round in range(_REPAIR_ROUNDS + 1):
         try:
-            return ast.parse("\n".join(lines) + "\n"), repaired, dropped
+            return ast.parse("\n".join(lines) + "\n"), list(repaired), dropped
+        except (RecursionError, MemoryError):
+            raise NestedTooDeeply(1) from None
         except SyntaxError as exc:
+            if exc.msg in _TOO_DEEP:
+                raise NestedTooDeeply(exc.lineno or 1) from None
+            if len(lines) > REPAIR_LINES or len(repaired) > budget or _round == _REPAIR_ROUNDS:
+                break
             bad = sorted({e.start_pos[0] for e in grammar.iter_errors(grammar.parse("\n".join(lines)))}
                          | {exc.lineno or 1})
         progress = False
         for line_number in bad:
             if not 1 <= line_number <= len(lines):
                 continue
-            text = lines[line_number - 1]
+            text = lines[line_number - 1].rstrip()
             fixed = text
             for pattern, replacement in _REPAIRS:
                 fixed = pattern.sub(replacement, fixed)
@@ -154,11 +200,10 @@ def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]
                 dropped.append(line_number)
             lines[line_number - 1] = fixed
             progress = True
-            if line_number not in repaired:
-                repaired.append(line_number)
+            repaired[line_number] = None
         if not progress:
             break
-    return None, repaired, dropped
+    return None, list(repaired), dropped
 
 
 # -- scopes ---------------------------------------------------------------------------------
@@ -180,7 +225,10 @@ class _Extractor:
         self.attr_scope: dict[int, _Function] = {}
         self.class_bases: dict[str, list[str]] = {}
         self.functions: dict[tuple[str | None, str], _Function] = {}
-        self.calls: dict[tuple[str | None, str], list[tuple[ast.Call, bool]]] = {}
+        # call sites in walk order: (None, function), (class, "__init__"), (_SELF, method) for self.method()
+        self.calls: dict[tuple[str | None, str], list[tuple[int, ast.Call]]] = {}
+        self.class_of: dict[int, str | None] = {}  # id of a function node -> its class
+        self.owners: dict[int, _Function] | None = None  # id of a node -> the function it is in
         self.declared: dict[str, ast.expr] = {}
         self.notes: list[tuple[int, str]] = []
         self.scope: _Function | None = None
@@ -218,7 +266,7 @@ class _Extractor:
                                         self.attr_scope[id(sub.value)] = self.functions[(node.name, item.name)]
                             elif isinstance(sub, ast.AugAssign) and _is_self_attr(sub.target):
                                 attrs.setdefault(sub.target.attr, []).append(sub)
-        for node in ast.walk(self.tree):
+        for order, node in enumerate(ast.walk(self.tree)):
             if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
                     node.func.attr == "declare_parameter" and len(node.args) > 1 and \
                     isinstance(node.args[0], ast.Constant):
@@ -226,14 +274,19 @@ class _Extractor:
             if isinstance(node, ast.Call):
                 if isinstance(node.func, ast.Name):
                     key = (node.func.id, "__init__") if node.func.id in self.class_attrs else (None, node.func.id)
-                    self.calls.setdefault(key, []).append((node, key[1] == "__init__"))
+                    self.calls.setdefault(key, []).append((order, node))
                 elif isinstance(node.func, ast.Attribute) and isinstance(node.func.value, ast.Name) \
                         and node.func.value.id == "self":
-                    for cls in self.class_attrs:
-                        self.calls.setdefault((cls, node.func.attr), []).append((node, True))
+                    self.calls.setdefault((_SELF, node.func.attr), []).append((order, node))
+
+    def call_sites(self, cls: str | None, name: str) -> list[ast.Call]:
+        """The calls of a function, or of a method (by its class, or as self.name() in any class)."""
+        via_self = self.calls.get((_SELF, name), []) if cls in self.class_attrs else []
+        return [call for _order, call in heapq.merge(self.calls.get((cls, name), []), via_self)]
 
     def _function(self, node: ast.FunctionDef | ast.AsyncFunctionDef, cls: str | None) -> None:
         function = _Function(node, cls)
+        self.class_of[id(node)] = cls
         _assigns(node.body, function.assigns, nested=True)
         self.functions[(cls, node.name)] = function
 
@@ -254,7 +307,7 @@ class _Extractor:
     def _visit(self, node: ast.AST) -> None:
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
             outer = self.scope
-            cls = outer.cls if outer else self._enclosing_class(node)
+            cls = outer.cls if outer else self.class_of.get(id(node))
             self.scope = self.functions.get((cls, node.name)) or _Function(node, cls)
             for child in node.body:
                 self._visit(child)
@@ -275,12 +328,6 @@ class _Extractor:
             self._call(node)
         for child in ast.iter_child_nodes(node):
             self._visit(child)
-
-    def _enclosing_class(self, node: ast.AST) -> str | None:
-        for (cls, _name), function in self.functions.items():
-            if function.node is node:
-                return cls
-        return None
 
     # -- values -----------------------------------------------------------------------------
     def unknown(self, expr: ast.expr, why: str = "") -> Unknown:
@@ -363,7 +410,7 @@ class _Extractor:
         defaults = dict(zip([a.arg for a in args.args][len(args.args) - len(args.defaults):], args.defaults))
         defaults.update({a.arg: d for a, d in zip(args.kwonlyargs, args.kw_defaults) if d is not None})
         found: list[tuple[ast.expr | None, _Function | None]] = []
-        for call, _bound in self.calls.get((scope.cls, scope.node.name), []):
+        for call in self.call_sites(scope.cls, scope.node.name):
             passed = next((kw.value for kw in call.keywords if kw.arg == name), None)
             if passed is None and name in positional and positional.index(name) < len(call.args):
                 passed = call.args[positional.index(name)]
@@ -373,10 +420,12 @@ class _Extractor:
         return found
 
     def function_of(self, node: ast.AST) -> _Function | None:
-        for function in self.functions.values():
-            if any(sub is node for sub in ast.walk(function.node)):
-                return function
-        return None
+        if self.owners is None:  # indexed once, at the first question
+            self.owners = {}
+            for function in self.functions.values():
+                for sub in ast.walk(function.node):
+                    self.owners.setdefault(id(sub), function)
+        return self.owners.get(id(node))
 
     def percent(self, expr: ast.BinOp, depth: int, scope: _Function | None) -> Value:
         template = expr.left.value
@@ -695,9 +744,9 @@ def _is_self_attr(expr: ast.AST) -> bool:
 def _in_scope(body: list[ast.stmt]) -> list[ast.AST]:
     """The nodes of a block, descending into if/for/while/with/try but not into nested scopes."""
     found: list[ast.AST] = []
-    pending: list[ast.AST] = list(body)
+    pending: deque[ast.AST] = deque(body)
     while pending:
-        node = pending.pop(0)
+        node = pending.popleft()
         found.append(node)
         if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
             pending.extend(ast.iter_child_nodes(node))

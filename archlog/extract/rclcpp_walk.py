@@ -18,8 +18,8 @@ import clang.cindex as ci
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cache import cache_dir
-from archlog.extract.cpp_ast import (K, SKIP, binary_operator, camera_info, qualified, ros2_type, ros_type,
-                                     type_from_spelling, unquote, written_args)
+from archlog.extract.cpp_ast import (CALL_WINDOW, K, SKIP, binary_operator, camera_info, line_finder, qualified,
+                                     ros2_type, ros_type, type_from_spelling, unquote, written_args)
 from archlog.extract.qos import FIXED_SETTERS, PRESET_NAMES, Qos, number, seconds_text
 from archlog.extract.ros2_stubs import API_DIR
 from archlog.extract.summary import Port
@@ -824,8 +824,9 @@ class RclcppWalker:
         aliases = type_aliases([text, *_workspace_header_texts(tu)])
         sub_nodes = {m.group(1): unquote(m.group(2)) for m in re.finditer(
             r"(\w+)\s*=\s*(?:this\s*->\s*)?create_sub_node\s*\(\s*(\"[^\"]*\")", text)}
+        line_of = line_finder(text)
         for match in [*_ENTITY_FALLBACK.finditer(text), *_ACTION_FALLBACK.finditer(text)]:
-            line = text.count("\n", 0, match.start()) + 1
+            line = line_of(match.start())
             if line in covered or (self.spans is not None and not any(a <= line <= b for a, b in self.spans)):
                 continue
             method, template, first = match.group("method", "type", "name")
@@ -843,7 +844,7 @@ class RclcppWalker:
                                           qos=qos))
             self.result.fallback_lines.append(line)
         for named in _NODE_FALLBACK.finditer(text) if self.result.default_name is None else []:
-            line = text.count("\n", 0, named.start()) + 1
+            line = line_of(named.start())
             if self.spans is None or any(a <= line <= b for a, b in self.spans):
                 self.result.default_name = unquote(named.group(1))
                 self.result.name_file, self.result.name_line = self.file, line
@@ -884,8 +885,10 @@ _NODE_FALLBACK = re.compile(r"[:,]\s*(?:rclcpp::Node|Node|(?:rclcpp_lifecycle::)
 
 
 def _next_argument(text: str, start: int) -> str:
-    """The argument after the one ending at `start` (for the QoS after a topic name)."""
-    depth, index = 0, start
+    """The argument after the one ending at `start` (for the QoS after a topic name), within
+    CALL_WINDOW characters."""
+    text = text[start: start + CALL_WINDOW]
+    depth, index = 0, 0
     while index < len(text) and not (depth == 0 and text[index] in ",)"):
         depth += text[index] in "([{<"
         depth -= text[index] in ")]}>"

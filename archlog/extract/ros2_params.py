@@ -33,7 +33,11 @@ def load_param_file(path: Path, shown: str, diagnostics: DiagnosticSink, text: s
             diagnostics.add(shown, 1, exc.code, f"cannot read parameter file: {exc}", "error")
             return []
     with budget.scope():
-        loader = BoundedLoader(text)
+        try:
+            loader = BoundedLoader(text)
+        except yaml.YAMLError as exc:  # a character YAML does not allow (NUL, ...)
+            diagnostics.add(shown, 1, "param-file", f"invalid YAML: {exc}", "error")
+            return []
         with crossing_in(loader, shown):
             try:
                 root = loader.get_single_node()

@@ -167,7 +167,8 @@ class Workspace:
         if not cmake.is_file() or depth > 8 or (text := self._read(cmake, "build", asker)) is None:
             return
         variables = {**variables, "CMAKE_CURRENT_SOURCE_DIR": str(folder)}
-        cmds = commands(text, variables)
+        cmds = commands(text, variables, lambda line, message: self.diagnostics.add(
+            self.display(cmake), line, "budget-exceeded", f"{message}; the rest of this file is not read", "warning"))
         output_names = {
             c.args[0]: c.args[c.args.index("OUTPUT_NAME") + 1]
             for c in cmds

@@ -13,7 +13,7 @@ from archlog.extract.models import UNSET
 from archlog.extract.summary import NodeSummary, Port, Site
 from archlog.facts.behavior import Sites, add_behavior
 from archlog.extract.workspace import Workspace
-from archlog.facts.similarity import near_pairs
+from archlog.facts.similarity import near_pairs, too_long
 from archlog.facts.store import FactStore
 from archlog.values import Alternatives, Concat, ParamList, ParamRef, Unknown, Value, concat
 
@@ -78,13 +78,22 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
         if summary.incomplete:
             store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config)
-    add_near_names(store, near_threshold)
+    add_near_names(store, near_threshold, diagnostics)
     return store
 
 
-def add_near_names(store: FactStore, threshold: float) -> None:
-    """near_name facts for the names the ports use (both directions)."""
-    used = {row[2] for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)}
+def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSink | None = None) -> None:
+    """near_name facts for the names the ports use (both directions); a name too long to compare
+    is noted (once, at its first port) when `diagnostics` is given."""
+    first_port: dict[str, str] = {}
+    for row in (row for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)):
+        first_port.setdefault(str(row[2]), str(row[0]))
+    for name, port in first_port.items():
+        if diagnostics is not None and (why := too_long(name)) is not None:
+            file, line, _column = store.location(port) or ("", 0, 0)
+            diagnostics.add(file, line, "name-too-long", f"name {name[:60]}... has {why}; no near miss is looked for",
+                            "note")
+    used = set(first_port)
     for a, b, score in near_pairs(used, threshold):
         store.add("near_name", a, b, round(score * 1000))
         store.add("near_name", b, a, round(score * 1000))

@@ -7,6 +7,10 @@ divided by the mean segment count. Two names are near misses when that is below 
 (default 0.5). The insertion cost makes replacing a whole segment (delete + insert) cost 3, as
 much as three character edits, so /a/point and /a/line stay apart while /a/point and
 /a/point_class, or /base_waypoint and /base_waypoints, are near.
+
+Measuring costs the product of two names' segment counts (and of two segments' lengths), so names
+past `MAX_SEGMENTS` segments or `MAX_CHARACTERS` characters (no ROS name comes near either) are not
+compared: `too_long()` says which, and why.
 """
 
 from __future__ import annotations
@@ -21,10 +25,22 @@ from rapidfuzz.distance import OSA, DamerauLevenshtein
 _SPLIT = re.compile(r"[/_]")
 INDEL = 1.5
 _BLOCK = 1024
+MAX_SEGMENTS = 64
+MAX_CHARACTERS = 1024
 
 
 def segments(name: str) -> list[str]:
     return _SPLIT.split(name)
+
+
+def too_long(name: str) -> str | None:
+    """Why a name is not compared with others (too many segments or characters), or None."""
+    if len(name) > MAX_CHARACTERS:
+        return f"{len(name)} characters, over the {MAX_CHARACTERS}-character cap for near-miss comparison"
+    count = name.count("/") + name.count("_") + 1
+    if count > MAX_SEGMENTS:
+        return f"{count} segments, over the {MAX_SEGMENTS}-segment cap for near-miss comparison"
+    return None
 
 
 def distance(a: str, b: str) -> float:
@@ -33,14 +49,15 @@ def distance(a: str, b: str) -> float:
 
 
 def near_pairs(names: Iterable[str], threshold: float = 0.5) -> list[tuple[str, str, float]]:
-    """Every unordered pair of distinct names whose distance is below `threshold`.
+    """Every unordered pair of distinct names whose distance is below `threshold` (names that are
+    `too_long()` are left out).
 
     Each segment is encoded as one character, so rapidfuzz's optimal-string-alignment distance
     over the encoded names (every segment edit counted 1) bounds the real distance from below.
     That bound runs in C over all pairs, a block of rows at a time; only pairs under it are
     measured exactly, all at once.
     """
-    measure = _Measure(sorted(set(names)))
+    measure = _Measure(sorted({name for name in names if too_long(name) is None}))
     lengths = measure.lengths
     first, second = [], []
     for start in range(0, len(measure.names), _BLOCK):
