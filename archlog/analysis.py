@@ -1,35 +1,31 @@
-"""The pipeline: index the workspace, interpret the configuration, extract nodes, build facts."""
+"""The pipeline: index the workspace, interpret the configuration, extract nodes, link the system,
+build facts."""
 
 from __future__ import annotations
 
 import os
 import signal
 import time
-from concurrent.futures import ProcessPoolExecutor
-from concurrent.futures.process import BrokenProcessPool
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from archlog import budget, names, sandbox
-from archlog.diagnostics import DiagnosticSink
-from archlog.extract.controllers import controller_nodes
+from archlog import budget, sandbox
+from archlog.diagnostics import Diagnostic, DiagnosticSink
+from archlog.errors import ConfigError
+from archlog.extract import registry
 from archlog.extract.cpp import CppEnvironment, extract_cpp
 from archlog.extract.files import files_under
-from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode
-from archlog.extract.messages import message_files
+from archlog.extract.launch import LaunchConfig, LaunchInterpreter
 from archlog.extract.msg_headers import generated_headers
-from archlog.extract.models import BUILTIN_DIR, load_models
 from archlog.extract.python import extract_python
 from archlog.extract.summary import NodeSummary
-from archlog.extract.workspace import Workspace, share_dirs
-from archlog.facts.compose import compose, rosrun_config
-from archlog.facts.instances import complete_instances
+from archlog.extract.workspace.index import Workspace
+from archlog.extract.workspace.packages import Executable, share_dirs
+from archlog.facts.compose import compose
 from archlog.facts.store import FactStore
-
-
-class ConfigError(Exception):
-    """A usage or configuration error (exit status 2)."""
+from archlog.system.link import link
+from archlog.system.node_models import BUILTIN_DIR, load_node_models
 
 
 @dataclass
@@ -85,26 +81,19 @@ def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], model
     timings["launch"] = _lap(clock)
 
     clock = time.perf_counter()
-    builtin, user, externals = _models(models, workspace, diagnostics)
+    node_models = load_node_models(models, workspace, diagnostics)
     wanted = {n.kind for n in config.nodes} if config else None
-    summaries = dict(builtin)
-    summaries.update(_extract(workspace, wanted, diagnostics, progress or (lambda _done, _total: None)))
-    summaries.update(user)
-    if config is None:
-        config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
-                               workspace, diagnostics)
-    complete_instances(config, summaries, diagnostics)
-    config.nodes.extend(controller_nodes(config, diagnostics))
-    for summary, instance, elem in externals:
-        summaries[(summary.package, summary.executable)] = summary
-        config.nodes.append(LaunchNode(elem, summary.package, summary.executable, names.join("/", instance),
-                                       names.namespace_of(names.join("/", instance))))
+    extracted = registry.extract(workspace, wanted, diagnostics, progress or (lambda _done, _total: None))
     timings["extract"] = _lap(clock)
 
     clock = time.perf_counter()
-    store = compose(workspace, config, summaries, message_files(workspace), diagnostics, near_threshold)
+    system = link(workspace, config, node_models, extracted, diagnostics)
+    timings["link"] = _lap(clock)
+
+    clock = time.perf_counter()
+    store = compose(system, diagnostics, near_threshold)
     timings["facts"] = _lap(clock)
-    return Analysis(workspace, config, store, diagnostics, timings)
+    return Analysis(workspace, system.config, store, diagnostics, timings)
 
 
 def resolve_launch(spec: str, workspace: Workspace) -> Path:
@@ -123,42 +112,18 @@ def resolve_launch(spec: str, workspace: Workspace) -> Path:
     raise ConfigError(f"launch file not found: {spec} (give a path, or PKG/path inside the package)")
 
 
-def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnostics: DiagnosticSink,
-             progress: Progress) -> dict[tuple[str, str], NodeSummary]:
-    """Summaries of the executables the configuration runs (all of them without a launch file);
-    `progress(done, total)` is called as they finish."""
-    summaries = {}
-    cpp_jobs = []
-    env: CppEnvironment | None = None
-    for package in workspace.packages.values():
-        for exe in package.executables.values():
-            if wanted is not None and (package.name, exe.name) not in wanted:
-                continue
-            if exe.lang == "other":
-                continue
-            if exe.lang == "python":
-                progress(len(summaries), -1)
-                summaries[(package.name, exe.name)] = extract_python(
-                    exe.sources[0], package.name, exe.name, workspace.display(exe.sources[0]), diagnostics)
-            else:
-                env = env or CppEnvironment(
-                    [d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
-                    generated_headers(workspace, diagnostics), workspace.roots)
-                shown = {s: workspace.display(s) for s in exe.sources}
-                cpp_jobs.append(_CppJob(exe.sources, shown, package.name, exe.name, env, exe.cls,
-                                        sandbox.current(), dict(budget.current().limits)))
-    done = len(summaries)
-    for job, result in _run_isolated(cpp_jobs, lambda n: progress(done + n, done + len(cpp_jobs))):
-        if result is None:
-            diagnostics.add(next(iter(job.shown.values()), job.package), 1, "cpp-crash",
-                            f"the C++ parser crashed on {job.package}/{job.executable}; its ROS calls are not "
-                            "recovered", "error")
-            continue
-        summary, found = result
-        summaries[(job.package, job.executable)] = summary
-        for diag in found:
-            diagnostics.add(diag.file, diag.line, diag.code, diag.message, diag.severity, diag.column)
-    return summaries
+def _python(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Executable], NodeSummary]:
+    """Python executables are read in this process (ast only)."""
+    return lambda exe: extract_python(exe.sources[0], exe.package, exe.name, workspace.display(exe.sources[0]),
+                                      diagnostics)
+
+
+def _cpp(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Executable], _CppJob]:
+    """C++ executables are parsed by libclang in worker processes, sharing one include environment."""
+    env = CppEnvironment([d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
+                         generated_headers(workspace, diagnostics), workspace.roots)
+    return lambda exe: _CppJob(exe.sources, {s: workspace.display(s) for s in exe.sources}, exe.package, exe.name,
+                               env, exe.cls, sandbox.current(), dict(budget.current().limits))
 
 
 CPP_JOB_SECONDS = 300
@@ -176,7 +141,7 @@ class _CppJob:
     policy: sandbox.Sandbox = field(default_factory=sandbox.current)
     limits: dict[str, int] = field(default_factory=dict)
 
-    def __call__(self) -> tuple[NodeSummary, list]:
+    def __call__(self) -> tuple[NodeSummary, list[Diagnostic]]:
         sink = DiagnosticSink()
         signal.alarm(CPP_JOB_SECONDS)  # past it the worker dies: reported as a crash of this executable
         try:
@@ -187,52 +152,14 @@ class _CppJob:
             signal.alarm(0)
         return summary, sink.items
 
-
-def _run_isolated(jobs: list[_CppJob], finished: Callable[[int], None]
-                  ) -> list[tuple[_CppJob, tuple[NodeSummary, list] | None]]:
-    """Run jobs in worker processes so that a crash in libclang costs one executable, not the run.
-    Jobs lost when a worker dies are retried one per process to find the one that crashes."""
-    if not jobs:
-        return []
-    results: dict[int, tuple[NodeSummary, list] | None] = {}
-    with ProcessPoolExecutor(max_workers=min(len(jobs), os.cpu_count() or 1)) as pool:
-        futures = {k: pool.submit(job) for k, job in enumerate(jobs)}
-        for k, future in futures.items():
-            try:
-                results[k] = future.result()
-                finished(len(results))
-            except BrokenProcessPool:
-                continue  # retried below, one job per process
-    for k in [k for k in range(len(jobs)) if k not in results]:
-        with ProcessPoolExecutor(max_workers=1) as pool:
-            try:
-                results[k] = pool.submit(jobs[k]).result()
-            except BrokenProcessPool:
-                results[k] = None
-    return [(job, results[k]) for k, job in enumerate(jobs)]
+    def crashed(self, diagnostics: DiagnosticSink) -> None:
+        diagnostics.add(next(iter(self.shown.values()), self.package), 1, "cpp-crash",
+                        f"the C++ parser crashed on {self.package}/{self.executable}; its ROS calls are not "
+                        "recovered", "error")
 
 
-Summaries = dict[tuple[str, str], NodeSummary]
-
-
-def _models(paths: list[Path], workspace: Workspace, diagnostics: DiagnosticSink
-            ) -> tuple[Summaries, Summaries, list[tuple[NodeSummary, str, Element]]]:
-    """Shipped models, the user's models, and external instances declared by models."""
-    builtin: Summaries = {}
-    user: Summaries = {}
-    externals: list[tuple[NodeSummary, str, Element]] = []
-    files = [(p, builtin) for p in sorted(BUILTIN_DIR.glob("*.yaml"))] + [(p, user) for p in paths]
-    for index, (path, target) in enumerate(files, 1):
-        if not path.is_file():
-            raise ConfigError(f"model file not found: {path}")
-        shown = workspace.display(path)
-        for summary, instance in load_models(path, shown, diagnostics):
-            if instance:
-                line = summary.ports[0].line - 1 if summary.ports else 1
-                externals.append((summary, instance, Element(f"m{index:03d}{len(externals):03d}", shown, max(line, 1))))
-            else:
-                target[(summary.package, summary.executable)] = summary
-    return builtin, user, externals
+registry.register("python", registry.InputKind(start=_python))
+registry.register("cpp", registry.InputKind(start_isolated=_cpp))
 
 
 def _lap(start: float) -> float:

@@ -15,15 +15,14 @@ from rich.table import Table
 from rich.text import Text
 
 from archlog import __version__, sandbox
-from archlog.analysis import Analysis, ConfigError, analyse
-from archlog.config import Config
-from archlog.config import ConfigError as ConfigFileError
-from archlog.config import find_config, load_config, workspace_config
+from archlog.analysis import Analysis, analyse
+from archlog.config import Config, find_config, load_config, workspace_config
 from archlog.diagnostics import SEVERITIES
+from archlog.errors import ConfigError
 from archlog.queries.session import QueryError, Result, Session
 from archlog.reports.codequality import to_codequality
 from archlog.reports.json_report import to_json
-from archlog.reports.model import Report
+from archlog.reports.report import Report
 from archlog.reports.sarif import to_sarif
 from archlog.reports.suppress import apply_suppressions, read_baseline
 from archlog.reports.suppress import write_baseline as write_baseline_file
@@ -354,7 +353,7 @@ def run() -> None:
     except click.ClickException as exc:
         exc.show()
         sys.exit(2)
-    except (ConfigError, ConfigFileError, RuleError) as exc:
+    except (ConfigError, RuleError) as exc:
         click.echo(f"archlog: error: {exc}", err=True)
         sys.exit(2)
     except SystemExit:

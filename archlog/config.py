@@ -31,6 +31,7 @@ from pathlib import Path
 from archlog import sandbox
 from archlog.budget import LIMITS
 from archlog.diagnostics import SEVERITIES
+from archlog.errors import ConfigError
 from archlog.rules.ruleset import Rule
 
 BUILTIN_PROFILES = {
@@ -39,10 +40,6 @@ BUILTIN_PROFILES = {
 }
 KEYS = {"rules", "select", "ignore", "severity", "near-miss-threshold", "precision", "profiles", "suppress", "env",
         "budget"}
-
-
-class ConfigError(Exception):
-    """A configuration file that cannot be used."""
 
 
 @dataclass

@@ -24,7 +24,9 @@ from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.summary import Port, Publish
-from archlog.extract.workspace import Executable, Workspace, registered_components
+from archlog.extract.workspace.executables import registered_components
+from archlog.extract.workspace.index import Workspace
+from archlog.extract.workspace.packages import Executable
 
 sys.path.insert(0, str(Path(__file__).parent))
 from python_bench import resolution  # noqa: E402  (one definition of "resolved" for every extractor)

@@ -293,8 +293,8 @@ def recover(subject_src: Path, launches: list[str], env: dict[str, str], models:
 
 
 def _controller_instances(analysis) -> set[str]:  # noqa: ANN001
-    from archlog.extract.controllers import controller_nodes
     from archlog.diagnostics import DiagnosticSink
+    from archlog.system.controllers import controller_nodes
     return {n.name for n in controller_nodes(analysis.config, DiagnosticSink())}
 
 
@@ -444,7 +444,7 @@ def print_differences(subject: str, tool: str, res: dict) -> dict[str, int]:
 
 
 def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[str]) -> None:
-    from archlog.analysis import BUILTIN_DIR
+    from archlog.system.node_models import BUILTIN_DIR
     shipped = sorted(Path(BUILTIN_DIR).glob("*.yaml"))
     results, extras = {}, {}
     for subject in subjects:

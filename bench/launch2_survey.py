@@ -14,8 +14,8 @@ clock per file, after the workspace is indexed.
 from __future__ import annotations
 
 import argparse
-import re
 import collections
+import re
 import sys
 import time
 import traceback
@@ -29,7 +29,8 @@ sys.path.insert(0, str(ROOT))
 
 from archlog.diagnostics import DiagnosticSink  # noqa: E402
 from archlog.extract.launch import LaunchInterpreter, ros2_marker  # noqa: E402
-from archlog.extract.workspace import SKIP_DIRS, Workspace  # noqa: E402
+from archlog.extract.workspace.index import Workspace  # noqa: E402
+from archlog.extract.workspace.packages import SKIP_DIRS  # noqa: E402
 
 PARTIAL = {"launch-unknown", "launch-condition"}  # notes that still mean "not all of it is known"
 UNREAD = {"launch-python", "launch-xml", "launch-yaml", "not-a-file", "outside-workspace", "too-large"}  # not read

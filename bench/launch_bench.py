@@ -15,7 +15,7 @@ from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch import LaunchInterpreter
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace.index import Workspace
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -32,7 +32,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from archlog.analysis import analyse  # noqa: E402
-from archlog.extract.workspace import SKIP_DIRS  # noqa: E402
+from archlog.extract.workspace.packages import SKIP_DIRS  # noqa: E402
 from archlog.rules.engine import Engine, render  # noqa: E402
 from archlog.rules.ruleset import load_rules  # noqa: E402
 

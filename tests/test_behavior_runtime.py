@@ -18,15 +18,15 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 import pytest
-
-from archlog.analysis import resolve_launch
-from archlog.diagnostics import DiagnosticSink
-from archlog.extract.workspace import Workspace
-from archlog.observe import Architecture, compare, from_facts
 from conftest import CORPUS_BEHAVIOR, corpus_cases, load_case, requires_ros, run_case
 from support.behavior import Key, Model, Output, analysis_behavior, case_dir, expected_behavior, silenced_outputs
 from support.build_cpp import build_workspace
 from support.live_graph import live_system
+
+from archlog.analysis import resolve_launch
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.workspace.index import Workspace
+from archlog.observe import Architecture, compare, from_facts
 
 pytestmark = requires_ros()
 

@@ -10,15 +10,15 @@ from functools import lru_cache
 from pathlib import Path
 
 import pytest
+from conftest import ROOT
+from support.describe import describe
+from support.goldens import compare_text
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cpp import CppEnvironment, extract_cpp
 from archlog.extract.python import extract_python
 from archlog.extract.summary import NodeSummary
-from archlog.extract.workspace import registered_components
-from conftest import ROOT
-from support.describe import describe
-from support.goldens import compare_text
+from archlog.extract.workspace.executables import registered_components
 
 FOLDERS = ("python", "cpp_ros1", "cpp_ros2")
 FIXTURES = sorted(p for folder in FOLDERS for p in (ROOT / "corpus" / folder).iterdir() if p.suffix != ".expected")

@@ -24,16 +24,16 @@ from support.hostile import Outside, problems, run_check
 
 from archlog import budget
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cmake import commands
-from archlog.extract.configured import configured_ports
 from archlog.extract.cpp_ast import line_finder
 from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode, convert
-from archlog.extract.models import load_models
 from archlog.extract.python import extract_python, parse_tolerant
 from archlog.extract.ros2_params import load_param_file
 from archlog.extract.ros2_stubs import _members
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace.cmake import commands
+from archlog.extract.workspace.index import Workspace
 from archlog.facts.similarity import near_pairs, too_long
+from archlog.system.configured import configured_ports
+from archlog.system.node_models import load_models
 
 PACKAGE_XML = ("<package format='2'><name>{}</name><version>0.1.0</version><description>d</description>"
                "<maintainer email='dev@example.com'>m</maintainer><license>MIT</license></package>")

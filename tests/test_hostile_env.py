@@ -16,7 +16,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-
 from support.hostile import CANARY_ENV, Outside, Run, problems, run_check
 
 PACKAGE_XML = """<?xml version="1.0"?>
@@ -272,7 +271,8 @@ def test_a_workspace_configuration_cannot_raise_budgets_or_reach_outside(tmp_pat
     """archlog.toml found in the workspace is pull-request content: its [budget] only lowers limits,
     and its rule files stay under its folder; the same file given with --config is trusted."""
     from archlog.budget import LIMITS
-    from archlog.config import ConfigError, load_config, workspace_config
+    from archlog.config import load_config, workspace_config
+    from archlog.errors import ConfigError
 
     (tmp_path / "archlog.toml").write_text('[budget]\nelements = 999999999\ndepth = 8\n')
     found = workspace_config(load_config(tmp_path / "archlog.toml", None))

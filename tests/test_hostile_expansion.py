@@ -15,12 +15,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from support.hostile import Outside, Run, problems, run_check
 
 from archlog import budget
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch import LaunchInterpreter
-from archlog.extract.workspace import Workspace
-from support.hostile import Outside, Run, problems, run_check
+from archlog.extract.workspace.index import Workspace
 
 PACKAGE_XML = """<package format="2"><name>demo</name><version>0.0.0</version><description>demo</description>
 <maintainer email="demo@example.com">demo</maintainer><license>MIT</license></package>

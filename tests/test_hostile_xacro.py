@@ -14,9 +14,9 @@ from pathlib import Path
 
 import pytest
 import xacro
-
-from archlog.extract.xacro_expand import Expansion, XacroFailure, expand, routed
 from support.hostile import CANARY_ENV, Outside, problems, run_check
+
+from archlog.system.xacro_expand import Expansion, XacroFailure, expand, routed
 
 PACKAGE = """<package format="2"><name>pkg</name><version>0.1.0</version><description>hostile</description>
 <maintainer email="dev@example.com">dev</maintainer><license>MIT</license>

@@ -9,7 +9,7 @@ import pytest
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch import LaunchConfig, LaunchInterpreter
 from archlog.extract.substitution import SubstContext, SubstitutionError, substitute
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace.index import Workspace
 
 
 def load(tmp_path: Path, files: dict[str, str], args: dict[str, str] | None = None) -> tuple[LaunchConfig, DiagnosticSink]:

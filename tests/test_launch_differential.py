@@ -5,7 +5,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
 from conftest import CORPUS, ROOT, corpus_cases, load_case, requires_ros
 from support.launch_oracle import archlog_view, case_args, expected_error_lines, roslaunch_view
 
@@ -43,7 +42,7 @@ def test_launch_case_agrees_with_roslaunch(case: Path) -> None:
 def test_corpus_systems_agree_with_roslaunch(variant: Path) -> None:
     from archlog.analysis import resolve_launch
     from archlog.diagnostics import DiagnosticSink
-    from archlog.extract.workspace import Workspace
+    from archlog.extract.workspace.index import Workspace
 
     case = load_case(variant)
     files = [resolve_launch(spec, Workspace([variant], DiagnosticSink())) for spec in case["launch"]]

@@ -6,13 +6,13 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from conftest import ROOT
 
 from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch import LaunchConfig, LaunchInterpreter, LaunchNode
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace.index import Workspace
 from archlog.values import Unknown
-from conftest import ROOT
 
 WS = ROOT / "corpus" / "launch_ros2" / "ws"
 PACKAGE_XML = """<?xml version="1.0"?>

@@ -7,11 +7,11 @@ from pathlib import Path
 
 from archlog.analysis import analyse
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.models import BUILTIN_DIR, load_models
 from archlog.extract.qos import PRESETS
 from archlog.queries.session import Session
 from archlog.rules.engine import Engine
 from archlog.rules.ruleset import load_rules
+from archlog.system.node_models import BUILTIN_DIR, load_models
 
 PACKAGE_XML = ("<package format='2'><name>{}</name><version>0.1.0</version><description>d</description>"
                "<maintainer email='dev@example.com'>m</maintainer><license>MIT</license></package>")
@@ -101,7 +101,7 @@ def test_model_ports_that_exist_only_under_a_parameter(tmp_path: Path) -> None:
 
 
 def test_shipped_models_are_valid() -> None:
-    from archlog.extract.models import BUILTIN_DIR
+    from archlog.system.node_models import BUILTIN_DIR
 
     for path in sorted(BUILTIN_DIR.glob("*.yaml")):
         sink = DiagnosticSink()

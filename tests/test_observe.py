@@ -9,13 +9,13 @@ import tempfile
 from pathlib import Path
 
 import yaml
-
-from archlog.analysis import resolve_launch
-from archlog.diagnostics import DiagnosticSink
-from archlog.extract.workspace import Workspace
 from conftest import CORPUS, ROOT, load_case, requires_ros
 from support.build_cpp import build_workspace
 from support.live_graph import running_system
+
+from archlog.analysis import resolve_launch
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.workspace.index import Workspace
 
 pytestmark = requires_ros()
 

@@ -9,7 +9,7 @@ from archlog.analysis import analyse
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary
-from archlog.facts.instances import complete_instances
+from archlog.system.instances import complete_instances
 from archlog.values import Unknown
 
 ELEM = Element("e1", "bringup.launch.py", 7)

@@ -8,14 +8,14 @@ import tempfile
 from pathlib import Path
 
 import pytest
-
-from archlog.analysis import resolve_launch
-from archlog.diagnostics import DiagnosticSink
-from archlog.extract.workspace import Workspace
-from archlog.observe import compare, from_facts
 from conftest import corpus_cases, load_case, requires_ros, run_case
 from support.build_cpp import build_workspace
 from support.live_graph import launch_graph
+
+from archlog.analysis import resolve_launch
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.workspace.index import Workspace
+from archlog.observe import compare, from_facts
 
 pytestmark = requires_ros()
 

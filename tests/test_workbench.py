@@ -8,10 +8,11 @@ import sys
 from pathlib import Path
 
 import pytest
-
-from archlog.config import Config, ConfigError, load_config
-from archlog.rules.ruleset import load_rules
 from conftest import CORPUS, ROOT
+
+from archlog.config import Config, load_config
+from archlog.errors import ConfigError
+from archlog.rules.ruleset import load_rules
 
 BUGGY = CORPUS / "topic_typo" / "buggy"
 LAUNCH = ["--launch", "waypoint_nav/launch/follow_waypoints.launch"]

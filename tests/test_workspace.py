@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace.index import Workspace
 
 MANIFEST = ("<package format='2'><name>{}</name><version>0.1.0</version><description>d</description>"
             "<maintainer email='dev@example.com'>m</maintainer><license>MIT</license></package>")

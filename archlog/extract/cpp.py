@@ -38,7 +38,7 @@ from archlog.extract.ros2_stubs import API_DIR, DUAL, INTERFACE_INCLUDE, Interfa
     library_interfaces, spelled_types, stand_in_dir
 from archlog.extract.stub_headers import stub_dir
 from archlog.extract.summary import NodeSummary
-from archlog.extract.workspace import manifests, pruned
+from archlog.extract.workspace.packages import manifests, pruned
 
 _KEEP_GOING = 0x200
 SOURCE_CAP = 512 << 10

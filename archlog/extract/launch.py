@@ -35,7 +35,7 @@ from archlog.extract import bounded_yaml
 from archlog.extract.files import parse_xml, unreadable
 from archlog.extract.substitution import (RefusedRead, SubstContext, SubstitutionError, UnknownArg, Unresolved,
                                           arithmetic, auto_value, read_file, substitute, unresolved_code)
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace.index import Workspace
 from archlog.values import Unknown
 
 if TYPE_CHECKING:

@@ -12,7 +12,8 @@ from pathlib import Path
 from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cache import cache_dir
-from archlog.extract.workspace import Workspace, share_dirs
+from archlog.extract.workspace.index import Workspace
+from archlog.extract.workspace.packages import share_dirs
 
 DEBIAN_PYTHON = Path("/usr/bin/python3")
 TEMPLATES = Path("/usr/share/gencpp")

@@ -1,20 +1,19 @@
-"""Place node summaries in a configuration: resolve every port's name and emit the facts."""
+"""Translate a linked system into facts: resolve every port's name in its instance's context."""
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.configured import configured_ports
-from archlog.extract.launch import Element, LaunchConfig, LaunchNode
-from archlog.extract.models import UNSET
+from archlog.extract.launch import LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary, Port, Site
 from archlog.facts.behavior import Sites, add_behavior
-from archlog.extract.workspace import Workspace
 from archlog.facts.similarity import near_pairs, too_long
 from archlog.facts.store import FactStore
+from archlog.system.link import System
+from archlog.system.node_models import UNSET
 from archlog.values import Alternatives, Concat, ParamList, ParamRef, Unknown, Value, concat
 
 QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
@@ -22,25 +21,16 @@ _MAX_INT = 2**31 - 1  # clingo's integers are 32-bit
 NAMED_PORTS = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 
 
-@dataclass
-class Instance:
-    """A node instance with its summary (None when neither source nor model was found)."""
-
-    launch: LaunchNode
-    summary: NodeSummary | None
-
-
-def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[str, str], NodeSummary],
-            messages: dict[str, tuple[str, object]], diagnostics: DiagnosticSink,
-            near_threshold: float = 0.5) -> FactStore:
-    """Build the fact store of one system configuration."""
+def compose(system: System, diagnostics: DiagnosticSink, near_threshold: float = 0.5) -> FactStore:
+    """Build the fact store of one linked system configuration."""
     store = FactStore()
+    workspace, config = system.workspace, system.config
     for package in workspace.packages.values():
         store.add("package", package.name, workspace.display(package.path))
         for exe in package.executables.values():
             store.add("executable", package.name, exe.name, exe.lang,
                       workspace.display(exe.sources[0]) if exe.sources else "")
-    for type_name, (kind, path) in sorted(messages.items()):
+    for type_name, (kind, path) in sorted(system.messages.items()):
         store.add("message_type", type_name, kind, workspace.display(str(path)))
     for elem, src, dst in config.scope_remaps:
         store.add("remap_declared", elem.id, src, dst)
@@ -48,14 +38,7 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
     for name, (value, elem) in config.params.items():
         store.add("param", name, value if isinstance(value, Unknown) else _text(value), elem.id)
         store.locate(elem.id, elem.file, elem.line)
-    missing: set[tuple[str, str]] = set()
-    for node in config.nodes:
-        kind = node.kind
-        summary = summaries.get(kind)
-        extra = configured_ports(node, config, workspace, diagnostics)
-        if extra:
-            summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
-                NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")
+    for node, summary in ((i.launch, i.summary) for i in system.instances):
         store.add("node", node.name, node.pkg, node.type, node.elem.id)
         store.locate(node.elem.id, node.elem.file, node.elem.line)
         if node.condition:
@@ -66,13 +49,6 @@ def compose(workspace: Workspace, config: LaunchConfig, summaries: dict[tuple[st
         if node.plugin:
             store.add("nodelet", node.name, node.plugin, node.manager or "")
         if summary is None:
-            if kind not in missing:
-                missing.add(kind)
-                diagnostics.add(node.elem.file, node.elem.line, "no-model",
-                                f"no source or model for {'/'.join(kind)}: the ports of {node.name} are unknown; "
-                                f"describe it in a YAML file passed with --model, starting from {{package: {kind[0]}, "
-                                f"executable: {kind[1]}, publishers: [{{name: TOPIC, type: PKG/TYPE}}], "
-                                "subscribers: [], services: [], params: [{name: ~PARAM, default: VALUE}]}", "warning")
             continue
         store.add("node_source", node.name, summary.origin)
         if summary.incomplete:
@@ -254,23 +230,3 @@ def _text(value: object) -> str:
     if isinstance(value, bool):
         return str(value).lower()
     return str(value)
-
-
-def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Workspace,
-                  diagnostics: DiagnosticSink) -> LaunchConfig:
-    """With no launch file: every executable is one instance under its default name."""
-    config = LaunchConfig()
-    for index, ((pkg, exe), summary) in enumerate(sorted(summaries.items()), 1):
-        executable = workspace.executable(pkg, exe)
-        if executable is not None and executable.cls:
-            continue  # a nodelet runs inside a manager, not on its own
-        source = executable.sources[0] if executable and executable.sources else None
-        file = summary.name_file or (workspace.display(source) if source else pkg)
-        elem = Element(f"x{index:05d}", file, summary.name_line or 1)
-        name = summary.default_name if isinstance(summary.default_name, str) else exe
-        if summary.default_name is not None and not isinstance(summary.default_name, str):
-            diagnostics.add(elem.file, elem.line, "node-name", f"node name of {pkg}/{exe} is not known statically; "
-                            f"using the executable name {exe}", "note")
-        namespace = names.join("/", summary.namespace) if isinstance(summary.namespace, str) else "/"
-        config.nodes.append(LaunchNode(elem, pkg, exe, names.join(namespace, name), namespace))
-    return config

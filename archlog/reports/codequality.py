@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 
-from archlog.reports.model import Report
+from archlog.reports.report import Report
 
 SEVERITY = {"error": "major", "warning": "minor", "note": "info"}
 

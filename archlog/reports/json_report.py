@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 
 from archlog import __version__
-from archlog.reports.model import Report
+from archlog.reports.report import Report
 from archlog.rules.engine import Location
 
 FORMAT_VERSION = 1

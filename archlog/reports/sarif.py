@@ -6,7 +6,7 @@ import json
 from pathlib import Path
 
 from archlog import __version__
-from archlog.reports.model import Report
+from archlog.reports.report import Report
 from archlog.rules.engine import Location
 
 LEVELS = {"error": "error", "warning": "warning", "note": "note"}

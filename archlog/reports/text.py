@@ -7,7 +7,7 @@ from itertools import groupby
 from rich.console import Console
 from rich.markup import escape
 
-from archlog.reports.model import Report
+from archlog.reports.report import Report
 
 STYLE = {"error": "bold red", "warning": "yellow", "note": "cyan"}
 

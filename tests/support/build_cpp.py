@@ -13,7 +13,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace.index import Workspace
 
 LIBS = ["-lroscpp", "-lrosconsole", "-lroscpp_serialization", "-lrostime", "-lboost_system", "-lpthread"]
 OPTIONAL_LIBS = {"image_transport": "-limage_transport", "tf2_ros": "-ltf2_ros -ltf2",

@@ -15,7 +15,7 @@ from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch import LaunchInterpreter
 from archlog.extract.substitution import auto_value
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace.index import Workspace
 from archlog.sandbox import Sandbox
 from archlog.values import Unknown
 

@@ -15,6 +15,7 @@ entry's line and its valid models are still used.
 from __future__ import annotations
 
 import json
+from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import lru_cache
 from pathlib import Path
@@ -24,9 +25,12 @@ import yaml
 
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
+from archlog.errors import ConfigError
 from archlog.extract import bounded_yaml
+from archlog.extract.launch import Element
 from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.summary import NodeSummary, Port
+from archlog.extract.workspace.index import Workspace
 from archlog.values import ParamList, ParamRef, Value
 
 SECTIONS = {
@@ -39,7 +43,7 @@ BUILTIN_DIR = Path(__file__).resolve().parent.parent / "models"
 UNSET = "<not set>"  # the value of a `set: true` condition's parameter when the configuration lacks it
 
 
-class _LineLoader(bounded_yaml.BoundedLoader):
+class LineLoader(bounded_yaml.BoundedLoader):
     """A YAML loader (within the budget) that records each mapping's line as key '__line__'."""
 
     def construct_mapping(self, node: yaml.MappingNode, deep: bool = False) -> dict:
@@ -48,10 +52,41 @@ class _LineLoader(bounded_yaml.BoundedLoader):
         return mapping
 
 
+Summaries = dict[tuple[str, str], NodeSummary]
+
+
+@dataclass
+class NodeModels:
+    """The models of one run: shipped ones, the user's (which win over extracted summaries) and
+    external instances that models declare."""
+
+    builtin: Summaries = field(default_factory=dict)
+    user: Summaries = field(default_factory=dict)
+    externals: list[tuple[NodeSummary, str, Element]] = field(default_factory=list)
+
+
+def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: DiagnosticSink) -> NodeModels:
+    """The shipped models and those in the user's files (a missing file is a ConfigError)."""
+    models = NodeModels()
+    files = [(p, models.builtin) for p in sorted(BUILTIN_DIR.glob("*.yaml"))] + [(p, models.user) for p in paths]
+    for index, (path, target) in enumerate(files, 1):
+        if not path.is_file():
+            raise ConfigError(f"model file not found: {path}")
+        shown = workspace.display(path)
+        for summary, instance in load_models(path, shown, diagnostics):
+            if instance:
+                line = summary.ports[0].line - 1 if summary.ports else 1
+                element = Element(f"m{index:03d}{len(models.externals):03d}", shown, max(line, 1))
+                models.externals.append((summary, instance, element))
+            else:
+                target[(summary.package, summary.executable)] = summary
+    return models
+
+
 def load_models(path: Path, shown: str, diagnostics: DiagnosticSink) -> list[tuple[NodeSummary, str | None]]:
     """(summary, external instance name or None) for every valid model in the file."""
     try:
-        data = yaml.load(sandbox.read_text(path, "config"), Loader=_LineLoader)
+        data = yaml.load(sandbox.read_text(path, "config"), Loader=LineLoader)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         diagnostics.add(shown, mark.line + 1 if mark else 1, "model-yaml", f"model file does not parse: {exc}", "error")

@@ -1,24 +1,23 @@
-"""Index a workspace: packages (package.xml), their node executables, and installed packages."""
+"""Find a package's node executables: CMake targets, Python entry points and scripts, nodelet
+plugins and ROS 2 components."""
 
 from __future__ import annotations
 
 import ast
 import configparser
-import glob
 import os
 import re
-from dataclasses import dataclass, field
+from collections.abc import Callable
 from pathlib import Path
 
-from catkin_pkg.package import InvalidPackage, parse_package_string
 from lxml import etree
 
 from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cmake import commands
 from archlog.extract.files import files_under, parse_xml, walk
+from archlog.extract.workspace.cmake import commands
+from archlog.extract.workspace.packages import Executable, Package, pruned
 
-SKIP_DIRS = {"build", "devel", "install", "log", "node_modules", "__pycache__"}
 _REGISTER_NODE = re.compile(r"^[ \t]*RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)", re.M)
 _NODE_CONSTRUCTOR = re.compile(r"\b(\w+)::\1\s*\([^)]*\)\s*:\s*(?:[\w:]*::)?(?:Node|LifecycleNode)\s*\(")
 _LINK_WORDS = {"PRIVATE", "PUBLIC", "INTERFACE", "debug", "optimized", "general"}
@@ -28,76 +27,14 @@ SOURCE_SUFFIXES = {".cpp", ".cc", ".cxx", ".c++", ".C"}
 _SHEBANG = re.compile(rb"^#!.*python")
 
 
-@dataclass
-class Executable:
-    """A node executable, a nodelet plugin or a ROS 2 component (then `cls` names its C++ class,
-    and only that class is the node; a component's name is the class, as launch files name it)."""
+class ExecutableFinder:
+    """Reads package files (reporting what the sandbox refuses) and fills each package's executables."""
 
-    package: str
-    name: str
-    lang: str
-    sources: list[Path]
-    line: int = 0
-    cls: str | None = None
-    target: str = ""  # the CMake target it is built from
-
-
-@dataclass
-class Package:
-    name: str
-    path: Path
-    executables: dict[str, Executable] = field(default_factory=dict)
-    plugin_xml: list[str] = field(default_factory=list)
-    include_dirs: list[Path] = field(default_factory=list)
-    libraries: dict[str, list[Path]] = field(default_factory=dict)
-    ament: bool = False  # a ROS 2 package (built with ament_cmake or ament_python)
-    links: dict[str, list[str]] = field(default_factory=dict)  # CMake target -> libraries it links
-
-
-def share_dirs() -> list[Path]:
-    """Installed package locations, in ROS's search order after the indexed paths."""
-    dirs = [Path(p) for p in os.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
-    dirs += sorted(Path(p) for p in glob.glob("/opt/ros/*/share"))
-    dirs.append(Path("/usr/share"))
-    return dirs
-
-
-class Workspace:
-    """The packages under the indexed paths, plus lookup of installed packages for `$(find)`."""
-
-    def __init__(self, roots: list[Path], diagnostics: DiagnosticSink) -> None:
-        self.roots = [Path(os.path.realpath(r)) for r in roots]
+    def __init__(self, diagnostics: DiagnosticSink, display: Callable[[Path | str], str]) -> None:
         self.diagnostics = diagnostics
-        self.packages: dict[str, Package] = {}
-        for root in self.roots:
-            for manifest in manifests(root):
-                self._index(manifest)
+        self.display = display
 
-    def display(self, path: Path | str) -> str:
-        """A path as shown in reports: relative to the first indexed root that contains it."""
-        for shown in (os.path.realpath(path), os.path.abspath(path)):  # a symlink out: where it is
-            for root in self.roots:
-                base = root if root.is_dir() else root.parent
-                if Path(shown).is_relative_to(base):
-                    return Path(shown).relative_to(base).as_posix()
-        return str(path)
-
-    def find(self, pkg: str) -> Path | None:
-        """Where `$(find pkg)` points: the indexed paths first, then installed share dirs."""
-        if pkg in self.packages:
-            return self.packages[pkg].path
-        for share in share_dirs():
-            candidate = share / pkg
-            if (candidate / "package.xml").is_file():
-                return candidate
-        return None
-
-    def executable(self, pkg: str, exe: str) -> Executable | None:
-        package = self.packages.get(pkg)
-        return package.executables.get(exe) if package else None
-
-    # -- indexing -----------------------------------------------------------------------
-    def _read(self, path: Path, kind: str, asker: tuple[Path, int] | None = None) -> str | None:
+    def read(self, path: Path, kind: str, asker: tuple[Path, int] | None = None) -> str | None:
         """A package file's text, or None with a diagnostic when the sandbox refuses it (at the
         file:line that named it, else at the file)."""
         try:
@@ -107,29 +44,8 @@ class Workspace:
             self.diagnostics.add(self.display(where), line, exc.code, f"not read: {exc}", "warning")
             return None
 
-    def _index(self, manifest: Path) -> None:
-        folder = manifest.parent
-        text = self._read(manifest, "build")
-        if text is None:
-            return
-        try:
-            parsed = parse_package_string(text, str(manifest))
-            name = parsed.name
-            plugin_xml = [e.attributes["plugin"] for e in parsed.exports if "plugin" in e.attributes]
-            ament = any(d.name.startswith("ament_") for d in parsed.buildtool_depends) or any(
-                e.tagname == "build_type" and (e.content or "").startswith("ament_") for e in parsed.exports)
-        except (InvalidPackage, Exception) as exc:  # catkin_pkg raises several error types
-            match = re.search(r"<name>\s*([^<\s]+)\s*</name>", text)
-            self.diagnostics.add(self.display(manifest), 1, "package-xml", f"invalid package.xml: {_first_line(exc)}")
-            if not match:
-                return
-            name, plugin_xml, ament = match.group(1), [], False
-        if name in self.packages:
-            self.diagnostics.add(self.display(manifest), 1, "duplicate-package",
-                                 f"package {name} also found at {self.display(self.packages[name].path)}; using the first")
-            return
-        package = Package(name, folder, plugin_xml=plugin_xml, ament=ament)
-        self.packages[name] = package
+    def find(self, package: Package) -> None:
+        """Every executable of a package, in order of precedence (a later finding of a name wins)."""
         self._cmake_executables(package)
         self._entry_points(package)
         self._script_executables(package)
@@ -164,7 +80,7 @@ class Workspace:
         """Read one CMakeLists.txt (named at `asker`: an add_subdirectory() line); its
         add_subdirectory() folders inherit a copy of the variables."""
         cmake = folder / "CMakeLists.txt"
-        if not cmake.is_file() or depth > 8 or (text := self._read(cmake, "build", asker)) is None:
+        if not cmake.is_file() or depth > 8 or (text := self.read(cmake, "build", asker)) is None:
             return
         variables = {**variables, "CMAKE_CURRENT_SOURCE_DIR": str(folder)}
         cmds = commands(text, variables, lambda line, message: self.diagnostics.add(
@@ -275,7 +191,7 @@ class Workspace:
     def _console_scripts(self, folder: Path) -> list[str]:
         specs: list[str] = []
         setup_cfg = folder / "setup.cfg"
-        if setup_cfg.is_file() and (text := self._read(setup_cfg, "build")) is not None:
+        if setup_cfg.is_file() and (text := self.read(setup_cfg, "build")) is not None:
             parser = configparser.ConfigParser()
             try:
                 parser.read_string(text, str(setup_cfg))
@@ -285,7 +201,7 @@ class Workspace:
                 self.diagnostics.add(self.display(setup_cfg), 1, "setup-cfg", f"setup.cfg does not parse: {exc}",
                                      "warning")
         setup_py = folder / "setup.py"
-        if setup_py.is_file() and (text := self._read(setup_py, "build")) is not None:
+        if setup_py.is_file() and (text := self.read(setup_py, "build")) is not None:
             try:
                 tree = ast.parse(text)
             except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
@@ -310,26 +226,6 @@ class Workspace:
                     continue
                 if os.access(path, os.X_OK) and _is_python_script(path) or _is_main_module(path):
                     package.executables[path.name] = Executable(package.name, path.name, "python", [path])
-
-
-def manifests(root: Path) -> list[Path]:
-    """Every package.xml under a root (not below a package, nor in build folders or ignored trees)."""
-    if (root / "package.xml").is_file():
-        return [root / "package.xml"]
-    found: list[Path] = []
-    for dirpath, dirnames, filenames in walk(root, pruned):
-        if "CATKIN_IGNORE" in filenames or "COLCON_IGNORE" in filenames:
-            dirnames[:] = []
-            continue
-        if "package.xml" in filenames:
-            found.append(dirpath / "package.xml")
-            dirnames[:] = []
-    return found
-
-
-def pruned(folder: str) -> bool:
-    """Folders a workspace walk does not enter: hidden ones and build trees."""
-    return folder.startswith(".") or folder in SKIP_DIRS
 
 
 def _text(path: Path) -> str:
@@ -393,9 +289,3 @@ def _is_python_script(path: Path) -> bool:
         return bool(_SHEBANG.match(sandbox.read_bytes(path, "source")[:200]))
     except sandbox.Refused:
         return False
-
-
-def _first_line(exc: BaseException) -> str:
-    """The message of a catkin_pkg error, whose first line is often only a heading."""
-    lines = [ln.strip(" -") for ln in str(exc).strip().splitlines() if ln.strip(" -")]
-    return "; ".join(ln for ln in lines if not ln.startswith("Error(s) in package")) or type(exc).__name__

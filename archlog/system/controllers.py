@@ -12,8 +12,8 @@ import shlex
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.command_line import split_options
 from archlog.extract.launch import LaunchConfig, LaunchNode
+from archlog.system.command_line import split_options
 
 VALUED = {"--namespace", "--wait-for", "--timeout", "--shutdown-timeout"}
 

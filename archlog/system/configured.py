@@ -11,12 +11,12 @@ import yaml
 
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.command_line import split_options
 from archlog.extract.launch import LaunchConfig, LaunchNode
-from archlog.extract.models import _LineLoader
-from archlog.extract.robot_description import spawned_ports
 from archlog.extract.summary import Port
-from archlog.extract.workspace import Workspace
+from archlog.extract.workspace.index import Workspace
+from archlog.system.command_line import split_options
+from archlog.system.node_models import LineLoader
+from archlog.system.robot_description import spawned_ports
 from archlog.values import Unknown
 
 # rosbag record options that take a value (the next word is not a topic)
@@ -63,7 +63,7 @@ def _recorded(node: LaunchNode, words: list[str]) -> list[Port]:
 
 def _rviz(node: LaunchNode, config: Path, diagnostics: DiagnosticSink) -> list[Port]:
     try:
-        data = yaml.load(sandbox.read_text(config, "config"), Loader=_LineLoader)
+        data = yaml.load(sandbox.read_text(config, "config"), Loader=LineLoader)
     except sandbox.Refused as exc:
         diagnostics.add(node.elem.file, node.elem.line, exc.code,
                         f"rviz configuration not read ({exc}); its displays' topics are unknown", "warning")

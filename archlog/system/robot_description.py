@@ -16,11 +16,11 @@ from pathlib import Path
 
 from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.command_line import split_options
 from archlog.extract.launch import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import Port
-from archlog.extract.workspace import Workspace
-from archlog.extract.xacro_expand import Place, XacroFailure, expand, parse_xml
+from archlog.extract.workspace.index import Workspace
+from archlog.system.command_line import split_options
+from archlog.system.xacro_expand import Place, XacroFailure, expand, parse_xml
 from archlog.values import Unknown
 
 

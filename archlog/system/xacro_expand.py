@@ -36,8 +36,16 @@ import yaml
 
 from archlog import budget, sandbox
 from archlog.budget import BudgetExceeded
-from archlog.extract.substitution import (MATH, PURE_BUILTINS, SubstContext, SubstitutionError, bounded,
-                                          restricted_eval, spend, substitute)
+from archlog.extract.substitution import (
+    MATH,
+    PURE_BUILTINS,
+    SubstContext,
+    SubstitutionError,
+    bounded,
+    restricted_eval,
+    spend,
+    substitute,
+)
 
 _TOKEN = re.compile(r"(?P<dollars>\$\$+[{(])|(?P<expr>\$\{[^}]*\})|(?P<extension>\$\([^)]*\))"
                     r"|(?P<text>[^$]+|\$[^{($]+|\$$)")

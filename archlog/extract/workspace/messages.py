@@ -5,7 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from archlog import sandbox
-from archlog.extract.workspace import Workspace, share_dirs
+from archlog.extract.workspace.index import Workspace
+from archlog.extract.workspace.packages import share_dirs
 
 KINDS = ("msg", "srv", "action")
 

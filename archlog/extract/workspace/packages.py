@@ -1,0 +1,67 @@
+"""The workspace's packages and executables as values, and where packages are found (indexed
+folders, installed share folders)."""
+
+from __future__ import annotations
+
+import glob
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from archlog.extract.files import walk
+
+SKIP_DIRS = {"build", "devel", "install", "log", "node_modules", "__pycache__"}
+
+
+@dataclass
+class Executable:
+    """A node executable, a nodelet plugin or a ROS 2 component (then `cls` names its C++ class,
+    and only that class is the node; a component's name is the class, as launch files name it)."""
+
+    package: str
+    name: str
+    lang: str
+    sources: list[Path]
+    line: int = 0
+    cls: str | None = None
+    target: str = ""  # the CMake target it is built from
+
+
+@dataclass
+class Package:
+    name: str
+    path: Path
+    executables: dict[str, Executable] = field(default_factory=dict)
+    plugin_xml: list[str] = field(default_factory=list)
+    include_dirs: list[Path] = field(default_factory=list)
+    libraries: dict[str, list[Path]] = field(default_factory=dict)
+    ament: bool = False  # a ROS 2 package (built with ament_cmake or ament_python)
+    links: dict[str, list[str]] = field(default_factory=dict)  # CMake target -> libraries it links
+
+
+def share_dirs() -> list[Path]:
+    """Installed package locations, in ROS's search order after the indexed paths."""
+    dirs = [Path(p) for p in os.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
+    dirs += sorted(Path(p) for p in glob.glob("/opt/ros/*/share"))
+    dirs.append(Path("/usr/share"))
+    return dirs
+
+
+def manifests(root: Path) -> list[Path]:
+    """Every package.xml under a root (not below a package, nor in build folders or ignored trees)."""
+    if (root / "package.xml").is_file():
+        return [root / "package.xml"]
+    found: list[Path] = []
+    for dirpath, dirnames, filenames in walk(root, pruned):
+        if "CATKIN_IGNORE" in filenames or "COLCON_IGNORE" in filenames:
+            dirnames[:] = []
+            continue
+        if "package.xml" in filenames:
+            found.append(dirpath / "package.xml")
+            dirnames[:] = []
+    return found
+
+
+def pruned(folder: str) -> bool:
+    """Folders a workspace walk does not enter: hidden ones and build trees."""
+    return folder.startswith(".") or folder in SKIP_DIRS

@@ -1,0 +1,76 @@
+"""Link one system configuration: every node instance named and placed, with the summary it runs
+(extracted, modelled, plus the ports its command line and the files it names configure)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+from archlog import names
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.launch import LaunchConfig, LaunchNode
+from archlog.extract.summary import NodeSummary
+from archlog.extract.workspace.index import Workspace
+from archlog.extract.workspace.messages import message_files
+from archlog.system.configured import configured_ports
+from archlog.system.controllers import controller_nodes
+from archlog.system.instances import complete_instances
+from archlog.system.node_models import NodeModels, Summaries
+from archlog.system.rosrun import rosrun_config
+
+
+@dataclass
+class Instance:
+    """A node instance with its summary (None when neither source nor model was found)."""
+
+    launch: LaunchNode
+    summary: NodeSummary | None
+
+
+@dataclass
+class System:
+    """One finished system configuration: what the facts are composed from."""
+
+    workspace: Workspace
+    config: LaunchConfig
+    instances: list[Instance]
+    messages: dict[str, tuple[str, Path]]  # type name -> (msg, srv or action; definition file)
+
+
+def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, extracted: Summaries,
+         diagnostics: DiagnosticSink) -> System:
+    """The system a configuration (None: no launch file, every executable runs once) starts, from
+    the extracted summaries and the node models (the user's win over extracted ones)."""
+    summaries = {**models.builtin, **extracted, **models.user}
+    if config is None:
+        config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
+                               workspace, diagnostics)
+    complete_instances(config, summaries, diagnostics)
+    config.nodes.extend(controller_nodes(config, diagnostics))
+    for summary, instance, elem in models.externals:
+        summaries[(summary.package, summary.executable)] = summary
+        config.nodes.append(LaunchNode(elem, summary.package, summary.executable, names.join("/", instance),
+                                       names.namespace_of(names.join("/", instance))))
+    missing: set[tuple[str, str]] = set()
+    instances = [Instance(node, _summary(node, summaries, config, workspace, diagnostics, missing))
+                 for node in config.nodes]
+    return System(workspace, config, instances, message_files(workspace))
+
+
+def _summary(node: LaunchNode, summaries: Summaries, config: LaunchConfig, workspace: Workspace,
+             diagnostics: DiagnosticSink, missing: set[tuple[str, str]]) -> NodeSummary | None:
+    """What one instance runs, with its configured ports; a kind with neither is reported once."""
+    summary = summaries.get(node.kind)
+    extra = configured_ports(node, config, workspace, diagnostics)
+    if extra:
+        summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
+            NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")
+    if summary is None and node.kind not in missing:
+        kind = node.kind
+        missing.add(kind)
+        diagnostics.add(node.elem.file, node.elem.line, "no-model",
+                        f"no source or model for {'/'.join(kind)}: the ports of {node.name} are unknown; "
+                        f"describe it in a YAML file passed with --model, starting from {{package: {kind[0]}, "
+                        f"executable: {kind[1]}, publishers: [{{name: TOPIC, type: PKG/TYPE}}], "
+                        "subscribers: [], services: [], params: [{name: ~PARAM, default: VALUE}]}", "warning")
+    return summary

@@ -1,0 +1,29 @@
+"""The configuration without a launch file: every executable runs once, as `rosrun` starts it."""
+
+from __future__ import annotations
+
+from archlog import names
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.launch import Element, LaunchConfig, LaunchNode
+from archlog.extract.summary import NodeSummary
+from archlog.extract.workspace.index import Workspace
+
+
+def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Workspace,
+                  diagnostics: DiagnosticSink) -> LaunchConfig:
+    """With no launch file: every executable is one instance under its default name."""
+    config = LaunchConfig()
+    for index, ((pkg, exe), summary) in enumerate(sorted(summaries.items()), 1):
+        executable = workspace.executable(pkg, exe)
+        if executable is not None and executable.cls:
+            continue  # a nodelet runs inside a manager, not on its own
+        source = executable.sources[0] if executable and executable.sources else None
+        file = summary.name_file or (workspace.display(source) if source else pkg)
+        elem = Element(f"x{index:05d}", file, summary.name_line or 1)
+        name = summary.default_name if isinstance(summary.default_name, str) else exe
+        if summary.default_name is not None and not isinstance(summary.default_name, str):
+            diagnostics.add(elem.file, elem.line, "node-name", f"node name of {pkg}/{exe} is not known statically; "
+                            f"using the executable name {exe}", "note")
+        namespace = names.join("/", summary.namespace) if isinstance(summary.namespace, str) else "/"
+        config.nodes.append(LaunchNode(elem, pkg, exe, names.join(namespace, name), namespace))
+    return config
