@@ -38,7 +38,7 @@ class Analysis:
     policy: sandbox.Sandbox = field(default_factory=sandbox.current)  # what the run could read (reports too)
 
 
-Progress = Callable[[int, int], None]
+Progress = registry.Progress
 
 
 def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models: list[Path],

@@ -241,7 +241,8 @@ def graph(paths, launches, args, models, rule_paths, config_path, profile, near_
 @click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write JSON here instead of stdout.")
 @click.option("--write-models", type=click.Path(file_okay=False, path_type=Path),
               help="Also write an instance model per observed node into this folder.")
-@click.option("--ros2-node-info", "node_info", multiple=True, type=click.Path(exists=True, dir_okay=False, path_type=Path),
+@click.option("--ros2-node-info", "node_info", multiple=True,
+              type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="Read saved `ros2 node info NODE` output (repeatable) instead of a ROS 1 master.")
 def observe_command(master_uri, output, write_models, node_info) -> None:
     """Read the live architecture (nodes, topics with types, services) from a running master."""
@@ -358,7 +359,7 @@ def run() -> None:
         sys.exit(2)
     except SystemExit:
         raise
-    except Exception as exc:  # noqa: BLE001 - last resort: report, do not dump a traceback
+    except Exception as exc:  # last resort: report, do not dump a traceback
         if os.environ.get("ARCHLOG_DEBUG"):
             raise
         click.echo(f"archlog: internal error: {type(exc).__name__}: {exc} (set ARCHLOG_DEBUG=1 for details)", err=True)

@@ -23,8 +23,11 @@ Found = tuple[NodeSummary, list[Diagnostic]]
 class IsolatedJob(Protocol):
     """One executable's extraction, picklable, run in a worker process: its summary and diagnostics."""
 
-    package: str
-    executable: str
+    @property
+    def package(self) -> str: ...
+
+    @property
+    def executable(self) -> str: ...
 
     def __call__(self) -> Found: ...
 

@@ -169,11 +169,13 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
         flat = [o for b in bound for o in _options(b)]
         unknown = next((o for o in flat if isinstance(o, Unknown)), None)
         return unknown or (flat[0] if len(set(flat)) == 1 else Alternatives(tuple(dict.fromkeys(flat)), value.every))
+    assert isinstance(value, Concat), value  # a list-parameter name is expanded (_each) before binding
     joined = concat(*[_bind(p, node, config) for p in value.parts])
     if isinstance(joined, Concat):
         unknown = next(p for p in joined.parts if isinstance(p, Unknown))
         return Unknown(" + ".join(p.expr if isinstance(p, Unknown) else repr(p) for p in joined.parts),
                        unknown.file, unknown.line)
+    assert isinstance(joined, (str, Unknown, Alternatives))  # concat of bound parts has no reference left
     return joined
 
 

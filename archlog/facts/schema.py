@@ -124,7 +124,8 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("provenance", "unknown_value", "A value static analysis could not know, and where it was met.",
          ("value", "id", "the unknown term unknown(N) used in other relations"), ("expr", "str", "the expression"),
          ("file", "str", "file"), ("line", "int", "line")),
-    _rel("derived", "near_name", "Two names used in the system whose segment distance is below the near-miss threshold.",
+    _rel("derived", "near_name",
+         "Two names used in the system whose segment distance is below the near-miss threshold.",
          ("a", "name", "a name"), ("b", "name", "another name"),
          ("distance", "int", "segment-aware Damerau-Levenshtein distance, in thousandths")),
 )

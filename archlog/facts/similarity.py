@@ -116,7 +116,8 @@ def _dl(left: np.ndarray, right: np.ndarray, cost: np.ndarray, budget: float | N
         for j in range(1, lb + 1):
             if budget is not None and INDEL * (abs(i - j) + abs((la - i) - (lb - j))) >= budget:
                 continue
-            best = np.minimum(np.minimum(d[:, i - 1, j], d[:, i, j - 1]) + INDEL, d[:, i - 1, j - 1] + sub[:, i - 1, j - 1])
+            step = np.minimum(d[:, i - 1, j], d[:, i, j - 1]) + INDEL
+            best = np.minimum(step, d[:, i - 1, j - 1] + sub[:, i - 1, j - 1])
             if i > 1 and j > 1:
                 swapped = (left[:, i - 1] == right[:, j - 2]) & (left[:, i - 2] == right[:, j - 1])
                 best = np.where(swapped, np.minimum(best, d[:, i - 2, j - 2] + 1), best)

@@ -139,7 +139,8 @@ class Repl:
                 self.console.print(f"no finding {target} (:findings lists them)")
                 return
             finding = self.numbered[index]
-            atom = clingo.Function(finding.rule.predicate, [self.session.store.term(v) for v in finding.values.values()])
+            terms = [self.session.store.term(v) for v in finding.values.values()]
+            atom = clingo.Function(finding.rule.predicate, terms)
         else:
             try:
                 atom = clingo.parse_term(target.rstrip("."))

@@ -35,7 +35,7 @@ class Explanation:
     atom: str
     rule: str | None = None
     location: tuple[str, int, int] | None = None
-    children: list["Explanation"] = field(default_factory=list)
+    children: list[Explanation] = field(default_factory=list)
 
     def as_dict(self) -> dict:
         return {"atom": self.atom, "rule": self.rule,

@@ -63,8 +63,8 @@ def print_behavior(model: Model, console: Console) -> None:
             for call in output["calls"]:
                 how = ", ".join(_describe(t) for t in call["triggers"]) or "trigger unknown"
                 when = " and ".join(f"{g['var']}={g['value']}" for g in call["guards"])
-                console.print(f"    publishes at {call['file']}:{call['line']} {how}" + (f" when {when}" if when else ""),
-                              markup=False)
+                condition = f" when {when}" if when else ""
+                console.print(f"    publishes at {call['file']}:{call['line']} {how}{condition}", markup=False)
             if output["requires"]:
                 console.print(f"    requires {', '.join(output['requires'])}", markup=False)
 

@@ -188,7 +188,7 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
             raise fail("lists", f"list '{name}' must look like relation(column), with a column of {head.group(1)}")
         lists[str(name)] = (match.group(1), match.group(2).strip())
     try:
-        str(meta["message"]).format(**{c: "" for c in [*columns, *lists]})
+        str(meta["message"]).format(**dict.fromkeys([*columns, *lists], ""))
     except (KeyError, IndexError, ValueError, AttributeError) as exc:
         raise fail("message", f"message template uses an unknown column: {exc}") from None
     return Rule(

@@ -9,13 +9,14 @@ from pathlib import Path
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch import LaunchConfig, LaunchNode
+from archlog.extract.registry import Summaries
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.messages import message_files
 from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
-from archlog.system.node_models import NodeModels, Summaries
+from archlog.system.node_models import NodeModels
 from archlog.system.rosrun import rosrun_config
 
 

@@ -7,7 +7,8 @@ configuration) and lists its ports. A name may be a string or `{param: NAME, def
 inputs); a port with `if: {param: NAME, default: VALUE}` exists only when that parameter is true (or
 equals `equals`), and with `if: {param: NAME, set: true}` only when the configuration sets it. A
 ROS 2 port may give `qos:` as a preset's name or as `{preset: P, reliability: ..., depth: ...,
-deadline: SECONDS, ...}` (rmw's default profile when no preset is named). A model with `incomplete: REASON` lists only some ports, so its nodes count as opaque. The format's
+deadline: SECONDS, ...}` (rmw's default profile when no preset is named). A model with
+`incomplete: REASON` lists only some ports, so its nodes count as opaque. The format's
 JSON Schema is archlog/models/model.schema.json; a file that breaks it is reported at the offending
 entry's line and its valid models are still used.
 """
@@ -29,6 +30,7 @@ from archlog.errors import ConfigError
 from archlog.extract import bounded_yaml
 from archlog.extract.launch import Element
 from archlog.extract.qos import DURATIONS, Qos, seconds_text
+from archlog.extract.registry import Summaries
 from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace.index import Workspace
 from archlog.values import ParamList, ParamRef, Value
@@ -50,9 +52,6 @@ class LineLoader(bounded_yaml.BoundedLoader):
         mapping = super().construct_mapping(node, deep=deep)
         mapping["__line__"] = node.start_mark.line + 1
         return mapping
-
-
-Summaries = dict[tuple[str, str], NodeSummary]
 
 
 @dataclass

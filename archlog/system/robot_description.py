@@ -70,7 +70,7 @@ def spawned_ports(node: LaunchNode, words: list[str], config: LaunchConfig, work
     text, files = described
     try:
         doc = parse_xml(text)
-    except Exception as exc:  # noqa: BLE001 - expat raises several types for broken XML
+    except Exception as exc:  # expat raises several types for broken XML
         diagnostics.add(elem.file, elem.line, "robot-description", f"robot description is not XML: {exc}", "warning")
         return []
     return [port for plugin in doc.getElementsByTagName("plugin")

@@ -26,7 +26,7 @@ import glob
 import os
 import re
 import xml.dom.minidom
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
@@ -97,7 +97,7 @@ def expand(source: Path, mappings: dict[str, str], find: Callable[[str], Path | 
         try:
             text = xacro.process_file(str(source), mappings=dict(mappings)).toxml()
             return Expanded(text, [source, *map(Path, xacro.all_includes)], expansion.unseen)
-        except Exception as exc:  # noqa: BLE001 - xacro reports every failure as some exception
+        except Exception as exc:  # xacro reports every failure as some exception
             raise expansion.failure(exc, source) from None
 
 
@@ -119,7 +119,7 @@ class Expansion:
         helpers = {"load_yaml": self.load_yaml, "abs_filename": xacro.abs_filename_spec,
                    "dotify": xacro.YamlDictWrapper, "tokenize": _tokenize, "fatal": _fatal,
                    "arg": lambda name: xacro.substitution_args_context["arg"][name],
-                   **{name: _quiet for name in ("message", "warning", "error", "print_location")}}
+                   **dict.fromkeys(("message", "warning", "error", "print_location"), _quiet)}
         return {**PURE_BUILTINS, **MATH, "load_yaml": self.load_yaml, "abs_filename": xacro.abs_filename_spec,
                 "dotify": xacro.YamlDictWrapper, "python": _namespace(xacro, PURE_BUILTINS),
                 "math": _namespace(xacro, MATH), "xacro": _namespace(xacro, helpers)}
@@ -231,17 +231,19 @@ class Expansion:
         text = sandbox.read_text(path, "description")
         spend("characters", len(text))
         try:
-            data = yaml.load(text, Loader=self._yaml_loader())  # noqa: S506 - a SafeLoader with xacro's unit tags
+            data = yaml.load(text, Loader=self._yaml_loader())  # a SafeLoader with xacro's unit tags
         except yaml.YAMLError as exc:
             raise SubstitutionError(f"{path} is not YAML: {exc}") from None
         xacro.all_includes.append(path)
         return xacro.YamlListWrapper.wrap(bounded(data))
 
     def _yaml_loader(self) -> type[yaml.SafeLoader]:
-        loader = type("XacroYamlLoader", (yaml.SafeLoader,), {})
+        class XacroYamlLoader(yaml.SafeLoader):
+            """A SafeLoader with xacro's unit tags (degrees, radians...)."""
+
         for unit in self.xacro.ConstructUnits:
-            loader.add_constructor(unit.value.tag, unit.constructor)
-        return loader
+            XacroYamlLoader.add_constructor(unit.value.tag, unit.constructor)
+        return XacroYamlLoader
 
     def parse(self, _inp: object, filename: str | None = None) -> xml.dom.minidom.Document:
         """xacro's `parse` of a file (the only way xacro calls it): include nesting checked against
@@ -300,11 +302,14 @@ class Expansion:
 
     def replace_node(self, original: Callable[..., None]) -> Callable[..., None]:
         """xacro's `replace_node`, the sibling scans of its insertions and removal spent as steps."""
-        def counted(node: xml.dom.minidom.Node, by: object, content_only: bool = False) -> None:
+        def counted(node: xml.dom.minidom.Node, by: xml.dom.minidom.Node | list[xml.dom.minidom.Node] | None,
+                    content_only: bool = False) -> None:
             docs = [] if by is None else by if isinstance(by, list) else [by]
             moved = sum(len(doc.childNodes) if content_only else 1 for doc in docs)
+            parent = node.parentNode
+            assert parent is not None  # xacro replaces only nodes inside a document
             try:
-                spend("steps", (moved + 1) * len(node.parentNode.childNodes) // SIBLINGS_PER_STEP)
+                spend("steps", (moved + 1) * len(parent.childNodes) // SIBLINGS_PER_STEP)
             except BudgetExceeded:
                 self.needle = self.needle or f"<{node.nodeName}"
                 raise
@@ -331,7 +336,7 @@ def _cause(exc: BaseException) -> BaseException:
     return exc
 
 
-def _namespace(xacro: object, names: dict[str, object]) -> object:
+def _namespace(xacro: object, names: Mapping[str, object]) -> object:
     space = xacro.NameSpace()  # type: ignore[attr-defined]
     space.update(names)
     return space

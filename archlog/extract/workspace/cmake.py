@@ -8,7 +8,7 @@ and variable, so self-doubling variables, huge ranges and call fan-out stop at a
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from archlog import budget
@@ -103,7 +103,7 @@ def _parse(text: str) -> list[_Raw]:
     return raws
 
 
-def _run(raws: list[_Raw] | tuple[_Raw, ...], variables: dict[str, str], out: list[Command],
+def _run(raws: Sequence[_Raw], variables: dict[str, str], out: list[Command],
          functions: dict[str, _Function], call_line: int | None, depth: int = 0) -> None:
     """Interpret commands; `call_line`: the line of the function call they run for."""
     i = 0
@@ -114,7 +114,7 @@ def _run(raws: list[_Raw] | tuple[_Raw, ...], variables: dict[str, str], out: li
         raise _Stopped(call_line or raws[i].line, exc) from None
 
 
-def _step(raws: list[_Raw] | tuple[_Raw, ...], i: int, variables: dict[str, str], out: list[Command],
+def _step(raws: Sequence[_Raw], i: int, variables: dict[str, str], out: list[Command],
           functions: dict[str, _Function], call_line: int | None, depth: int) -> int:
     """Run the command at `i` (a whole block for function, macro and foreach); the index after it."""
     budget.spend("steps")
@@ -142,14 +142,14 @@ def _call(function: _Function, cmd: Command, variables: dict[str, str], out: lis
     """Run a function (in a copy of the variables) or a macro (in the caller's) with its arguments."""
     scope = variables if function.macro else dict(variables)
     arguments = list(cmd.args)
-    scope.update({name: value for name, value in zip(function.params, arguments)})
+    scope.update(dict(zip(function.params, arguments)))
     scope.update({f"ARGV{n}": value for n, value in enumerate(arguments)})
     scope.update({"ARGN": ";".join(arguments[len(function.params):]), "ARGV": ";".join(arguments),
                   "ARGC": str(len(arguments))})
     _run(function.body, scope, out, functions, cmd.line, depth + 1)
 
 
-def _matching_end(raws: list[_Raw], start: int) -> int:
+def _matching_end(raws: Sequence[_Raw], start: int) -> int:
     opener = raws[start].name
     depth = 0
     for j in range(start, len(raws)):
@@ -160,7 +160,7 @@ def _matching_end(raws: list[_Raw], start: int) -> int:
     return len(raws) - 1
 
 
-def _loop(head: _Raw, body: list[_Raw], variables: dict[str, str], out: list[Command],
+def _loop(head: _Raw, body: Sequence[_Raw], variables: dict[str, str], out: list[Command],
           functions: dict[str, _Function], call_line: int | None, depth: int) -> None:
     args = _expand_args(head.args, variables)
     if not args:

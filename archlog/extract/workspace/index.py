@@ -66,8 +66,9 @@ class Workspace:
                 return
             name, plugin_xml, ament = match.group(1), [], False
         if name in self.packages:
+            other = self.display(self.packages[name].path)
             self.diagnostics.add(self.display(manifest), 1, "duplicate-package",
-                                 f"package {name} also found at {self.display(self.packages[name].path)}; using the first")
+                                 f"package {name} also found at {other}; using the first")
             return
         package = Package(name, folder, plugin_xml=plugin_xml, ament=ament)
         self.packages[name] = package
