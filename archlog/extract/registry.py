@@ -4,6 +4,7 @@ summary, and a run extracts every executable through the kind its language names
 from __future__ import annotations
 
 import os
+import resource
 from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
@@ -92,6 +93,17 @@ def extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnosti
     return summaries
 
 
+WORKER_MEMORY = 4 << 30
+"""Address space one worker may use (a native parser has no budget of its own): past it the
+worker's allocations fail, and its executable is reported as a crash."""
+
+
+def _cap_memory() -> None:
+    soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    cap = WORKER_MEMORY if soft == resource.RLIM_INFINITY else min(soft, WORKER_MEMORY)
+    resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
+
+
 def run_isolated(jobs: list[IsolatedJob], finished: Callable[[int], None]
                  ) -> list[tuple[IsolatedJob, Found | None]]:
     """Run jobs in worker processes so that a crash in a native parser costs one executable, not the
@@ -99,7 +111,7 @@ def run_isolated(jobs: list[IsolatedJob], finished: Callable[[int], None]
     if not jobs:
         return []
     results: dict[int, Found | None] = {}
-    with ProcessPoolExecutor(max_workers=min(len(jobs), os.cpu_count() or 1)) as pool:
+    with ProcessPoolExecutor(max_workers=min(len(jobs), os.cpu_count() or 1), initializer=_cap_memory) as pool:
         futures = {k: pool.submit(job) for k, job in enumerate(jobs)}
         for k, future in futures.items():
             try:
@@ -108,7 +120,7 @@ def run_isolated(jobs: list[IsolatedJob], finished: Callable[[int], None]
             except BrokenProcessPool:
                 continue  # retried below, one job per process
     for k in [k for k in range(len(jobs)) if k not in results]:
-        with ProcessPoolExecutor(max_workers=1) as pool:
+        with ProcessPoolExecutor(max_workers=1, initializer=_cap_memory) as pool:
             try:
                 results[k] = pool.submit(jobs[k]).result()
             except BrokenProcessPool:
