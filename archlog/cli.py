@@ -141,8 +141,8 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
         findings = [f for f in findings if f.fingerprint not in known]
     if write_baseline:
         write_baseline_file(findings, write_baseline)
-    report = Report(findings, analysis.diagnostics.items + unused, config.adjust(ruleset.rules), root,
-                    Report.node_origins(analysis.store))
+    report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused), config.adjust(ruleset.rules),
+                    root, Report.node_origins(analysis.store))
     if fmt == "text" and output:
         with output.open("w", encoding="utf-8") as fh, sandbox.active(analysis.policy):
             print_text(report, Console(file=fh, no_color=True, soft_wrap=True), quiet)
@@ -167,10 +167,10 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
 def facts(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
           directory) -> None:
     """Export the recovered facts, one file per relation, into DIRECTORY (the last argument)."""
-    analysis, _ruleset, _config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                        near_miss_threshold, env)
+    analysis, _ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
+                                       near_miss_threshold, env)
     written = analysis.store.export(directory, fmt)
-    for diag in analysis.diagnostics.items:
+    for diag in config.diagnostics(analysis.diagnostics.items):
         click.echo(str(diag), err=True)
     click.echo(f"wrote {len(written)} relations to {directory}", err=True)
 

@@ -2,10 +2,11 @@
 
     rules = ["team_rules/"]           # extra rule files or folders
     select = ["AL1", "topics"]        # rule ids (or id prefixes) and tags to run; default: all
-    ignore = ["AL104"]                # ids, prefixes or tags to leave out
+    ignore = ["AL104", "launch-process"]  # ids, prefixes, tags, diagnostic codes or code prefixes
+                                      # ("launch-") to leave out (docs/diagnostics.md lists codes)
     near-miss-threshold = 0.5
     [severity]
-    AL401 = "error"
+    AL401 = "error"                   # a rule's or a diagnostic code's severity
     [[suppress]]                      # accepted findings: rule, node, topic, service globs
     rule = "AL102"
     topic = "/debug/*"
@@ -30,7 +31,7 @@ from pathlib import Path
 
 from archlog import sandbox
 from archlog.budget import LIMITS
-from archlog.diagnostics import SEVERITIES
+from archlog.diagnostics import CODES, SEVERITIES, Diagnostic
 from archlog.errors import ConfigError
 from archlog.rules.ruleset import Rule
 
@@ -60,12 +61,27 @@ class Config:
         keys = {rule.id, rule.name, *rule.tags}
         def matches(patterns: list[str]) -> bool:
             return any(p in keys or rule.id.startswith(p) for p in patterns)
-        return (not self.select or matches(self.select)) and not matches(self.ignore) and \
+        select = [p for p in self.select if not _is_code(p)]
+        return (not select or matches(select)) and not matches(self.ignore) and \
             (not self.precision or rule.precision in self.precision)
+
+    def diagnostics(self, items: list[Diagnostic]) -> list[Diagnostic]:
+        """The diagnostics shown: `select` and `ignore` take diagnostic codes or code prefixes
+        (`launch-`) as they take rule ids, and `[severity]` overrides a code's severity."""
+        select = [p for p in self.select if _is_code(p)]
+        def matches(code: str, patterns: list[str]) -> bool:
+            return any(code == p or (p.endswith("-") and code.startswith(p)) for p in patterns)
+        return [replace(d, severity=self.severity.get(d.code, d.severity)) for d in items
+                if (not select or matches(d.code, select)) and not matches(d.code, self.ignore)]
 
     def adjust(self, rules: list[Rule]) -> list[Rule]:
         """The rules that apply, with severity overrides."""
         return [replace(r, severity=self.severity.get(r.id, r.severity)) for r in rules if self.applies(r)]
+
+
+def _is_code(pattern: str) -> bool:
+    """Whether a select/ignore pattern names a diagnostic code (or a prefix of codes), not a rule."""
+    return any(code == pattern or (pattern.endswith("-") and code.startswith(pattern)) for code in CODES)
 
 
 def find_config(paths: list[Path]) -> Path | None:

@@ -34,3 +34,19 @@ def test_registry_entries_are_complete() -> None:
     for code, entry in CODES.items():
         assert entry.severity in SEVERITIES, code
         assert entry.meaning.endswith(".") and entry.help, code
+
+
+def test_codes_are_selected_ignored_and_rated_in_the_configuration(tmp_path: Path) -> None:
+    from archlog.config import load_config
+
+    items = [Diagnostic("a.launch", 1, "launch-process", "x", "note"), Diagnostic("a.launch", 2, "launch-tag", "y"),
+             Diagnostic("b.py", 3, "python2", "z", "note")]
+    (tmp_path / "archlog.toml").write_text('select = ["AL1"]\nignore = ["launch-process"]\n'
+                                           '[severity]\npython2 = "error"\n')
+    config = load_config(tmp_path / "archlog.toml", None)
+    shown = [(d.code, d.severity) for d in config.diagnostics(items)]
+    assert shown == [("launch-tag", "warning"), ("python2", "error")]
+    assert config.select == ["AL1"]  # a rule pattern selects rules only: every diagnostic is still shown
+    (tmp_path / "archlog.toml").write_text('select = ["launch-"]\n')
+    assert [d.code for d in load_config(tmp_path / "archlog.toml", None).diagnostics(items)] == \
+        ["launch-process", "launch-tag"]
