@@ -43,11 +43,11 @@ class Architecture:
                            for k, v in self.__dict__.items()}, indent=1) + "\n"
 
     @classmethod
-    def merged(cls, parts: list["Architecture"]) -> "Architecture":
+    def merged(cls, parts: list[Architecture]) -> Architecture:
         return cls(*(frozenset().union(*(getattr(a, k) for a in parts)) for k in KINDS))
 
     @classmethod
-    def from_json(cls, text: str) -> "Architecture":
+    def from_json(cls, text: str) -> Architecture:
         data = json.loads(text)
         return cls(frozenset(data["nodes"]), *(frozenset(map(tuple, data[k])) for k in KINDS[1:]))
 
@@ -58,7 +58,7 @@ class Architecture:
 
 
 class _Transport(xmlrpc.client.Transport):
-    def make_connection(self, host):  # noqa: ANN001, ANN202 - xmlrpc's signature
+    def make_connection(self, host):
         connection = super().make_connection(host)
         connection.timeout = 5.0
         return connection
@@ -68,7 +68,7 @@ def master(uri: str) -> xmlrpc.client.ServerProxy:
     return xmlrpc.client.ServerProxy(uri, transport=_Transport())
 
 
-def call(method, *args):  # noqa: ANN001, ANN201 - any master API method
+def call(method, *args):
     code, message, value = method(CALLER_ID, *args)
     if code != 1:
         raise RuntimeError(f"master call failed: {message}")

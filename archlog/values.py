@@ -25,7 +25,7 @@ class ParamRef:
     """A value read from a ROS parameter (`name` as written in the source) with its default."""
 
     name: str
-    default: "Value"
+    default: Value
     handle_ns: str = ""
     file: str = ""
     line: int = 0
@@ -46,7 +46,7 @@ class ParamList:
 class Concat:
     """A string built from parts at least one of which is not a literal."""
 
-    parts: tuple["Value", ...]
+    parts: tuple[Value, ...]
 
 
 @dataclass(frozen=True)
@@ -54,7 +54,7 @@ class Alternatives:
     """Several possible values: one of them at run time (a ternary, if/else assignments), or, with
     `every`, all of them (a loop over a literal list: each iteration makes its own port)."""
 
-    options: tuple["Value", ...]
+    options: tuple[Value, ...]
     every: bool = False
 
 
@@ -62,7 +62,7 @@ Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives
 MAX_ALTERNATIVES = 16
 
 
-def alternatives(options: list["Value"], every: bool, at: Unknown) -> "Value":
+def alternatives(options: list[Value], every: bool, at: Unknown) -> Value:
     """Alternatives of distinct values; one value stands alone; too many or unknown ones: `at`."""
     distinct = list(dict.fromkeys(options))
     if any(isinstance(o, Unknown) for o in distinct) or not distinct or len(distinct) > MAX_ALTERNATIVES:
