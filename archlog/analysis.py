@@ -20,7 +20,7 @@ from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, Lau
 from archlog.extract.messages import message_files
 from archlog.extract.msg_headers import generated_headers
 from archlog.extract.models import BUILTIN_DIR, load_models
-from archlog.extract.python import extract_python
+from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace import Workspace, share_dirs
 from archlog.facts.compose import compose, rosrun_config

@@ -13,7 +13,7 @@ import pytest
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cpp import CppEnvironment, extract_cpp
-from archlog.extract.python import extract_python
+from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace import registered_components
 from conftest import ROOT
