@@ -69,6 +69,7 @@ class ValueFolder(FileIndex):
         return self.unknown(expr)
 
     def name_value(self, expr: ast.Name, depth: int, scope: Function | None) -> Value:
+        """A name: a local assignment, a parameter (from its call sites), or a module assignment."""
         if scope is not None:
             if expr.id in scope.assigns:
                 return self.single(scope.assigns[expr.id], expr, depth, scope)
@@ -99,6 +100,7 @@ class ValueFolder(FileIndex):
 
 
     def percent(self, expr: ast.BinOp, depth: int, scope: Function | None) -> Value:
+        """`'template' % items` with %s, %d and %r."""
         template = expr.left.value if isinstance(expr.left, ast.Constant) else None
         items = expr.right.elts if isinstance(expr.right, ast.Tuple) else [expr.right]
         pieces = re.split(r"%[sdr]", template) if isinstance(template, str) else []
@@ -110,6 +112,7 @@ class ValueFolder(FileIndex):
         return concat(*parts)
 
     def call_value(self, expr: ast.Call, depth: int, scope: Function | None) -> Value:
+        """`.format()`, parameter reads (rospy and rclpy), and calls that pass a value through."""
         func = self.qualified(expr.func)
         if isinstance(expr.func, ast.Attribute) and expr.func.attr == "format" and \
                 isinstance(expr.func.value, ast.Constant) and isinstance(expr.func.value.value, str):

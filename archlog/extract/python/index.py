@@ -93,6 +93,7 @@ class FileIndex:
         return [call for _order, call in heapq.merge(self.calls.get((cls, name), []), via_self)]
 
     def _function(self, node: ast.FunctionDef | ast.AsyncFunctionDef, cls: str | None) -> None:
+        """Index one function or method with its local assignments."""
         function = Function(node, cls)
         self.class_of[id(node)] = cls
         record_assigns(node.body, function.assigns, nested=True)

@@ -61,7 +61,6 @@ SOURCE_CAP = 1 << 20
 """Largest rospy/rclpy source read (bytes): reading costs ~5 s a MiB, and no node is near it."""
 
 
-
 def extract_python(path: Path, package: str, executable: str, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
     """Read one rospy/rclpy script; never imports or runs it."""
     summary = NodeSummary(package, executable, "python")
@@ -85,6 +84,7 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
 
 
 def _read(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
+    """Parse (repairing Python 2), extract the ports, then recover the behavior of publish calls."""
     tree, repaired, dropped = parse_tolerant(source)
     lines = source.splitlines()
     if tree is not None and len(repaired) * 2 > len([ln for ln in lines if ln.strip()]):
@@ -119,7 +119,6 @@ def _without_untyped_duplicates(ports: list[Port]) -> list[Port]:
     return [p for p in ports if not (isinstance(p.type, Unknown) and (p.kind, p.name) in typed)]
 
 
-
 class NodeReader(ValueFolder):
     """Walks a module's scopes in order and reads the ROS calls in each into the summary."""
 
@@ -130,16 +129,19 @@ class NodeReader(ValueFolder):
         self.notes: list[tuple[int, str]] = []
 
     def run(self) -> None:
+        """Read the ROS calls of every scope, in source order."""
         for stmt in self.tree.body:
             self._visit(stmt)
 
     def is_rclpy_node_class(self, cls: str | None, depth: int = 0) -> bool:
+        """A class deriving (in the file, up to 5 levels) from an rclpy Node."""
         bases = self.class_bases.get(cls or "", [])
         return any(b in ("rclpy.node.Node", "rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode")
                    or (depth < 5 and self.is_rclpy_node_class(b, depth + 1)) for b in bases)
 
     # -- traversal --------------------------------------------------------------------------
     def _visit(self, node: ast.AST) -> None:
+        """Visit a node in its function scope (methods in their class)."""
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
             outer = self.scope
             cls = outer.cls if outer else self.class_of.get(id(node))
@@ -165,6 +167,7 @@ class NodeReader(ValueFolder):
             self._visit(sub)
 
     def message_type(self, expr: ast.expr | None, ros2: bool) -> Value:
+        """`pkg/Type` (ROS 1) or `pkg/msg/Type` (ROS 2) from `pkg.msg.Type`."""
         name = self.qualified(expr) if expr is not None else None
         parts = name.split(".") if name else []
         if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
@@ -178,6 +181,7 @@ class NodeReader(ValueFolder):
 
     # -- ROS calls --------------------------------------------------------------------------
     def _call(self, call: ast.Call) -> None:
+        """One call: a rospy, rclpy, tf or actionlib API call adds its port or names the node."""
         func = self.qualified(call.func)
         method = call.func.attr if isinstance(call.func, ast.Attribute) else None
         if func == "rospy.init_node":
@@ -231,6 +235,7 @@ class NodeReader(ValueFolder):
         return uses_rclpy and method in _RCLPY_ONLY
 
     def rclpy_call(self, call: ast.Call, method: str) -> None:
+        """An rclpy Node method: publishers, subscriptions, services, parameters, timers."""
         if method in _RCLPY_METHODS:
             kind, type_at, name_at = _RCLPY_METHODS[method]
             name_kw = "topic" if kind in ("publisher", "subscriber") else "srv_name"
@@ -284,6 +289,7 @@ class NodeReader(ValueFolder):
         return value
 
     def set_name(self, call: ast.Call, name: Value) -> None:
+        """The node's name (a note when the file creates several nodes)."""
         if self.summary.default_name is not None and self.summary.default_name != name:
             self.notes.append((call.lineno, f"this file creates several nodes ({self.summary.default_name}, {name}); "
                                             "archlog reads them as one node named after the last"))

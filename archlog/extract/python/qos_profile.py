@@ -25,7 +25,7 @@ class QosReader:
         return self.qos_value(expr, 0, scope, expr.lineno).facts() if expr is not None else ()
 
     def qos_value(self, expr: ast.expr, depth: int, scope: Function | None, line: int) -> Qos:
-        """The profile an expression gives, read in `scope` (None: module level)."""
+        """The profile an expression gives, read in `scope`."""
         text = ast.unparse(expr)
         if depth > 8:
             return Qos.unknown(text)

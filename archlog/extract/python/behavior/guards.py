@@ -44,6 +44,7 @@ class Guards(Resolver):
         """What each state variable holds (flag, container, optional, constant), from its
         assignments and tests, to read `if self.x:` in its own vocabulary."""
         def add(expr: ast.AST, frame: Frame, kind: str | None, written: bool = False) -> None:
+            """Record a kind (and a write inside a function) for the state variable an expression is."""
             var = self.state_var(expr, frame)
             if var is not None:
                 if kind:
@@ -117,6 +118,7 @@ class Guards(Resolver):
         return None
 
     def is_parameter(self, name: str, frame: Frame) -> bool:
+        """A parameter of the function the frame runs."""
         return frame.func is not None and name in parameters_of(frame.func)
 
     def write_value(self, var: str, expr: ast.expr | None, frame: Frame) -> str:
@@ -161,9 +163,11 @@ class Guards(Resolver):
         return [self.guard(var, self.truthy(var, truth), test)] if var else []
 
     def guard(self, var: str, value: str, at: ast.AST) -> Guard:
+        """A guard on `var` at the line of `at`."""
         return Guard(var, value, self.file, getattr(at, "lineno", 0))
 
     def comparison(self, subject: ast.expr, op: ast.cmpop, other: ast.expr, truth: bool, frame: Frame) -> list[Guard]:
+        """The guards of `subject op other`: len(x) against a number, `is None`, `==` a constant."""
         if isinstance(subject, ast.Call) and isinstance(subject.func, ast.Name) and subject.func.id == "len" \
                 and len(subject.args) == 1 and (var := self.state_var(subject.args[0], frame)) and \
                 isinstance(other, ast.Constant) and type(other.value) is int and 0 <= other.value <= 64 and \

@@ -29,6 +29,7 @@ class Frame:
         return self.__dict__["_hash"]
 
     def bound(self, name: str) -> tuple[ast.expr, Frame] | None:
+        """The expression bound to a parameter at the call, with the caller's frame."""
         return next(((e, f) for n, e, f in self.args if n == name), None)
 
 
@@ -55,6 +56,7 @@ class Context:
     stack: tuple[int, ...] = ()
 
     def guarded(self, guards: list[Guard]) -> Context:
+        """The path with further guards (those not on it yet)."""
         known = {(g.var, g.value) for g in self.guards}
         new = {(g.var, g.value): g for g in guards if (g.var, g.value) not in known}
         return replace(self, guards=self.guards + tuple(new.values())) if new else self

@@ -172,6 +172,7 @@ class Resolver(Scopes):
         return any(base == "threading.Thread" for c in self.lineage(cls) for base in self.ex.class_bases.get(c, []))
 
     def owner_class(self, frame: Frame) -> str | None:
+        """The class whose method the frame runs (through closures)."""
         while frame is not None and frame.func is not None:
             if id(frame.func) in self.owner:
                 return self.owner[id(frame.func)]
@@ -186,6 +187,7 @@ class Resolver(Scopes):
 
     def bind_arguments(self, target: Target, passed: list[ast.expr], keywords: list[ast.keyword], frame: Frame,
                        extra: list[tuple[ast.expr, Frame]] | None = None) -> Frame:
+        """The callee's frame from positional and keyword arguments (up to a *starred one)."""
         params = parameters_of(target.func, positional=True)
         if target.method and params:
             params = params[1:]

@@ -50,7 +50,6 @@ class Scopes:
                              and isinstance(n.func, ast.Name) and n.func.id in ex.class_attrs}
         self.kinds: dict[str, set[str]] = {}
 
-    # -- scopes ---------------------------------------------------------------------------
     def _scan(self, nodes: list[ast.AST], frame: Frame) -> None:
         """Every function, method and lambda with its frame when not called from anywhere."""
         nested: dict[str, ast.FunctionDef | ast.AsyncFunctionDef] = {}
@@ -69,6 +68,7 @@ class Scopes:
             self.nested[id(frame.func)] = nested
 
     def _add_scope(self, frame: Frame) -> None:
+        """One function's names, assignments and frame; then the functions nested in it."""
         func = frame.func
         assert func is not None
         nodes = in_scope([func.body] if isinstance(func, ast.Lambda) else func.body)
@@ -119,6 +119,7 @@ class Scopes:
         return found
 
     def descendants(self, cls: str) -> list[str]:
+        """The subclasses of a class defined in the file (all levels)."""
         found = [cls]
         for name in found:
             found += [s for s in self.subclasses.get(name, []) if s not in found]

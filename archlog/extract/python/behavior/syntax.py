@@ -17,6 +17,7 @@ SCALAR_CALLS = {"bool", "int", "float", "str", "len", "abs", "min", "max", "roun
 
 
 def parameters_of(func: FunctionNode, positional: bool = False) -> list[str]:
+    """A function's parameter names (only the positional ones if `positional`)."""
     args = func.args
     names = [a.arg for a in args.posonlyargs + args.args]
     if not positional:
@@ -25,6 +26,7 @@ def parameters_of(func: FunctionNode, positional: bool = False) -> list[str]:
 
 
 def defaults_of(func: FunctionNode) -> dict[str, ast.expr]:
+    """A function's parameter defaults by name."""
     args = func.args
     positional = args.posonlyargs + args.args
     found = {a.arg: d for a, d in zip(positional[len(positional) - len(args.defaults):], args.defaults)}
@@ -33,6 +35,7 @@ def defaults_of(func: FunctionNode) -> dict[str, ast.expr]:
 
 
 def annotations_of(func: FunctionNode) -> dict[str, ast.expr]:
+    """A function's parameter annotations by name."""
     if isinstance(func, ast.Lambda):
         return {}
     args = func.args
@@ -79,6 +82,7 @@ def shape_of(value: ast.expr, qualified: Callable[[ast.expr], str | None]) -> st
 
 
 def callee_name(call: ast.Call) -> str:
+    """The last name of a call's callee (`f` of `a.b.f()`)."""
     func = call.func
     return func.id if isinstance(func, ast.Name) else func.attr if isinstance(func, ast.Attribute) else ""
 
@@ -121,4 +125,5 @@ def breaks(body: list[ast.stmt]) -> bool:
 
 
 def is_docstring(stmt: ast.stmt) -> bool:
+    """A string literal statement."""
     return isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Constant) and isinstance(stmt.value.value, str)

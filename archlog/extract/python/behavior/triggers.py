@@ -64,6 +64,7 @@ class Behavior(Walk):
     """One file: its scopes and state variables, then the walk from every entry."""
 
     def run(self) -> None:
+        """Register callbacks, walk module code, then main and constructors, then the rest."""
         for frame, nodes in [(self.module, self.module_nodes), *self.scopes]:
             for node in nodes:
                 if isinstance(node, ast.Call):
@@ -129,6 +130,7 @@ class Behavior(Walk):
 
     def start(self, callback: ast.expr, frame: Frame, trigger: str, site: Site,
               extra: list[tuple[ast.expr, Frame]]) -> None:
+        """Walk each function a callback expression may be, from its registration."""
         for target in self.callables(callback, frame):
             self.enter(self.bind(target, None, frame, extra), Context(trigger, site))
 

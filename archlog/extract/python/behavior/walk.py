@@ -60,6 +60,7 @@ class Walk(Guards):
         return ctx
 
     def statement(self, stmt: ast.stmt, frame: Frame, ctx: Context) -> Context | None:
+        """One statement; returns the path state after it (None when it always leaves)."""
         if isinstance(stmt, ast.If):
             self.expression(stmt.test, frame, ctx)
             yes = self.walk(stmt.body, frame, ctx.guarded(self.condition(stmt.test, True, frame)))
@@ -153,6 +154,7 @@ class Walk(Guards):
             self.write(var, self.write_value(var, value, frame), ctx, line)
 
     def write(self, var: str, value: str, ctx: Context, line: int) -> None:
+        """Record a state write (its source when a callback or timer runs it)."""
         source = ctx.source if ctx.trigger in ("timer", "callback") else None
         self.writes[StateWrite(var, value, source, self.file, line)] = None
 
@@ -164,6 +166,7 @@ class Walk(Guards):
             self.call(call, frame, ctx)
 
     def call(self, call: ast.Call, frame: Frame, ctx: Context) -> None:
+        """A call: container writes, publish calls, and the functions of the file it runs."""
         func = call.func
         name = self.ex.qualified(func) or ""
         # taking from a container never fills it
@@ -192,6 +195,7 @@ class Walk(Guards):
         return sites or ([None] if func.attr == "publish" else [])
 
     def publish(self, call: ast.Call, ctx: Context, sites: list[Site | None]) -> None:
+        """Record a publish call for each publisher it may use, with the path's trigger."""
         trigger, source, period = ctx.trigger, ctx.source, None
         if trigger not in ("timer", "callback") and ctx.loop is not None:
             trigger, source, period = "loop", None, ctx.loop[0]
