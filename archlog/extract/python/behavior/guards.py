@@ -34,8 +34,8 @@ _FLIPPED = {ast.Eq: ast.Eq, ast.NotEq: ast.NotEq, ast.Is: ast.Is, ast.IsNot: ast
 class Guards(Resolver):
     """The kinds of state variables, the guards of tests, and the values of state writes."""
 
-    def __init__(self, ex: ValueFolder, ports: list[Port]) -> None:
-        super().__init__(ex, ports)
+    def __init__(self, folder: ValueFolder, ports: list[Port]) -> None:
+        super().__init__(folder, ports)
         self.kinds: dict[str, set[str]] = {}
         self.mutable: set[str] = set()  # state assigned inside functions
         self._classify()
@@ -97,7 +97,7 @@ class Guards(Resolver):
     def constant(self, expr: ast.expr, frame: Frame) -> str | None:
         """The text of a constant: a literal, a module or class constant, an enum-like dotted name."""
         if isinstance(expr, ast.Constant):
-            value = self.ex.value(expr)
+            value = self.folder.value(expr)
             return value if isinstance(value, str) else None
         if isinstance(expr, ast.UnaryOp) and isinstance(expr.op, ast.USub) and isinstance(expr.operand, ast.Constant) \
                 and isinstance(expr.operand.value, (int, float)):
@@ -106,14 +106,14 @@ class Guards(Resolver):
             return None
         if isinstance(expr, ast.Name) and self.is_parameter(expr.id, frame):
             return None
-        value = self.ex.value(expr, scope=self.function(frame))
+        value = self.folder.value(expr, scope=self.function(frame))
         if isinstance(value, str):
             return value
         root: ast.expr = expr
         while isinstance(root, ast.Attribute):
             root = root.value
         if isinstance(expr, ast.Attribute) and isinstance(root, ast.Name) and \
-                (root.id in self.ex.aliases or root.id in self.ex.class_attrs):
+                (root.id in self.folder.aliases or root.id in self.folder.class_attrs):
             return ast.unparse(expr)
         return None
 
@@ -131,10 +131,10 @@ class Guards(Resolver):
         text = self.constant(expr, frame)
         if text is not None:
             return text
-        if isinstance(expr, ast.Call) and isinstance(self.ex.value(expr, scope=self.function(frame)), ParamRef):
+        if isinstance(expr, ast.Call) and isinstance(self.folder.value(expr, scope=self.function(frame)), ParamRef):
             return "?"  # a parameter: the configuration decides
         kinds = self.kinds.get(var, set())
-        shape = shape_of(expr, self.ex.qualified)
+        shape = shape_of(expr, self.folder.qualified)
         if shape in ("empty", "nonempty"):
             return shape if "container" in kinds or "optional" not in kinds else "set"
         if shape == "object" and not kinds & {"flag", "container", "constant"}:

@@ -17,8 +17,8 @@ from archlog.extract.summary import Port, Site
 class Resolver(Scopes):
     """What expressions hold and which functions calls run, memoised per expression and frame."""
 
-    def __init__(self, ex: ValueFolder, ports: list[Port]) -> None:
-        super().__init__(ex, ports)
+    def __init__(self, folder: ValueFolder, ports: list[Port]) -> None:
+        super().__init__(folder, ports)
         self.arguments: dict[tuple[int, str], list[tuple[ast.expr, Frame]]] = {}
         self.resolved: dict[tuple[str, int, Frame], list] = {}  # memo of origins, callables, classes_of
 
@@ -49,7 +49,7 @@ class Resolver(Scopes):
         if key not in self.arguments:
             function = self.functions.get(id(func))
             self.arguments[key] = [(e, self.canonical(caller)) for e, caller in
-                                   (self.ex.arguments(function, name) if function else []) if e is not None]
+                                   (self.folder.arguments(function, name) if function else []) if e is not None]
         return self.arguments[key]
 
     def attribute_values(self, expr: ast.Attribute, frame: Frame, depth: int) -> list[tuple[ast.expr, Frame]]:
@@ -57,9 +57,9 @@ class Resolver(Scopes):
         found: list[tuple[ast.expr, Frame]] = []
         for cls in self.classes_of(expr.value, frame, depth):
             for owner in self.lineage(cls) + self.descendants(cls):
-                for value in self.ex.class_attrs.get(owner, {}).get(expr.attr, []):
+                for value in self.folder.class_attrs.get(owner, {}).get(expr.attr, []):
                     if isinstance(value, ast.expr):
-                        found.append((value, self.canonical(self.ex.attr_scope.get(id(value)), cls)))
+                        found.append((value, self.canonical(self.folder.attr_scope.get(id(value)), cls)))
         return found
 
     def memo(self, compute: Callable[[ast.expr, Frame, int], list], expr: ast.expr, frame: Frame,
@@ -81,11 +81,11 @@ class Resolver(Scopes):
         if isinstance(expr, ast.Name) and expr.id == "self" and frame.cls:
             return [frame.cls]
         found = list(dict.fromkeys(c.func.id for c, _f in self.origins(expr, frame, depth + 1)
-                                   if isinstance(c.func, ast.Name) and c.func.id in self.ex.class_attrs))
+                                   if isinstance(c.func, ast.Name) and c.func.id in self.folder.class_attrs))
         if not found and isinstance(expr, ast.Name) and frame.func is not None and \
                 (annotation := annotations_of(frame.func).get(expr.id)) is not None:
             name = annotation.value if isinstance(annotation, ast.Constant) else ast.unparse(annotation)
-            found = [name] if name in self.ex.class_attrs else []  # a parameter annotated with a class of the file
+            found = [name] if name in self.folder.class_attrs else []  # a parameter annotated with a class of the file
         return found
 
     def origins(self, expr: ast.expr, frame: Frame, depth: int = 0) -> list[tuple[ast.Call, Frame]]:
@@ -97,7 +97,7 @@ class Resolver(Scopes):
         if depth > 10:
             return []
         if isinstance(expr, ast.Call):
-            if isinstance(expr.func, ast.Name) and expr.func.id in self.ex.class_attrs:
+            if isinstance(expr.func, ast.Name) and expr.func.id in self.folder.class_attrs:
                 return [(expr, frame)]
             targets = self.callables(expr.func, frame, depth + 1)
             if not targets:
@@ -123,7 +123,7 @@ class Resolver(Scopes):
             return []
         if isinstance(expr, ast.Lambda):
             return [Target(expr, frame.cls, frame)]
-        if isinstance(expr, ast.Call) and (self.ex.qualified(expr.func) or "").endswith("partial") and expr.args:
+        if isinstance(expr, ast.Call) and (self.folder.qualified(expr.func) or "").endswith("partial") and expr.args:
             return [replace(t, preset=t.preset + tuple((a, frame) for a in expr.args[1:]))
                     for t in self.callables(expr.args[0], frame, depth + 1)]
         if isinstance(expr, ast.Attribute):
@@ -148,9 +148,9 @@ class Resolver(Scopes):
             if scope.bound(name) or name in self.local_names(scope.func)[0]:
                 return [t for e, f in self.values(name, scope) for t in self.callables(e, f, depth + 1)]
             scope = scope.outer
-        if (None, name) in self.ex.functions:
-            return [Target(self.ex.functions[(None, name)].node, None, None)]
-        if name in self.ex.class_attrs:
+        if (None, name) in self.folder.functions:
+            return [Target(self.folder.functions[(None, name)].node, None, None)]
+        if name in self.folder.class_attrs:
             return self.methods([name], "__init__", name)
         return [t for e, f in self.global_values.get(name, []) for t in self.callables(e, f, depth + 1)]
 
@@ -159,17 +159,17 @@ class Resolver(Scopes):
         found: list[Target] = []
         for start in classes:
             for owner in self.lineage(start):
-                if (owner, name) in self.ex.functions:
-                    found.append(Target(self.ex.functions[(owner, name)].node, cls, None, True))
+                if (owner, name) in self.folder.functions:
+                    found.append(Target(self.folder.functions[(owner, name)].node, cls, None, True))
                     break
             for sub in self.descendants(start) if overrides else []:
-                if (sub, name) in self.ex.functions:
-                    found.append(Target(self.ex.functions[(sub, name)].node, sub, None, True))
+                if (sub, name) in self.folder.functions:
+                    found.append(Target(self.folder.functions[(sub, name)].node, sub, None, True))
         return list({id(t.func): t for t in found}.values())
 
     def is_thread(self, cls: str) -> bool:
         """A threading.Thread subclass (its start() runs its run())."""
-        return any(base == "threading.Thread" for c in self.lineage(cls) for base in self.ex.class_bases.get(c, []))
+        return any(base == "threading.Thread" for c in self.lineage(cls) for base in self.folder.class_bases.get(c, []))
 
     def owner_class(self, frame: Frame) -> str | None:
         """The class whose method the frame runs (through closures)."""

@@ -18,36 +18,36 @@ SOURCE_KINDS = ("subscriber", "service_server", "action_server", "timer")
 class Scopes:
     """One file's scopes and names, on top of the index and values of its port extraction."""
 
-    def __init__(self, ex: ValueFolder, ports: list[Port]) -> None:
-        self.ex, self.file = ex, ex.file
+    def __init__(self, folder: ValueFolder, ports: list[Port]) -> None:
+        self.folder, self.file = folder, folder.file
         self.sites = {kind: {Site(p.file, p.line) for p in ports if p.kind == kind}
                       for kind in ("publisher", *SOURCE_KINDS)}
         self.returned: dict[int, list[ast.expr]] = {}
         self.module = Frame(None)
-        self.module_nodes = in_scope(ex.tree.body)
+        self.module_nodes = in_scope(folder.tree.body)
         self.scopes: list[tuple[Frame, list[ast.AST]]] = []
-        self.functions = {id(f.node): f for f in ex.functions.values()}
-        self.owner: dict[int, str] = {id(f.node): f.cls for f in ex.functions.values() if f.cls}
+        self.functions = {id(f.node): f for f in folder.functions.values()}
+        self.owner: dict[int, str] = {id(f.node): f.cls for f in folder.functions.values() if f.cls}
         self.frames: dict[int, Frame] = {}  # function -> its frame when not called
         self.names: dict[int, tuple[set[str], set[str]]] = {}  # function -> (local names, declared global)
         self.nested: dict[int, dict[str, ast.FunctionDef | ast.AsyncFunctionDef]] = {}
         self.subclasses: dict[str, list[str]] = {}
-        for cls, bases in ex.class_bases.items():
+        for cls, bases in folder.class_bases.items():
             for base in bases:
-                if base in ex.class_attrs:
+                if base in folder.class_attrs:
                     self.subclasses.setdefault(base, []).append(cls)
         self._scan(self.module_nodes, self.module)
         self.global_values: dict[str, list[tuple[ast.expr, Frame]]] = {
             name: [(e, self.module) for e in values if isinstance(e, ast.expr)]
-            for name, values in ex.module_assigns.items()}
+            for name, values in folder.module_assigns.items()}
         for frame, nodes in self.scopes:
             for node in nodes:
                 if isinstance(node, ast.Assign) and frame.func is not None:
                     for target in node.targets:
                         if isinstance(target, ast.Name) and target.id in self.local_names(frame.func)[1]:
                             self.global_values.setdefault(target.id, []).append((node.value, frame))
-        self.instantiated = {n.func.id for n in ast.walk(ex.tree) if isinstance(n, ast.Call)
-                             and isinstance(n.func, ast.Name) and n.func.id in ex.class_attrs}
+        self.instantiated = {n.func.id for n in ast.walk(folder.tree) if isinstance(n, ast.Call)
+                             and isinstance(n.func, ast.Name) and n.func.id in folder.class_attrs}
         self.kinds: dict[str, set[str]] = {}
 
     def _scan(self, nodes: list[ast.AST], frame: Frame) -> None:
@@ -85,7 +85,7 @@ class Scopes:
         self._scan(nodes, frame)
 
     def function(self, frame: Frame | None) -> Function | None:
-        """python.py's scope for a frame (a lambda's is its enclosing function's)."""
+        """The index's function for a frame (a lambda's is its enclosing function's)."""
         while frame is not None and frame.func is not None:
             if id(frame.func) in self.functions:
                 return self.functions[id(frame.func)]
@@ -115,7 +115,8 @@ class Scopes:
         """A class and its bases defined in the file."""
         found = [cls]
         for name in found:
-            found += [b for b in self.ex.class_bases.get(name, []) if b in self.ex.class_attrs and b not in found]
+            found += [b for b in self.folder.class_bases.get(name, [])
+                      if b in self.folder.class_attrs and b not in found]
         return found
 
     def descendants(self, cls: str) -> list[str]:

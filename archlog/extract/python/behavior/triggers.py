@@ -69,7 +69,7 @@ class Behavior(Walk):
             for node in nodes:
                 if isinstance(node, ast.Call):
                     self.register(node, frame)
-        self.walk(self.ex.tree.body, self.module, Context("startup", None))
+        self.walk(self.folder.tree.body, self.module, Context("startup", None))
         for startup in (True, False):  # main and constructors run at start-up; the rest: unknown
             for frame, _nodes in self.scopes:
                 func = frame.func
@@ -89,7 +89,7 @@ class Behavior(Walk):
     def register(self, call: ast.Call, frame: Frame, exact: bool = False) -> None:
         """A call that registers callbacks: each callback is an entry with the port's site. In a
         base class, it registers once for each class of the file made from it (then `exact`)."""
-        name = self.ex.qualified(call.func) or ""
+        name = self.folder.qualified(call.func) or ""
         method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
         spec = _REGISTRATIONS.get(name) or _RCLPY_REGISTRATIONS.get(method)
         if frame.cls and not exact and (spec or method in _LATER_REGISTRATIONS):
@@ -120,7 +120,7 @@ class Behavior(Walk):
             site = Site(self.file, origin.lineno)
             if any(site in self.sites[k] for k in SOURCE_KINDS):
                 sites.append(site)
-            elif (self.ex.qualified(origin.func) or "").endswith("Synchronizer") and origin.args:
+            elif (self.folder.qualified(origin.func) or "").endswith("Synchronizer") and origin.args:
                 inputs = origin.args[0]
                 elements = inputs.elts if isinstance(inputs, (ast.List, ast.Tuple)) else \
                     [e for value, _f in self.values(inputs.id, where) if isinstance(value, (ast.List, ast.Tuple))

@@ -23,8 +23,8 @@ BUDGET = 4000  # function bodies walked per file
 class Walk(Guards):
     """Walks functions on paths, collecting the publish calls reached and the state written."""
 
-    def __init__(self, ex: ValueFolder, ports: list[Port]) -> None:
-        super().__init__(ex, ports)
+    def __init__(self, folder: ValueFolder, ports: list[Port]) -> None:
+        super().__init__(folder, ports)
         self.publishes: dict[Publish, None] = {}
         self.writes: dict[StateWrite, None] = {}
         self.walked: set[tuple[object, ...]] = set()
@@ -117,14 +117,14 @@ class Walk(Guards):
             if isinstance(child, ast.expr):
                 self.expression(child, frame, ctx)
         if isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Call) and \
-                self.ex.qualified(stmt.value.func) in _EXITS:
+                self.folder.qualified(stmt.value.func) in _EXITS:
             return None
         return self.received(stmt.value, ctx) if isinstance(stmt, ast.Expr) else ctx
 
     def received(self, expr: ast.expr, ctx: Context) -> Context:
         """After rospy.wait_for_message(topic) a message has arrived: a state of its own
         (`wait_for_message@LINE`) that only that subscriber sets guards what follows."""
-        waits = [c for c in self.calls.get(id(expr), []) if self.ex.qualified(c.func) == "rospy.wait_for_message"
+        waits = [c for c in self.calls.get(id(expr), []) if self.folder.qualified(c.func) == "rospy.wait_for_message"
                  and Site(self.file, c.lineno) in self.sites["subscriber"]]
         for wait in waits:
             var = f"wait_for_message@{wait.lineno}"
@@ -168,7 +168,7 @@ class Walk(Guards):
     def call(self, call: ast.Call, frame: Frame, ctx: Context) -> None:
         """A call: container writes, publish calls, and the functions of the file it runs."""
         func = call.func
-        name = self.ex.qualified(func) or ""
+        name = self.folder.qualified(func) or ""
         # taking from a container never fills it
         if isinstance(func, ast.Attribute) and (var := self.state_var(func.value, frame)) and \
                 (func.attr in ADDS or func.attr == "clear"):
@@ -229,19 +229,19 @@ class Walk(Guards):
 
     def sleep(self, call: ast.Call, frame: Frame) -> Value | None:
         """The seconds a call sleeps (Unknown when not known); None when it does not sleep."""
-        name = self.ex.qualified(call.func) or ""
+        name = self.folder.qualified(call.func) or ""
         scope = self.function(frame)
         if isinstance(call.func, ast.Attribute) and call.func.attr == "wait" and (call.args or call.keywords):
             return Unknown(ast.unparse(call), self.file, call.lineno)  # a condition or event with a timeout
         if name in ("rospy.sleep", "time.sleep") and call.args:
             duration = call.args[0]
             if isinstance(duration, ast.Call) and duration.args and \
-                    (self.ex.qualified(duration.func) or "").startswith("rospy.Duration"):
+                    (self.folder.qualified(duration.func) or "").startswith("rospy.Duration"):
                 duration = duration.args[0]
-            return self.ex.value(duration, scope=scope)
+            return self.folder.value(duration, scope=scope)
         if name == "rclpy.spin_once":
             timeout = arg(call, NO_INDEX, "timeout_sec")
-            return self.ex.value(timeout, scope=scope) if timeout is not None else \
+            return self.folder.value(timeout, scope=scope) if timeout is not None else \
                 Unknown("spin_once waits for a callback", self.file, call.lineno)
         if isinstance(call.func, ast.Attribute) and call.func.attr == "sleep" and not call.args:
             rates = [self.rate(c, f) for c, f in self.origins(call.func.value, frame)]
@@ -251,13 +251,13 @@ class Walk(Guards):
 
     def rate(self, call: ast.Call, frame: Frame) -> Value | None:
         """Seconds of rospy.Rate(hz) / node.create_rate(hz); a parameter's default folds."""
-        rospy = self.ex.qualified(call.func) == "rospy.Rate"
+        rospy = self.folder.qualified(call.func) == "rospy.Rate"
         if not rospy and not (isinstance(call.func, ast.Attribute) and call.func.attr == "create_rate"):
             return None
         hz = arg(call, 0, "hz" if rospy else "frequency")
         if hz is None:
             return Unknown(ast.unparse(call), self.file, call.lineno)
-        value = self.ex.value(hz, scope=self.function(frame))
+        value = self.folder.value(hz, scope=self.function(frame))
         if isinstance(value, ParamRef):
             value = value.default
         try:
