@@ -18,7 +18,7 @@ from archlog.extract.cpp import CppEnvironment, extract_cpp
 from archlog.extract.files import files_under
 from archlog.extract.launch import LaunchConfig, LaunchInterpreter
 from archlog.extract.msg_headers import generated_headers
-from archlog.extract.python import extract_python
+from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.packages import Executable, share_dirs

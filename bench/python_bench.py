@@ -17,7 +17,7 @@ from collections import Counter, defaultdict
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.python import extract_python
+from archlog.extract.python.node import extract_python
 from archlog.extract.summary import TRIGGERS, Port, Publish
 from archlog.values import Concat, ParamRef, Unknown
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cpp import CppEnvironment, extract_cpp
-from archlog.extract.python import extract_python
+from archlog.extract.python.node import extract_python
 from archlog.values import ParamRef, Unknown
 
 PY = '''#!/usr/bin/env python3

@@ -26,7 +26,8 @@ from archlog import budget
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cpp_ast import line_finder
 from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode, convert
-from archlog.extract.python import extract_python, parse_tolerant
+from archlog.extract.python.node import extract_python
+from archlog.extract.python.repair import parse_tolerant
 from archlog.extract.ros2_params import load_param_file
 from archlog.extract.ros2_stubs import _members
 from archlog.extract.workspace.cmake import commands

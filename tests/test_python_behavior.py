@@ -10,7 +10,8 @@ from pathlib import Path
 import pytest
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.python import extract_python, parse_tolerant
+from archlog.extract.python.node import extract_python
+from archlog.extract.python.repair import parse_tolerant
 from conftest import ROOT
 
 CORPUS_FILES = sorted(p for folder in ("python", "ros1", "ros2", "behavior") for p in (ROOT / "corpus" / folder).rglob("*")

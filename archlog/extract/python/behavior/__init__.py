@@ -1,0 +1,1 @@
+"""Behavior of rospy and rclpy nodes: the triggers, guards and state writes of publish calls (triggers.py)."""

@@ -1,0 +1,158 @@
+"""Folding Python expressions to values: literals, module and class constants, `self`
+attributes, f-strings, `%` and `.format`, `+`, parameter reads, and function or `__init__`
+parameters whose call sites in the file agree (a small function summary). Anything else is an
+explicit Unknown with file:line.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+
+from archlog.extract.python.index import Assigned, FileIndex, Function, arg, is_self_attr
+from archlog.values import ParamRef, Unknown, Value, alternatives, concat
+
+_PARAMETER_VALUES = {"value", "string_value", "integer_value", "double_value", "bool_value"}
+_KIND = {ast.AugAssign: "augmented assignment", ast.For: "loop variable", ast.With: "with target"}
+
+
+class ValueFolder(FileIndex):
+    """The values of a file's expressions; `scope` is the function a walk is in (an expression
+    folded without a scope folds in it)."""
+
+    def __init__(self, file: str, tree: ast.Module) -> None:
+        super().__init__(tree)
+        self.file = file
+        self.scope: Function | None = None
+
+    def unknown(self, expr: ast.expr, why: str = "") -> Unknown:
+        """An expression not folded, with its file and line."""
+        return Unknown(ast.unparse(expr) + (f" ({why})" if why else ""), self.file, getattr(expr, "lineno", 0))
+
+    def value(self, expr: ast.expr | None, depth: int = 0, scope: Function | None = None) -> Value:
+        """The value of an expression in a function (by default the walk's)."""
+        scope = self.scope if scope is None else scope
+        if expr is None:
+            return Unknown("<missing argument>", self.file, 0)
+        if depth > 10:
+            return self.unknown(expr, "too deep")
+        if isinstance(expr, ast.Constant):
+            if isinstance(expr.value, str):
+                return expr.value
+            if isinstance(expr.value, bool):
+                return str(expr.value).lower()
+            if isinstance(expr.value, (int, float)):
+                return str(expr.value)
+            return self.unknown(expr)
+        if isinstance(expr, ast.Name):
+            return self.name_value(expr, depth, scope)
+        if is_self_attr(expr) and scope is not None and scope.cls:
+            return self.single(self.class_attrs.get(scope.cls, {}).get(expr.attr, []), expr, depth, scope)
+        if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and expr.value.id in self.class_attrs:
+            return self.single(self.class_attrs[expr.value.id].get(expr.attr, []), expr, depth, None)
+        if isinstance(expr, ast.BinOp) and isinstance(expr.op, ast.Add):
+            return concat(self.value(expr.left, depth + 1, scope), self.value(expr.right, depth + 1, scope))
+        if isinstance(expr, ast.BinOp) and isinstance(expr.op, ast.Mod) and isinstance(expr.left, ast.Constant):
+            return self.percent(expr, depth, scope)
+        if isinstance(expr, ast.JoinedStr):
+            parts = [self.value(v.value, depth + 1, scope) if isinstance(v, ast.FormattedValue)
+                     and v.conversion == -1 and v.format_spec is None else
+                     (str(v.value) if isinstance(v, ast.Constant) else self.unknown(expr)) for v in expr.values]
+            return concat(*parts)
+        if isinstance(expr, ast.Call):
+            return self.call_value(expr, depth, scope)
+        if isinstance(expr, ast.IfExp):
+            return alternatives([self.value(expr.body, depth + 1, scope), self.value(expr.orelse, depth + 1, scope)],
+                                False, self.unknown(expr, "one of several values"))
+        if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Call) and expr.attr in _PARAMETER_VALUES:
+            return self.call_value(expr.value, depth + 1, scope)
+        return self.unknown(expr)
+
+    def name_value(self, expr: ast.Name, depth: int, scope: Function | None) -> Value:
+        """A name: a local assignment, a parameter (from its call sites), or a module assignment."""
+        if scope is not None:
+            if expr.id in scope.assigns:
+                return self.single(scope.assigns[expr.id], expr, depth, scope)
+            params = [a.arg for a in scope.node.args.args + scope.node.args.kwonlyargs]
+            if expr.id in params:
+                return self.parameter(scope, expr.id, expr, depth)
+        return self.single(self.module_assigns.get(expr.id, []), expr, depth, None)
+
+    def single(self, exprs: list[Assigned], at: ast.expr, depth: int, scope: Function | None) -> Value:
+        """The value of a variable: one assignment gives its value, several (if/else) give
+        alternatives, a loop over a literal list gives every element."""
+        if len(exprs) == 1 and isinstance(exprs[0], ast.For) and isinstance(exprs[0].iter, (ast.List, ast.Tuple)):
+            return alternatives([self.value(e, depth + 1, scope) for e in exprs[0].iter.elts], True,
+                                self.unknown(at, "loop over values not known statically"))
+        values = [self.value(e, depth + 1, self.attr_scope.get(id(e), scope)) if isinstance(e, ast.expr)
+                  else self.unknown(at, _KIND[type(e)]) for e in exprs]
+        if not values:
+            return self.unknown(at, "not assigned in this file")
+        return alternatives(values, False, self.unknown(at, "assigned values not all known"))
+
+    def parameter(self, scope: Function, name: str, at: ast.expr, depth: int) -> Value:
+        """A parameter takes the value all call sites in the file pass (or its default)."""
+        values = {self.value(passed, depth + 1, caller) if passed is not None else self.unknown(at)
+                  for passed, caller in self.arguments(scope, name)}
+        if len(values) == 1:
+            return next(iter(values))
+        return self.unknown(at, "call sites pass different values" if values else "parameter not passed in this file")
+
+
+    def percent(self, expr: ast.BinOp, depth: int, scope: Function | None) -> Value:
+        """`'template' % items` with %s, %d and %r."""
+        template = expr.left.value if isinstance(expr.left, ast.Constant) else None
+        items = expr.right.elts if isinstance(expr.right, ast.Tuple) else [expr.right]
+        pieces = re.split(r"%[sdr]", template) if isinstance(template, str) else []
+        if len(pieces) != len(items) + 1:
+            return self.unknown(expr)
+        parts: list[Value] = [pieces[0]]
+        for item, piece in zip(items, pieces[1:]):
+            parts += [self.value(item, depth + 1, scope), piece]
+        return concat(*parts)
+
+    def call_value(self, expr: ast.Call, depth: int, scope: Function | None) -> Value:
+        """`.format()`, parameter reads (rospy and rclpy), and calls that pass a value through."""
+        func = self.qualified(expr.func)
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr == "format" and \
+                isinstance(expr.func.value, ast.Constant) and isinstance(expr.func.value.value, str):
+            return self.format_value(expr, expr.func.value.value, depth, scope)
+        if func == "rospy.get_param" and expr.args:
+            name = self.value(expr.args[0], depth + 1, scope)
+            default = arg(expr, 1, "default")
+            if isinstance(name, str):
+                return ParamRef(name, self.value(default, depth + 1, scope) if default is not None
+                                else self.unknown(expr, "parameter without default"), "", self.file, expr.lineno)
+        if func in ("rospy.resolve_name", "str", "os.path.join") and len(expr.args) == 1:
+            return self.value(expr.args[0], depth + 1, scope)
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr == "get_parameter_value" and \
+                isinstance(expr.func.value, ast.Call):
+            return self.call_value(expr.func.value, depth + 1, scope)
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr in ("declare_parameter", "get_parameter",
+                                                                      "get_parameter_or") and expr.args:
+            name = self.value(expr.args[0], depth + 1, scope)
+            default = arg(expr, 1, "value" if expr.func.attr == "declare_parameter" else "alternative_value")
+            if isinstance(name, str):
+                default = default if default is not None and expr.func.attr != "get_parameter" else \
+                    self.declared.get(name)
+                return ParamRef(name, self.value(default, depth + 1, scope) if default is not None
+                                else self.unknown(expr, "parameter without default"), "~", self.file, expr.lineno)
+        return self.unknown(expr)
+
+    def format_value(self, expr: ast.Call, template: str, depth: int, scope: Function | None) -> Value:
+        """`template.format(...)` with its positional and keyword arguments."""
+        parts: list[Value] = []
+        position = 0
+        for index, match in enumerate(re.finditer(r"\{(\w*)\}", template)):
+            parts.append(template[position:match.start()])
+            key = match.group(1)
+            if key.isdigit() or not key:
+                slot = int(key) if key else index
+                item = expr.args[slot] if slot < len(expr.args) else None
+            else:
+                item = next((kw.value for kw in expr.keywords if kw.arg == key), None)
+            parts.append(self.value(item, depth + 1, scope) if item is not None else self.unknown(expr))
+            position = match.end()
+        parts.append(template[position:])
+        return concat(*parts)
+

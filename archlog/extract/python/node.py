@@ -1,0 +1,308 @@
+"""rospy and rclpy nodes: recover node names, ports, params, timers and QoS with Python's ast,
+then the behavior of their publish calls (behavior/).
+
+Nothing is imported or run. Values fold with fold.py; anything not folded is an explicit
+Unknown with file:line. Python 2 sources are repaired line by line (repair.py) so their ROS
+calls are still recovered.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from pathlib import Path
+
+from archlog import sandbox
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.python.behavior.triggers import recover_behavior
+from archlog.extract.python.fold import ValueFolder
+from archlog.extract.python.index import Function, arg
+from archlog.extract.python.qos_profile import QosReader
+from archlog.extract.python.repair import REPAIR_LINES, NestedTooDeeply, parse_tolerant
+from archlog.extract.summary import NodeSummary, Port
+from archlog.values import Alternatives, Unknown, Value, concat
+
+# rospy-style constructors: qualified name -> (kind, keyword of the name, keyword of the type)
+_ROSPY = {
+    "rospy.Publisher": ("publisher", "name", "data_class"),
+    "rospy.Subscriber": ("subscriber", "name", "data_class"),
+    "rospy.Service": ("service_server", "name", "service_class"),
+    "rospy.ServiceProxy": ("service_client", "name", "service_class"),
+    "rospy.wait_for_message": ("subscriber", "topic", "topic_type"),
+    "message_filters.Subscriber": ("subscriber", "topic", "data_class"),
+    "actionlib.SimpleActionServer": ("action_server", "name", "ActionSpec"),
+    "actionlib.SimpleActionClient": ("action_client", "ns", "ActionSpec"),
+    "actionlib.ActionServer": ("action_server", "ns", "ActionSpec"),
+    "actionlib.ActionClient": ("action_client", "ns", "ActionSpec"),
+}
+# rclpy Node methods: method -> (kind, index of the type, index of the name)
+_RCLPY_METHODS = {
+    "create_publisher": ("publisher", 0, 1), "create_subscription": ("subscriber", 0, 1),
+    "create_service": ("service_server", 0, 1), "create_client": ("service_client", 0, 1),
+}
+_RCLPY_ACTIONS = {"rclpy.action.ActionServer": "action_server", "rclpy.action.ActionClient": "action_client"}
+# tf broadcasters and listeners: qualified name -> ports they create
+_TF = {
+    "tf.TransformBroadcaster": [("publisher", "/tf")],
+    "tf2_ros.TransformBroadcaster": [("publisher", "/tf")],
+    "tf2_ros.StaticTransformBroadcaster": [("publisher", "/tf_static")],
+    "tf.TransformListener": [("subscriber", "/tf"), ("subscriber", "/tf_static")],
+    "tf2_ros.TransformListener": [("subscriber", "/tf"), ("subscriber", "/tf_static")],
+}
+_PARAM_READS = {"rospy.get_param": True, "rospy.search_param": False, "rospy.has_param": False}
+_PARAM_WRITES = {"rospy.set_param", "rospy.delete_param"}
+_TF_MESSAGE = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage"}
+_RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "get_parameter", "get_parameter_or",
+               "create_timer"}
+_ROS_WORDS = re.compile(r"rospy\.|rclpy|Publisher|Subscriber|Service|create_")
+
+
+SOURCE_CAP = 1 << 20
+"""Largest rospy/rclpy source read (bytes): reading costs ~5 s a MiB, and no node is near it."""
+
+
+def extract_python(path: Path, package: str, executable: str, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
+    """Read one rospy/rclpy script; never imports or runs it."""
+    summary = NodeSummary(package, executable, "python")
+    try:
+        data = sandbox.read_bytes(path, "source")
+    except sandbox.Refused as exc:
+        diagnostics.add(shown, 1, exc.code, f"not read: {exc}", "error")
+        summary.incomplete = f"{shown}: cannot be read"
+        return summary
+    if len(data) > SOURCE_CAP:
+        diagnostics.add(shown, 1, "too-large", f"{len(data)} bytes, over the {SOURCE_CAP}-byte cap for Python node "
+                        "sources; its ROS calls are not recovered", "error")
+        summary.incomplete = f"{shown}: too large to read"
+        return summary
+    try:
+        return _read(data.decode("utf-8", errors="replace"), summary, shown, diagnostics)
+    except (NestedTooDeeply, RecursionError, MemoryError) as exc:  # the parser's limits, or a walk's
+        diagnostics.add(shown, getattr(exc, "line", 1), "python-nesting", "code nested deeper than Python's parser "
+                        "(or archlog's walk over it) allows; its ROS calls are not recovered", "error")
+        return NodeSummary(package, executable, "python", incomplete=f"{shown}: nested too deeply")
+
+
+def _read(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
+    """Parse (repairing Python 2), extract the ports, then recover the behavior of publish calls."""
+    tree, repaired, dropped = parse_tolerant(source)
+    lines = source.splitlines()
+    if tree is not None and len(repaired) * 2 > len([ln for ln in lines if ln.strip()]):
+        tree = None  # mostly not Python: do not pretend to have read it
+    if tree is None:
+        why = f"is not repaired: {len(lines)} lines, over the {REPAIR_LINES}-line repair cap" \
+            if len(lines) > REPAIR_LINES else "does not parse as Python 3 or 2"
+        diagnostics.add(shown, repaired[0] if repaired else 1, "python-syntax",
+                        f"{why}; its ROS calls are not recovered", "error")
+        summary.incomplete = f"{shown}: does not parse"
+        return summary
+    if repaired:
+        diagnostics.add(shown, repaired[0], "python2",
+                        f"Python 2 (or newer) syntax: {len(repaired)} line(s) repaired or skipped to recover its ROS "
+                        "calls", "note")
+        lost = [n for n in dropped if _ROS_WORDS.search(lines[n - 1])]
+        if lost:
+            summary.incomplete = f"{shown}:{lost[0]}: a line with ROS calls could not be read"
+    reader = NodeReader(summary, shown, tree)
+    reader.run()
+    summary.publishes, summary.writes = recover_behavior(reader, summary.ports, diagnostics)
+    for line, message in reader.notes:
+        diagnostics.add(shown, line, "python-several-nodes", message, "note")
+    summary.ports = _without_untyped_duplicates(summary.ports)
+    return summary
+
+
+def _without_untyped_duplicates(ports: list[Port]) -> list[Port]:
+    """wait_for_service(name) next to ServiceProxy(name, Type) is one client, with its type."""
+    typed = {(p.kind, p.name) for p in ports if p.kind == "service_client" and not isinstance(p.type, Unknown)
+             and isinstance(p.name, str)}
+    return [p for p in ports if not (isinstance(p.type, Unknown) and (p.kind, p.name) in typed)]
+
+
+class NodeReader(ValueFolder):
+    """Walks a module's scopes in order and reads the ROS calls in each into the summary."""
+
+    def __init__(self, summary: NodeSummary, shown: str, tree: ast.Module) -> None:
+        super().__init__(shown, tree)
+        self.summary = summary
+        self.profiles = QosReader(self)
+        self.notes: list[tuple[int, str]] = []
+
+    def run(self) -> None:
+        """Read the ROS calls of every scope, in source order."""
+        for stmt in self.tree.body:
+            self._visit(stmt)
+
+    def is_rclpy_node_class(self, cls: str | None, depth: int = 0) -> bool:
+        """A class deriving (in the file, up to 5 levels) from an rclpy Node."""
+        bases = self.class_bases.get(cls or "", [])
+        return any(b in ("rclpy.node.Node", "rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode")
+                   or (depth < 5 and self.is_rclpy_node_class(b, depth + 1)) for b in bases)
+
+    # -- traversal --------------------------------------------------------------------------
+    def _visit(self, node: ast.AST) -> None:
+        """Visit a node in its function scope (methods in their class)."""
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            outer = self.scope
+            cls = outer.cls if outer else self.class_of.get(id(node))
+            self.scope = self.functions.get((cls, node.name)) or Function(node, cls)
+            for child in node.body:
+                self._visit(child)
+            self.scope = outer
+            return
+        if isinstance(node, ast.ClassDef):
+            for child in node.body:
+                if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    outer = self.scope
+                    self.scope = self.functions.get((node.name, child.name)) or Function(child, node.name)
+                    for stmt in child.body:
+                        self._visit(stmt)
+                    self.scope = outer
+                else:
+                    self._visit(child)
+            return
+        if isinstance(node, ast.Call):
+            self._call(node)
+        for sub in ast.iter_child_nodes(node):
+            self._visit(sub)
+
+    def message_type(self, expr: ast.expr | None, ros2: bool) -> Value:
+        """`pkg/Type` (ROS 1) or `pkg/msg/Type` (ROS 2) from `pkg.msg.Type`."""
+        name = self.qualified(expr) if expr is not None else None
+        parts = name.split(".") if name else []
+        if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
+            base = parts[2]
+            if parts[1] == "msg" and base.endswith("Action"):
+                base = base[: -len("Action")]
+            return f"{parts[0]}/{parts[1]}/{base}" if ros2 else f"{parts[0]}/{base}"
+        if expr is None:
+            return Unknown("<missing type>", self.file, 0)
+        return self.unknown(expr, "message type not resolved")
+
+    # -- ROS calls --------------------------------------------------------------------------
+    def _call(self, call: ast.Call) -> None:
+        """One call: a rospy, rclpy, tf or actionlib API call adds its port or names the node."""
+        func = self.qualified(call.func)
+        method = call.func.attr if isinstance(call.func, ast.Attribute) else None
+        if func == "rospy.init_node":
+            self.set_name(call, self.value(arg(call, 0, "name")))
+            anon = arg(call, 2, "anonymous")
+            self.summary.anonymous = isinstance(anon, ast.Constant) and anon.value is True
+        elif func in _ROSPY:
+            kind, name_kw, type_kw = _ROSPY[func]
+            self.add(kind, call, self.value(arg(call, 0, name_kw)), self.message_type(arg(call, 1, type_kw), False),
+                     queue=self.queue(call, func))
+        elif func in _TF:
+            for kind, topic in _TF[func]:
+                self.add(kind, call, topic, _TF_MESSAGE[topic])
+        elif func in _PARAM_READS and call.args:
+            default = arg(call, 1, "default") if _PARAM_READS[func] else None
+            self.add("param_read", call, self.value(call.args[0]), "",
+                     self.value(default) if default is not None else None)
+        elif func in _PARAM_WRITES and call.args:
+            value = self.value(arg(call, 1, "param_value")) if func == "rospy.set_param" else "delete"
+            self.add("param_write", call, self.value(call.args[0]), "", value)
+        elif func == "rospy.wait_for_service" and call.args:
+            self.add("service_client", call, self.value(call.args[0]), self.unknown(call, "type not given"))
+        elif func in ("rospy.Timer", "rospy.Rate"):
+            self.add("timer", call, self.period(arg(call, 0, "period" if func == "rospy.Timer" else "hz"), func), "")
+        elif func in _RCLPY_ACTIONS:
+            self.add(_RCLPY_ACTIONS[func], call, self.value(arg(call, 2, "action_name")),
+                     self.message_type(arg(call, 1, "action_type"), True))
+        elif method and self.is_rclpy_call(call):
+            self.rclpy_call(call, method)
+        elif func in ("rclpy.create_node", "rclpy.node.Node") or (
+                isinstance(call.func, ast.Attribute) and call.func.attr == "__init__"
+                and isinstance(call.func.value, ast.Call) and isinstance(call.func.value.func, ast.Name)
+                and call.func.value.func.id == "super" and self.scope and self.is_rclpy_node_class(self.scope.cls)):
+            self.set_name(call, self.value(arg(call, 0, "node_name")))
+            namespace = next((kw.value for kw in call.keywords if kw.arg == "namespace"), None)
+            if namespace is not None:
+                self.summary.namespace = self.value(namespace)
+
+    def is_rclpy_call(self, call: ast.Call) -> bool:
+        """A method call on an rclpy Node: `self` in a Node subclass, or any object of a module
+        that uses rclpy when the method is one only rclpy nodes have (create_publisher, ...)."""
+        func = call.func
+        if not isinstance(func, ast.Attribute):
+            return False
+        target = func.value
+        if isinstance(target, ast.Name) and target.id == "self" and self.scope is not None and \
+                self.is_rclpy_node_class(self.scope.cls):
+            return True
+        method = func.attr
+        uses_rclpy = any(v == "rclpy" or v.startswith("rclpy.") for v in self.aliases.values())
+        return uses_rclpy and method in _RCLPY_ONLY
+
+    def rclpy_call(self, call: ast.Call, method: str) -> None:
+        """An rclpy Node method: publishers, subscriptions, services, parameters, timers."""
+        if method in _RCLPY_METHODS:
+            kind, type_at, name_at = _RCLPY_METHODS[method]
+            name_kw = "topic" if kind in ("publisher", "subscriber") else "srv_name"
+            type_kw = "msg_type" if kind in ("publisher", "subscriber") else "srv_type"
+            qos = self.profiles.facts(arg(call, 3 if kind == "subscriber" else 2, "qos_profile"), self.scope) \
+                if kind in ("publisher", "subscriber") else ()
+            self.add(kind, call, self.value(arg(call, name_at, name_kw)),
+                     self.message_type(arg(call, type_at, type_kw), True), qos=qos)
+        elif method in ("declare_parameter", "get_parameter", "get_parameter_or") and call.args:
+            name = self.value(call.args[0])
+            default = arg(call, 1, "value") if method == "declare_parameter" else \
+                arg(call, 1, "alternative_value") if method == "get_parameter_or" else None
+            if default is None and isinstance(name, str):
+                default = self.declared.get(name)
+            self.add("param_read", call, name, "", self.value(default) if default is not None else None, handle="~")
+        elif method == "declare_parameters":
+            prefix = self.value(arg(call, 0, "namespace"))
+            params = arg(call, 1, "parameters")
+            for item in params.elts if isinstance(params, (ast.List, ast.Tuple)) else []:
+                pair = item.elts if isinstance(item, ast.Tuple) else [item]
+                name = self.value(pair[0])
+                full = concat(prefix, ".", name) if prefix else name
+                self.add("param_read", call, full, "", self.value(pair[1]) if len(pair) > 1 else None, handle="~")
+        elif method == "create_timer":
+            self.add("timer", call, self.value(arg(call, 0, "timer_period_sec")), "")
+
+    def queue(self, call: ast.Call, func: str) -> Value | None:
+        """A rospy queue_size: a number, 'unbounded' (None; a Subscriber's default), or 'unset'."""
+        if func not in ("rospy.Publisher", "rospy.Subscriber"):
+            return None
+        size = next((kw.value for kw in call.keywords if kw.arg == "queue_size"), None)
+        if size is None:
+            return "unset" if func == "rospy.Publisher" else "unbounded"
+        if isinstance(size, ast.Constant) and size.value is None:
+            return "unbounded"
+        value = self.value(size)
+        return "unbounded" if value == "0" and func == "rospy.Subscriber" else value
+
+    def period(self, expr: ast.expr | None, func: str) -> Value:
+        """A timer's period in seconds: Duration(x) / Duration.from_sec(x), or 1/hz for a Rate."""
+        if expr is None:
+            return Unknown("<missing period>", self.file, 0)
+        if isinstance(expr, ast.Call) and expr.args and (self.qualified(expr.func) or "").startswith("rospy.Duration"):
+            expr = expr.args[0]
+        value = self.value(expr)
+        if func == "rospy.Rate" and isinstance(value, str):
+            try:
+                return repr(1 / float(value))
+            except (ValueError, ZeroDivisionError):
+                return self.unknown(expr, "not a rate")
+        return value
+
+    def set_name(self, call: ast.Call, name: Value) -> None:
+        """The node's name (a note when the file creates several nodes)."""
+        if self.summary.default_name is not None and self.summary.default_name != name:
+            self.notes.append((call.lineno, f"this file creates several nodes ({self.summary.default_name}, {name}); "
+                                            "archlog reads them as one node named after the last"))
+        self.summary.default_name = name
+        self.summary.name_file, self.summary.name_line = self.file, call.lineno
+
+    def add(self, kind: str, call: ast.Call, name: Value, type_: Value, default: Value | None = None,
+            qos: tuple[tuple[str, str], ...] = (), queue: Value | None = None, handle: str = "") -> None:
+        """One port; `handle` "~" for ROS 2 parameters (node-private)."""
+        if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
+            for option in name.options:
+                self.add(kind, call, option, type_, default, qos, queue, handle)
+            return
+        self.summary.ports.append(Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, handle, default,
+                                       qos, queue))
+
