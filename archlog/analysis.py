@@ -16,7 +16,8 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.controllers import controller_nodes
 from archlog.extract.cpp import CppEnvironment, extract_cpp
 from archlog.extract.files import files_under
-from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode
+from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
+from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.messages import message_files
 from archlog.extract.msg_headers import generated_headers
 from archlog.extract.models import BUILTIN_DIR, load_models

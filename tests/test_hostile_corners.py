@@ -27,10 +27,12 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cmake import commands
 from archlog.extract.configured import configured_ports
 from archlog.extract.cpp_ast import line_finder
-from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode, convert
+from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
+from archlog.extract.launch.ros1 import LaunchInterpreter
+from archlog.extract.launch.ros1_params import convert
 from archlog.extract.models import load_models
 from archlog.extract.python import extract_python, parse_tolerant
-from archlog.extract.ros2_params import load_param_file
+from archlog.extract.launch.ros2_params import load_param_file
 from archlog.extract.ros2_stubs import _members
 from archlog.extract.workspace import Workspace
 from archlog.facts.similarity import near_pairs, too_long

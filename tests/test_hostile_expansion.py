@@ -18,7 +18,7 @@ import pytest
 
 from archlog import budget
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchInterpreter
+from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.workspace import Workspace
 from support.hostile import Outside, Run, problems, run_check
 

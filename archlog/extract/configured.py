@@ -12,7 +12,7 @@ import yaml
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.command_line import split_options
-from archlog.extract.launch import LaunchConfig, LaunchNode
+from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.models import _LineLoader
 from archlog.extract.robot_description import spawned_ports
 from archlog.extract.summary import Port

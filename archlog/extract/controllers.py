@@ -13,7 +13,7 @@ import shlex
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.command_line import split_options
-from archlog.extract.launch import LaunchConfig, LaunchNode
+from archlog.extract.launch.model import LaunchConfig, LaunchNode
 
 VALUED = {"--namespace", "--wait-for", "--timeout", "--shutdown-timeout"}
 

@@ -24,7 +24,7 @@ import yaml
 
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract import bounded_yaml
+from archlog.extract.launch import bounded_yaml
 from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.summary import NodeSummary, Port
 from archlog.values import ParamList, ParamRef, Value

@@ -17,7 +17,7 @@ from pathlib import Path
 from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.command_line import split_options
-from archlog.extract.launch import Element, LaunchConfig, LaunchNode
+from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import Port
 from archlog.extract.workspace import Workspace
 from archlog.extract.xacro_expand import Place, XacroFailure, expand, parse_xml

@@ -8,7 +8,7 @@ from dataclasses import dataclass, replace
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.configured import configured_ports
-from archlog.extract.launch import Element, LaunchConfig, LaunchNode
+from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
 from archlog.extract.models import UNSET
 from archlog.extract.summary import NodeSummary, Port, Site
 from archlog.facts.behavior import Sites, add_behavior

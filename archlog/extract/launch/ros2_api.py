@@ -16,14 +16,37 @@ from typing import Protocol
 import yaml
 
 from archlog import sandbox
-from archlog.extract import bounded_yaml
-from archlog.extract.launch import LaunchError
-from archlog.extract.launch2 import (PYTHON, XML, YAML, Action, Component, Condition, DeclareArgument, Group,
-                                     Include, LoadComponents, Node, Opaque, ParamDict, ParamFile, ParamItem,
-                                     ParamSource, ParamText, Process, PushNamespace, Remap, SetConfiguration,
-                                     SetEnvironment, SetParameter, SetParametersFile, SetRemap, Where)
-from archlog.extract.launch2_subst import Call, Context, Parts, Rewritten, Text, opaque, perform, text
-from archlog.extract.substitution import RefusedRead, SubstitutionError, UnknownArg, Unresolved, read_file
+from archlog.extract.launch import bounded_yaml
+from archlog.extract.launch.model import LaunchError, RefusedRead, SubstitutionError, UnknownArg, Unresolved, read_file
+from archlog.extract.launch.ros2_actions import (
+    PYTHON,
+    XML,
+    YAML,
+    Action,
+    Component,
+    Condition,
+    DeclareArgument,
+    Group,
+    Include,
+    LoadComponents,
+    Node,
+    Opaque,
+    ParamDict,
+    ParamFile,
+    ParamItem,
+    ParamSource,
+    ParamText,
+    Process,
+    PushNamespace,
+    Remap,
+    SetConfiguration,
+    SetEnvironment,
+    SetParameter,
+    SetParametersFile,
+    SetRemap,
+    Where,
+)
+from archlog.extract.launch.ros2_subst import Call, Context, Parts, Rewritten, Text, opaque, perform, text
 
 MAX_RANGE = 10_000
 
@@ -414,7 +437,7 @@ def _opaque_function(c: CallSite) -> object:
     extra_args = _listed(c.kwargs.get("args"))
     given = c.kwargs.get("kwargs")
     extra_kwargs = {str(k): v for k, v in given.items()} if isinstance(given, dict) else {}
-    if isinstance(function, Unread) or isinstance(function, Ref):
+    if isinstance(function, (Unread, Ref)):
         return Opaque(where=c.where(), conditions=c.conditions(), reason=f"OpaqueFunction {_describe(function)}")
     interp, where = c.interp, c.where()
 

@@ -20,20 +20,35 @@ import os
 from contextlib import suppress
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from archlog import budget, sandbox
-from archlog.extract.launch import LaunchError
-from archlog.extract.launch2 import Action, Condition, Where
-from archlog.extract.launch2_api import (API_MODULES, CONSTRUCTORS, FUNCTIONS, CallSite, ConfigsView, ContextValue,
-                                         Description, FileHandle, LineDict, LineTuple, PathValue, Ref, S, Unread,
-                                         entities, environment, perform_in, probe, read_text, to_parts)
-from archlog.extract.launch2_subst import text
-from archlog.extract.substitution import (BUILTINS, STR_METHODS, Evaluator, RefusedRead, SubstitutionError, TooDeep,
-                                          UnknownArg, call_size, parse, result_size)
-
-if TYPE_CHECKING:
-    from archlog.extract.launch2 import Ros2Launch
+from archlog.extract.launch.evaluate import BUILTINS, STR_METHODS, Evaluator, TooDeep, call_size, parse, result_size
+from archlog.extract.launch.model import LaunchError, RefusedRead, SubstitutionError, UnknownArg
+from archlog.extract.launch.ros2_actions import Action, Condition, Where
+from archlog.extract.launch.ros2_api import (
+    API_MODULES,
+    CONSTRUCTORS,
+    FUNCTIONS,
+    CallSite,
+    ConfigsView,
+    ContextValue,
+    Description,
+    FileHandle,
+    LineDict,
+    LineTuple,
+    PathValue,
+    Ref,
+    S,
+    Unread,
+    entities,
+    environment,
+    perform_in,
+    probe,
+    read_text,
+    to_parts,
+)
+from archlog.extract.launch.ros2_execute import Ros2Launch
+from archlog.extract.launch.ros2_subst import text
 
 MAX_DEPTH = 16
 MAX_ITEMS = 10_000
@@ -45,7 +60,7 @@ _PATH_ATTRS = {"parent": lambda p: str(Path(p).parent), "name": lambda p: Path(p
                "stem": lambda p: Path(p).stem, "suffix": lambda p: Path(p).suffix}
 
 
-def describe(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
+def describe(path: Path, launcher: Ros2Launch) -> list[Action] | None:
     """The actions `generate_launch_description()` of a Python launch file returns; None (with a
     diagnostic) when the file cannot be read or has no such function."""
     shown = launcher.workspace.display(path)
@@ -82,7 +97,7 @@ class _Function:
     """A function (or lambda) defined in the file, with the scope it was defined in."""
 
     node: ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda
-    scope: "_Scope"
+    scope: _Scope
     defaults: tuple[object, ...]
     kw_defaults: tuple[object, ...]
 
@@ -90,11 +105,11 @@ class _Function:
 class _Scope:
     """Variables of a module or function body; lookups go outwards."""
 
-    def __init__(self, parent: "_Scope | None") -> None:
+    def __init__(self, parent: _Scope | None) -> None:
         self.vars: dict[str, object] = {}
         self.parent = parent
 
-    def find(self, name: str) -> "_Scope | None":
+    def find(self, name: str) -> _Scope | None:
         scope: _Scope | None = self
         while scope is not None and name not in scope.vars:
             scope = scope.parent
@@ -120,7 +135,7 @@ class _Stop(Exception):
 class _Interpreter(Evaluator):
     """Reads one Python launch file."""
 
-    def __init__(self, path: Path, launcher: "Ros2Launch") -> None:
+    def __init__(self, path: Path, launcher: Ros2Launch) -> None:
         super().__init__(self._lookup)
         self.path = path
         self.launcher = launcher
@@ -228,9 +243,7 @@ class _Interpreter(Evaluator):
                 self.assign(element, item)
         elif isinstance(target, ast.Subscript):
             container, key = self.value(target.value), self.value(target.slice)
-            if isinstance(container, dict) and _hashable(key):
-                container[key] = value
-            elif isinstance(container, list) and isinstance(key, int) and -len(container) <= key < len(container):
+            if isinstance(container, dict) and _hashable(key) or isinstance(container, list) and isinstance(key, int) and -len(container) <= key < len(container):
                 container[key] = value
 
     def branch(self, stmt: ast.If) -> None:
