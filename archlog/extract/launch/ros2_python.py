@@ -1,8 +1,8 @@
 """Python launch files read statically: the module is walked with `ast` (never imported or run)
 and `generate_launch_description()` is interpreted over known values.
 
-Expressions reuse the restricted evaluator of substitution.py, extended with what launch files
-do: calls of the launch API (launch2_api), of functions defined in the file, and of a few
+Expressions reuse the restricted evaluator (archlog.extract.launch.evaluate, in ros2_python_values), extended with what launch files
+do: calls of the launch API (ros2_api), of functions defined in the file, and of a few
 methods of strings, lists, dicts and launch objects; comprehensions over known lists. A branch
 whose test is not known (it depends on a launch argument) is read on both sides, the actions
 made there conditional on it. An OpaqueFunction runs at launch time with the context launch
@@ -18,12 +18,11 @@ from __future__ import annotations
 import ast
 import os
 from contextlib import suppress
-from dataclasses import dataclass
 from pathlib import Path
 
 from archlog import budget, sandbox
-from archlog.extract.launch.evaluate import BUILTINS, STR_METHODS, Evaluator, TooDeep, call_size, parse, result_size
-from archlog.extract.launch.model import LaunchError, RefusedRead, SubstitutionError, UnknownArg
+from archlog.extract.launch.evaluate import BUILTINS, STR_METHODS, TooDeep, call_size, parse
+from archlog.extract.launch.model import LaunchError
 from archlog.extract.launch.ros2_actions import Action, Condition, Where
 from archlog.extract.launch.ros2_api import (
     API_MODULES,
@@ -34,30 +33,24 @@ from archlog.extract.launch.ros2_api import (
     ContextValue,
     Description,
     FileHandle,
-    LineDict,
-    LineTuple,
     PathValue,
     Ref,
     S,
     Unread,
     entities,
-    environment,
     perform_in,
     probe,
     read_text,
-    to_parts,
 )
 from archlog.extract.launch.ros2_execute import Ros2Launch
+from archlog.extract.launch.ros2_python_values import Function, Scope, Values, constant, plain, why
 from archlog.extract.launch.ros2_subst import text
 
 MAX_DEPTH = 16
-MAX_ITEMS = 10_000
 _LIST_METHODS = {"append", "extend", "insert", "pop", "index", "count", "copy", "remove", "reverse"}
 _DICT_METHODS = {"get", "items", "keys", "values", "update", "copy", "setdefault", "pop"}
 _STR_EXTRA = {"splitlines", "partition", "rpartition", "rsplit", "casefold", "removeprefix", "removesuffix",
               "isalpha", "isalnum", "islower", "isupper", "isspace"}
-_PATH_ATTRS = {"parent": lambda p: str(Path(p).parent), "name": lambda p: Path(p).name,
-               "stem": lambda p: Path(p).stem, "suffix": lambda p: Path(p).suffix}
 
 
 def describe(path: Path, launcher: Ros2Launch) -> list[Action] | None:
@@ -82,7 +75,7 @@ def describe(path: Path, launcher: Ros2Launch) -> list[Action] | None:
         with suppress(_Return, _Break, _Stop):  # module code that returns or raises ends there
             interp.block(tree.body)  # type: ignore[attr-defined]
         function = interp.globals.get("generate_launch_description")
-        if not isinstance(function, _Function):
+        if not isinstance(function, Function):
             launcher.diagnostics.add(shown, 1, "launch-python", "no generate_launch_description() in this Python "
                                      "launch file: nothing is launched from it", "warning")
             return None
@@ -90,30 +83,6 @@ def describe(path: Path, launcher: Ros2Launch) -> list[Action] | None:
         return entities(result, Where(path, function.node.lineno))
     except (budget.BudgetExceeded, RecursionError, MemoryError) as exc:
         raise budget.crossed(shown, interp.line, exc) from None
-
-
-@dataclass(frozen=True)
-class _Function:
-    """A function (or lambda) defined in the file, with the scope it was defined in."""
-
-    node: ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda
-    scope: _Scope
-    defaults: tuple[object, ...]
-    kw_defaults: tuple[object, ...]
-
-
-class _Scope:
-    """Variables of a module or function body; lookups go outwards."""
-
-    def __init__(self, parent: _Scope | None) -> None:
-        self.vars: dict[str, object] = {}
-        self.parent = parent
-
-    def find(self, name: str) -> _Scope | None:
-        scope: _Scope | None = self
-        while scope is not None and name not in scope.vars:
-            scope = scope.parent
-        return scope
 
 
 class _Return(Exception):
@@ -132,39 +101,10 @@ class _Stop(Exception):
     """A `raise` in a branch that is not known to be taken: the branch ends there."""
 
 
-class _Interpreter(Evaluator):
-    """Reads one Python launch file."""
+class _Interpreter(Values):
+    """Reads one Python launch file: its statements, and the calls of its functions, of the launch
+    API and of methods of the values it holds."""
 
-    def __init__(self, path: Path, launcher: Ros2Launch) -> None:
-        super().__init__(self._lookup)
-        self.path = path
-        self.launcher = launcher
-        self.env = launcher.env
-        self.guards: list[Condition] = []
-        self.module = _Scope(None)
-        self.module.vars.update({"__file__": str(path), "__name__": path.stem})
-        self.globals = self.module.vars
-        self.scope = self.module
-        self.depth = 0
-        self.sites: list[int] = []  # the lines of the function calls in progress
-        self.line = 1
-        self.refused: set[int] = set()  # lines where a value was refused within the budget
-
-    def find(self, pkg: str) -> Path | None:
-        return self.launcher.workspace.find(pkg)
-
-    def not_given(self, name: str, line: int) -> None:
-        self.launcher.diag(Where(self.path, line), "env-not-given", sandbox.not_given_message(name), "note")
-
-    def site(self, line: int) -> int:
-        """Where an action made at `line` is reported: at the call of the helper function it was
-        made in, when the entry function (generate_launch_description, an OpaqueFunction) called one."""
-        return self.sites[1] if len(self.sites) > 1 else line
-
-    def refused_read(self, exc: RefusedRead, line: int) -> None:
-        self.launcher.diag(Where(self.path, line), exc.code, f"file not read: {exc}")
-
-    # -- statements -----------------------------------------------------------------------
     def block(self, body: list[ast.stmt]) -> None:
         for stmt in body:
             budget.spend("steps")
@@ -174,7 +114,7 @@ class _Interpreter(Evaluator):
     def statement(self, stmt: ast.stmt) -> None:
         if isinstance(stmt, (ast.FunctionDef, ast.AsyncFunctionDef)):
             args = stmt.args
-            self.assign_name(stmt.name, _Function(stmt, self.scope, tuple(self.value(d) for d in args.defaults),
+            self.assign_name(stmt.name, Function(stmt, self.scope, tuple(self.value(d) for d in args.defaults),
                                                   tuple(None if d is None else self.value(d) for d in args.kw_defaults)))
         elif isinstance(stmt, ast.Assign):
             value = self.value(stmt.value)
@@ -229,23 +169,6 @@ class _Interpreter(Evaluator):
             else:
                 self.assign_name(name, Ref(f"{stmt.module}.{alias.name}"))
 
-    def assign_name(self, name: str, value: object) -> None:
-        self.scope.vars[name] = value
-
-    def assign(self, target: ast.expr, value: object) -> None:
-        if isinstance(target, ast.Name):
-            self.assign_name(target.id, value)
-        elif isinstance(target, (ast.Tuple, ast.List)):
-            items = list(value) if isinstance(value, (list, tuple)) else None
-            if items is None or len(items) != len(target.elts):
-                items = [Unread(f"unpacking {_why(value)}", target.lineno)] * len(target.elts)
-            for element, item in zip(target.elts, items):
-                self.assign(element, item)
-        elif isinstance(target, ast.Subscript):
-            container, key = self.value(target.value), self.value(target.slice)
-            if isinstance(container, dict) and _hashable(key) or isinstance(container, list) and isinstance(key, int) and -len(container) <= key < len(container):
-                container[key] = value
-
     def branch(self, stmt: ast.If) -> None:
         test = self.value(stmt.test)
         if not isinstance(test, Unread):
@@ -278,16 +201,8 @@ class _Interpreter(Evaluator):
                     return
         self.block(stmt.orelse)
 
-    def iterable(self, value: object) -> list[object] | Unread:
-        if isinstance(value, dict):
-            return list(value)
-        if isinstance(value, (list, tuple, str)) and len(value) <= MAX_ITEMS:
-            return list(value)
-        return value if isinstance(value, Unread) else Unread(f"iterating over {_why(value)}", self.line)
-
-    # -- calls ----------------------------------------------------------------------------
     def call(self, function: object, args: list[object], kwargs: dict[str, object], line: int) -> object:
-        if isinstance(function, _Function):
+        if isinstance(function, Function):
             return self.call_function(function, args, kwargs, line)
         if isinstance(function, Ref):
             name = function.name
@@ -307,18 +222,18 @@ class _Interpreter(Evaluator):
             if any(isinstance(v, Unread) for v in [*args, *kwargs.values()]):
                 return next(v for v in [*args, *kwargs.values()] if isinstance(v, Unread))
             budget.charge("characters", call_size(function, args, kwargs))
-            if any(not _plain(v) for v in [*args, *kwargs.values()]):
+            if any(not plain(v) for v in [*args, *kwargs.values()]):
                 return Unread(f"{getattr(function, '__name__', 'a builtin')}() of a launch object", line)
             try:
                 return function(*args, **kwargs)  # type: ignore[operator]
             except (TypeError, ValueError, KeyError, IndexError, AttributeError, OverflowError) as exc:
                 return Unread(f"{getattr(function, '__name__', 'a call')}: {exc}", line)
-        return Unread(f"a call of {_why(function)}", line)
+        return Unread(f"a call of {why(function)}", line)
 
-    def call_function(self, function: _Function, args: list[object], kwargs: dict[str, object], line: int) -> object:
+    def call_function(self, function: Function, args: list[object], kwargs: dict[str, object], line: int) -> object:
         if self.depth >= MAX_DEPTH:
             return Unread("functions nested too deeply", line)
-        scope = _Scope(function.scope)
+        scope = Scope(function.scope)
         spec = function.node.args
         positional = [*spec.posonlyargs, *spec.args]
         for index, arg in enumerate(positional):
@@ -353,219 +268,6 @@ class _Interpreter(Evaluator):
             self.depth -= 1
             self.sites.pop()
             self.scope = saved
-
-    # -- expressions ----------------------------------------------------------------------
-    def value(self, node: ast.expr) -> object:
-        """An expression's value, or Unread where the evaluator cannot follow it (or refuses to build
-        it within the budget: reported once per line)."""
-        line = getattr(node, "lineno", self.line)
-        try:
-            return self.visit(node)
-        except SubstitutionError as exc:
-            return Unread(str(exc), line)
-        except budget.BudgetExceeded as exc:
-            if budget.exhausted():
-                raise
-            if line not in self.refused:
-                self.refused.add(line)
-                self.launcher.diag(Where(self.path, line), "budget-exceeded", f"{exc}; the value is not read", "error")
-            return Unread(str(exc), line)
-
-    def _lookup(self, name: str) -> object:
-        scope = self.scope.find(name)
-        if scope is not None:
-            return scope.vars[name]
-        if name in ("open", "range", "getattr"):
-            return Ref(f"builtins.{name}")
-        if name in BUILTINS:
-            return BUILTINS[name]
-        if name in ("print", "hasattr", "type", "super", "vars", "locals", "globals"):
-            return Unread(f"{name}()", self.line)
-        return Unread(f"name '{name}' is not defined", self.line)
-
-    def generic_visit(self, node: ast.AST) -> object:
-        return Unread(f"{type(node).__name__} is not read statically", getattr(node, "lineno", self.line))
-
-    def visit_Name(self, node: ast.Name) -> object:
-        return self._lookup(node.id)
-
-    def visit_Dict(self, node: ast.Dict) -> object:
-        result = LineDict()
-        result.lines = {}
-        for key, item in zip(node.keys, node.values):
-            if key is None:
-                spread = self.value(item)
-                if isinstance(spread, dict):
-                    result.update(spread)
-                continue
-            k = self.value(key)
-            if _hashable(k):
-                result[k] = self.value(item)
-                result.lines[k] = key.lineno
-        return result
-
-    def visit_Tuple(self, node: ast.Tuple) -> object:
-        result = LineTuple(self.value(e) for e in node.elts)
-        result.line = node.lineno
-        return result
-
-    def visit_List(self, node: ast.List) -> object:
-        items: list[object] = []
-        for element in node.elts:
-            if isinstance(element, ast.Starred):
-                spread = self.value(element.value)
-                spread = spread if isinstance(spread, (list, tuple)) else [spread]
-                budget.charge("characters", len(spread))
-                items.extend(spread)
-            else:
-                items.append(self.value(element))
-        return items
-
-    def visit_JoinedStr(self, node: ast.JoinedStr) -> object:
-        pieces = [self.value(v) for v in node.values]
-        bad = next((p for p in pieces if not isinstance(p, str)), None)
-        if bad is not None:
-            return bad if isinstance(bad, Unread) else Unread("a launch object formatted into a string", node.lineno)
-        budget.charge("characters", sum(len(p) for p in pieces))  # type: ignore[arg-type]
-        return "".join(pieces)  # type: ignore[arg-type]
-
-    def visit_FormattedValue(self, node: ast.FormattedValue) -> object:
-        value = self.value(node.value)
-        if isinstance(value, PathValue):
-            value = value.path
-        if not _plain(value):
-            return value if isinstance(value, Unread) else Unread("a launch object formatted into a string",
-                                                                  node.lineno)
-        return super().visit_FormattedValue(ast.FormattedValue(_constant(value), node.conversion, node.format_spec))
-
-    def visit_BinOp(self, node: ast.BinOp) -> object:
-        left, right = self.value(node.left), self.value(node.right)
-        for side in (left, right):
-            if isinstance(side, Unread):
-                return side
-        if isinstance(node.op, ast.Add) and (isinstance(left, S) or isinstance(right, S)) and \
-                all(isinstance(v, (str, S)) for v in (left, right)):
-            parts = to_parts(left, node.lineno), to_parts(right, node.lineno)
-            budget.charge("characters", len(parts[0]) + len(parts[1]))
-            return S(parts[0] + parts[1])
-        if isinstance(node.op, ast.Div) and isinstance(left, PathValue) and isinstance(right, (str, PathValue)):
-            return PathValue(str(Path(left.path) / (right if isinstance(right, str) else right.path)))
-        if isinstance(node.op, ast.Add) and isinstance(left, (list, tuple)) and isinstance(right, (list, tuple)):
-            budget.charge("characters", result_size(node.op, left, right))
-            return [*left, *right] if isinstance(left, list) else (*left, *right)
-        if not (_plain(left) and _plain(right)):
-            return Unread(f"{ast.unparse(node)} over launch objects", node.lineno)
-        return super().visit_BinOp(ast.BinOp(_constant(left), node.op, _constant(right)))
-
-    def visit_Compare(self, node: ast.Compare) -> object:
-        values = [self.value(node.left), *(self.value(c) for c in node.comparators)]
-        unread = next((v for v in values if isinstance(v, Unread)), None)
-        if unread is not None:
-            return unread
-        if not all(_plain(v) for v in values):
-            return Unread(f"{ast.unparse(node)} compares launch objects", node.lineno)
-        rebuilt = ast.Compare(_constant(values[0]), node.ops, [_constant(v) for v in values[1:]])
-        return super().visit_Compare(rebuilt)
-
-    def visit_BoolOp(self, node: ast.BoolOp) -> object:
-        result: object = isinstance(node.op, ast.And)
-        for item in node.values:
-            result = self.value(item)
-            if isinstance(result, Unread) or bool(result) != isinstance(node.op, ast.And):
-                return result
-        return result
-
-    def visit_UnaryOp(self, node: ast.UnaryOp) -> object:
-        operand = self.value(node.operand)
-        if isinstance(operand, Unread):
-            return operand
-        if isinstance(node.op, ast.Not):
-            return not operand
-        if not _plain(operand):
-            return Unread(f"{ast.unparse(node)} of a launch object", node.lineno)
-        return super().visit_UnaryOp(ast.UnaryOp(node.op, _constant(operand)))
-
-    def visit_IfExp(self, node: ast.IfExp) -> object:
-        test = self.value(node.test)
-        if isinstance(test, Unread):
-            return test
-        return self.value(node.body) if test else self.value(node.orelse)
-
-    def visit_Subscript(self, node: ast.Subscript) -> object:
-        target, index = self.value(node.value), self.value(node.slice)
-        if isinstance(target, Ref) and target.name == "os.environ":
-            if not isinstance(index, str):
-                return Unread("os.environ[?]", node.lineno)
-            return environment(self, index, Unread(f"environment variable {index} is not given", node.lineno),
-                               node.lineno)
-        if isinstance(target, ConfigsView):
-            return self.config(target, index, None, node.lineno)
-        if isinstance(target, Unread) or isinstance(index, Unread):
-            return target if isinstance(target, Unread) else index
-        if not isinstance(target, (dict, list, tuple, str)):
-            return Unread(f"indexing {_why(target)}", node.lineno)
-        try:
-            return target[index]  # type: ignore[index, call-overload]
-        except (TypeError, KeyError, IndexError) as exc:
-            return Unread(f"{ast.unparse(node)}: {exc!r}", node.lineno)
-
-    def visit_Attribute(self, node: ast.Attribute) -> object:
-        target = self.value(node.value)
-        if isinstance(target, Ref):
-            return Ref(f"{target.name}.{node.attr}")
-        if isinstance(target, ContextValue) and node.attr == "launch_configurations":
-            return ConfigsView(target.ctx)
-        if isinstance(target, PathValue) and node.attr in _PATH_ATTRS:
-            found = _PATH_ATTRS[node.attr](target.path)
-            return PathValue(found) if node.attr == "parent" else found
-        if isinstance(target, Unread):
-            return target
-        return Unread(f"attribute {node.attr} of {_why(target)}", node.lineno)
-
-    def visit_Lambda(self, node: ast.Lambda) -> object:
-        return _Function(node, self.scope, tuple(self.value(d) for d in node.args.defaults),
-                         tuple(None if d is None else self.value(d) for d in node.args.kw_defaults))
-
-    def visit_ListComp(self, node: ast.ListComp) -> object:
-        return self.comprehension(node.generators, lambda: self.value(node.elt), node.lineno)
-
-    visit_GeneratorExp = visit_SetComp = visit_ListComp  # type: ignore[assignment]
-
-    def visit_DictComp(self, node: ast.DictComp) -> object:
-        pairs = self.comprehension(node.generators, lambda: (self.value(node.key), self.value(node.value)),
-                                   node.lineno)
-        if not isinstance(pairs, list):
-            return pairs
-        return {k: v for k, v in pairs if _hashable(k)}
-
-    def comprehension(self, generators: list[ast.comprehension], element: object, line: int) -> object:
-        results: list[object] = []
-        saved, self.scope = self.scope, _Scope(self.scope)
-        try:
-            failure = self._generate(generators, element, results)
-        finally:
-            self.scope = saved
-        return failure if failure is not None else results
-
-    def _generate(self, generators: list[ast.comprehension], element: object, results: list[object]) -> Unread | None:
-        if not generators:
-            results.append(element())  # type: ignore[operator]
-            return None
-        first = generators[0]
-        items = self.iterable(self.value(first.iter))
-        if isinstance(items, Unread):
-            return items
-        for item in items:
-            self.assign(first.target, item)
-            tests = [self.value(t) for t in first.ifs]
-            unknown = next((t for t in tests if isinstance(t, Unread)), None)
-            if isinstance(unknown, Unread):
-                return unknown
-            if all(tests):
-                failure = self._generate(generators[1:], element, results)
-                if failure is not None:
-                    return failure
-        return None
 
     def visit_Call(self, node: ast.Call) -> object:
         args: list[object] = []
@@ -631,7 +333,7 @@ class _Interpreter(Evaluator):
         allowed = (_LIST_METHODS if isinstance(target, list) else _DICT_METHODS if isinstance(target, dict)
                    else {"index", "count"} if isinstance(target, tuple) else set())
         if name not in allowed:
-            return Unread(f"{_why(target)}.{name}()", line)
+            return Unread(f"{why(target)}.{name}()", line)
         budget.charge("characters", sum(len(a) for a in args if isinstance(a, (list, tuple, dict))))
         try:
             result = getattr(target, name)(*args, **kwargs)
@@ -643,11 +345,11 @@ class _Interpreter(Evaluator):
                       ) -> object:
         """A str method: those the restricted evaluator allows go through it (with its guards on
         format()), a few more pure ones are called here."""
-        if not all(_plain(a) for a in [*args, *kwargs.values()]):
+        if not all(plain(a) for a in [*args, *kwargs.values()]):
             return Unread(f"str.{name}() of a launch object", line)
         if name in STR_METHODS:
-            call = ast.Call(ast.Attribute(_constant(target), name), [_constant(a) for a in args],
-                            [ast.keyword(k, _constant(v)) for k, v in kwargs.items()])
+            call = ast.Call(ast.Attribute(constant(target), name), [constant(a) for a in args],
+                            [ast.keyword(k, constant(v)) for k, v in kwargs.items()])
             return super().visit_Call(call)
         if name not in _STR_EXTRA:
             return Unread(f"str.{name}()", line)
@@ -655,40 +357,3 @@ class _Interpreter(Evaluator):
             return getattr(target, name)(*args, **kwargs)
         except (TypeError, ValueError) as exc:
             return Unread(f"{name}(): {exc}", line)
-
-    def config(self, view: ConfigsView, name: object, default: object, line: int) -> object:
-        """context.launch_configurations[name] (or .get(name, default))."""
-        if not isinstance(name, str):
-            return Unread("a launch configuration whose name is not known", line)
-        value = view.ctx.configs.get(name, default)
-        if isinstance(value, UnknownArg):
-            return Unread(f"launch argument '{name}' is not known ({value.reason})", line)
-        return value
-
-
-def _constant(value: object) -> ast.Constant:
-    """A computed value wrapped for the evaluator (which reads a Constant's value as it is)."""
-    return ast.Constant(value)  # type: ignore[arg-type]
-
-
-def _plain(value: object) -> bool:
-    """A plain Python value (what the restricted evaluator computes with); looking at each element
-    is an evaluation step."""
-    budget.spend("steps")
-    if isinstance(value, (list, tuple)):
-        return all(_plain(v) for v in value)
-    if isinstance(value, dict):
-        return all(_plain(k) and _plain(v) for k, v in value.items())
-    return value is None or isinstance(value, (str, int, float, bool, bytes))
-
-
-def _hashable(value: object) -> bool:
-    try:
-        hash(value)
-    except TypeError:
-        return False
-    return not isinstance(value, Unread)
-
-
-def _why(value: object) -> str:
-    return value.reason if isinstance(value, Unread) else type(value).__name__
