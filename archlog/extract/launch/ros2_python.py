@@ -24,10 +24,8 @@ from archlog import budget, sandbox
 from archlog.extract.launch.evaluate import BUILTINS, STR_METHODS, TooDeep, call_size, parse
 from archlog.extract.launch.model import LaunchError
 from archlog.extract.launch.ros2_actions import Action, Condition, Where
-from archlog.extract.launch.ros2_api import (
-    API_MODULES,
-    CONSTRUCTORS,
-    FUNCTIONS,
+from archlog.extract.launch.ros2_api import API_MODULES, CONSTRUCTORS, FUNCTIONS, perform_in, probe, read_text
+from archlog.extract.launch.ros2_api_values import (
     CallSite,
     ConfigsView,
     ContextValue,
@@ -38,9 +36,6 @@ from archlog.extract.launch.ros2_api import (
     S,
     Unread,
     entities,
-    perform_in,
-    probe,
-    read_text,
 )
 from archlog.extract.launch.ros2_execute import Ros2Launch
 from archlog.extract.launch.ros2_python_values import Function, Scope, Values, constant, plain, why

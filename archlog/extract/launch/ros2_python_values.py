@@ -12,7 +12,8 @@ from archlog import budget, sandbox
 from archlog.extract.launch.evaluate import BUILTINS, Evaluator, result_size
 from archlog.extract.launch.model import RefusedRead, SubstitutionError, UnknownArg
 from archlog.extract.launch.ros2_actions import Condition, Where
-from archlog.extract.launch.ros2_api import (
+from archlog.extract.launch.ros2_api import environment
+from archlog.extract.launch.ros2_api_values import (
     ConfigsView,
     ContextValue,
     LineDict,
@@ -21,7 +22,6 @@ from archlog.extract.launch.ros2_api import (
     Ref,
     S,
     Unread,
-    environment,
     to_parts,
 )
 from archlog.extract.launch.ros2_execute import Ros2Launch
