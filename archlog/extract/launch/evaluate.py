@@ -13,6 +13,7 @@ import operator
 import re
 import sys
 from collections.abc import Callable
+from typing import Any
 
 from archlog import budget
 from archlog.extract.launch.model import SubstitutionError
@@ -42,7 +43,7 @@ def _sum(values: object, start: object = 0) -> object:
             joined.extend(item)
             bounded(joined)
         return joined
-    return sum(items, start)  # type: ignore[arg-type]
+    return sum(items, start)  # type: ignore[call-overload]
 
 
 def _range(*bounds: int) -> range:
@@ -77,6 +78,7 @@ def restricted_eval(expr: str, lookup: Callable[[str], object],
         tree = parse(expr.strip(), "<eval>", "eval")
     except (SyntaxError, ValueError) as exc:  # ValueError: a NUL byte
         raise SubstitutionError(f"$(eval) syntax error: {getattr(exc, 'msg', exc)}") from None
+    assert isinstance(tree, ast.Expression)
     return Evaluator(lookup, attribute).visit(tree.body)
 
 
@@ -285,7 +287,8 @@ class Evaluator(ast.NodeVisitor):
         value = self.visit(node.value)
         spec = str(self.visit(node.format_spec)) if node.format_spec is not None else ""
         budget.charge("characters", format_size(spec, (value,), False))  # before it is written out
-        convert = {ord("s"): str, ord("r"): repr, ord("a"): ascii}.get(node.conversion, lambda v: v)
+        conversions: dict[int, Callable[[object], object]] = {ord("s"): str, ord("r"): repr, ord("a"): ascii}
+        convert = conversions.get(node.conversion, lambda v: v)
         try:
             return format(convert(value), spec)
         except (TypeError, ValueError) as exc:
@@ -313,7 +316,8 @@ class Evaluator(ast.NodeVisitor):
         return result
 
     def visit_UnaryOp(self, node: ast.UnaryOp) -> object:
-        ops = {ast.Not: operator.not_, ast.USub: operator.neg, ast.UAdd: operator.pos}
+        ops: dict[type[ast.unaryop], Callable[[Any], object]] = {
+            ast.Not: operator.not_, ast.USub: operator.neg, ast.UAdd: operator.pos}
         if type(node.op) not in ops:
             return self.generic_visit(node)
         try:
@@ -351,14 +355,14 @@ class Evaluator(ast.NodeVisitor):
             return self.generic_visit(node)
         function = self.callee(node.func)
         args = [self.visit(a) for a in node.args]
-        kwargs = {k.arg: self.visit(k.value) for k in node.keywords}
+        kwargs = {k.arg: self.visit(k.value) for k in node.keywords if k.arg is not None}
         owner = getattr(function, "__self__", None)
         if isinstance(owner, str) and getattr(function, "__name__", "") == "format" and \
                 ("__" in owner or _FIELD_ATTRIBUTE.search(owner)):
             raise SubstitutionError("$(eval) format string not allowed (it reads attributes)")
         budget.charge("characters", call_size(function, args, kwargs))
         try:
-            return bounded(function(*args, **kwargs))  # type: ignore[operator]
+            return bounded(function(*args, **kwargs))
         except (TypeError, ValueError, OverflowError, LookupError, AttributeError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
 

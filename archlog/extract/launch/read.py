@@ -24,7 +24,8 @@ def open_xml(path: Path, shown: str, diagnostics: DiagnosticSink, remove_pis: bo
         diagnostics.add(shown, 1, exc.code, f"cannot read launch file: {exc}", "error")
         return None
     if root.tag != "launch":
-        diagnostics.add(shown, root.sourceline or 1, "launch-xml", f"root element is <{root.tag}>, not <launch>", "error")
+        diagnostics.add(shown, root.sourceline or 1, "launch-xml", f"root element is <{root.tag}>, not <launch>",
+                        "error")
         return None
     return root
 

@@ -132,9 +132,9 @@ class LaunchInterpreter(Ros1Params):
         if missing:
             return
         if (refused := unreadable(target, "launch")) is not None:
-            missing = refused.code == "missing"
-            self._diag(path, el, "launch-include" if missing else refused.code,
-                       f"included file not found: {target}" if missing else f"<include> skipped: {refused}")
+            absent = refused.code == "missing"
+            self._diag(path, el, "launch-include" if absent else refused.code,
+                       f"included file not found: {target}" if absent else f"<include> skipped: {refused}")
             return
         cycle = include_cycle(self.display, target, path, scope.chain)
         if cycle is not None:

@@ -23,6 +23,7 @@ from archlog.extract.launch.model import (
     Nesting,
     RefusedRead,
     SubstitutionError,
+    UnknownArg,
     Unresolved,
 )
 from archlog.extract.launch.read import boolean, open_xml
@@ -255,10 +256,10 @@ def bool_attr(text: str, label: str) -> bool:
     return value
 
 
-def command_line_args(args: dict[str, str]) -> dict[str, str]:
+def command_line_args(args: dict[str, str]) -> dict[str, str | UnknownArg]:
     """Command-line args as roslaunch reads name:=value words: stripped, empty ones dropped, and
     `_name:=value` words left to the parameter server."""
-    kept = {}
+    kept: dict[str, str | UnknownArg] = {}
     for key, value in args.items():
         key, value = key.strip(), value.strip()
         if key and value and ":=" not in value and not (len(key) > 1 and key[0] == "_" and key[1] != "_"):

@@ -69,7 +69,7 @@ class SubstContext:
     def child(self, args: dict[str, str | UnknownArg] | None = None, file: Path | None = None) -> SubstContext:
         """A copy for a group or node scope; with `args`, a fresh scope for an included file."""
         fresh = args is not None
-        return SubstContext(args if fresh else dict(self.args), self.find, file or self.file,
+        return SubstContext(args if args is not None else dict(self.args), self.find, file or self.file,
                             {} if fresh else dict(self.anon), self.env, self.serial)
 
 
@@ -106,7 +106,8 @@ def _pass(text: str, ctx: SubstContext, commands: tuple[str, ...]) -> str:
 def _collect(text: str) -> list[str]:
     """The insides of `$(...)` in order; a `$` or `(` inside one is an error, as in roslaunch."""
     found: list[str] = []
-    state, buffer = "out", []
+    state = "out"
+    buffer: list[str] = []
     for char in text:
         if char == "$":
             if state in ("in", "open"):

@@ -88,7 +88,8 @@ def _node(c: CallSite, container: bool = False) -> object:
     return Node(where=c.where(), conditions=c.conditions(), pkg=optional_parts(c.kwargs.get("package"), c.line),
                 exe=to_parts(exe, c.line), name=optional_parts(c.kwargs.get("name", c.kwargs.get("node_name")), c.line),
                 namespace=optional_parts(c.kwargs.get("namespace", c.kwargs.get("node_namespace")), c.line),
-                params=params(c.kwargs.get("parameters"), c.line), remaps=remap_list(c.kwargs.get("remappings"), c.line),
+                params=params(c.kwargs.get("parameters"), c.line),
+                remaps=remap_list(c.kwargs.get("remappings"), c.line),
                 arguments=command_words(c.kwargs.get("arguments"), c.line),
                 ros_arguments=command_words(ros_arguments, c.line) if ros_arguments is not None else None,
                 components=components_of(c.kwargs.get("composable_node_descriptions"), c.where()) if container else ())
@@ -113,7 +114,8 @@ def _load(c: CallSite) -> object:
 def _group(c: CallSite) -> object:
     keep = c.kwargs.get("launch_configurations") or {}
     return Group(where=c.where(), conditions=c.conditions(), actions=tuple(entities(c.arg(0, "actions"), c.where())),
-                 scoped=c.kwargs.get("scoped", True) is not False, forwarding=c.kwargs.get("forwarding", True) is not False,
+                 scoped=c.kwargs.get("scoped", True) is not False,
+                 forwarding=c.kwargs.get("forwarding", True) is not False,
                  keep=tuple((to_parts(k, c.line), to_parts(v, c.line)) for k, v in keep.items())
                  if isinstance(keep, dict) else ())
 
@@ -302,7 +304,8 @@ CONSTRUCTORS: dict[str, Callable[[CallSite], object]] = {
     "ParameterFile": lambda c: ParamFile(to_parts(c.arg(0, "param_file"), c.line), c.line,
                                          c.arg(1, "allow_substs", False) is True),
     "ParameterValue": lambda c: Typed(c.arg(0, "value"), value_kind(c.kwargs.get("value_type"))),
-    "Parameter": lambda c: Typed(c.arg(1, "value"), value_kind(c.kwargs.get("value_type")), to_parts(c.arg(0, "name"), c.line)),
+    "Parameter": lambda c: Typed(c.arg(1, "value"), value_kind(c.kwargs.get("value_type")),
+                                 to_parts(c.arg(0, "name"), c.line)),
     "IfCondition": _condition("if"), "UnlessCondition": _condition("unless"),
     "LaunchConfigurationEquals": _condition("equals"), "LaunchConfigurationNotEquals": _condition("not-equals"),
     "LaunchConfiguration": _subst("var", "variable_name", "default"),

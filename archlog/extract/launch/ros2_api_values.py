@@ -4,6 +4,7 @@ API build (launch objects, substitutions, Unread), and their conversion into ROS
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Protocol
@@ -125,7 +126,7 @@ class Interpreter(Protocol):
     """What API calls need from the interpreter of the file."""
 
     path: Path
-    env: dict[str, str | UnknownArg]
+    env: Mapping[str, str | UnknownArg]
     guards: list[Condition]
 
     def find(self, pkg: str) -> Path | None: ...

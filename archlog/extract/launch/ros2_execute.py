@@ -20,7 +20,7 @@ from __future__ import annotations
 import itertools
 import os
 import shlex
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import replace
 from pathlib import Path
 from typing import TypeVar
@@ -85,12 +85,12 @@ class Ros2Launch(Ros2Nodes):
         super().__init__(host)
         self.readers = readers
         self.serial = itertools.count(1)
-        self.env: dict[str, str | UnknownArg] = {}  # the environment Python launch files see when read
+        self.env: Mapping[str, str | UnknownArg] = {}  # the environment Python launch files see when read
         self._descriptions: dict[tuple[Path, str], Description | None] = {}
         self._nesting = Nesting()  # lists of actions being run (a file, its groups, the files it includes)
 
     # -- entry points -------------------------------------------------------------------
-    def load(self, path: Path, args: dict[str, str | UnknownArg], env: dict[str, str | UnknownArg],
+    def load(self, path: Path, args: dict[str, str | UnknownArg], env: Mapping[str, str | UnknownArg],
              chain: tuple[Element, ...] = ()) -> bool:
         """Launch one file as `ros2 launch FILE name:=value...` would; False when it cannot be read."""
         self.env = env
@@ -322,8 +322,8 @@ class Ros2Launch(Ros2Nodes):
         full = names.join(namespace or "/", base) if base else ""
         remaps = arg_remaps + self._scope_remaps(ctx) + self._remaps(action.remaps, action.where, ctx)
         params = arg_params + self._scope_params(ctx) + self._params(action.params, action.where, ctx)
-        node = LaunchNode(elem, pkg, exe, full, namespace or "", remaps, ctx.condition, shlex.join(words), declared=full,
-                          chain=ctx.chain, parameters=params, ros2=True)
+        node = LaunchNode(elem, pkg, exe, full, namespace or "", remaps, ctx.condition, shlex.join(words),
+                          declared=full, chain=ctx.chain, parameters=params, ros2=True)
         self.config.nodes.append(node)
         self._launched[id(action)] = full
         for component in action.components:

@@ -221,7 +221,8 @@ class _Reader:
             if entity.tag not in ("group", "timer"):  # their sub-entities are actions
                 extra |= set(entity.subs) - ATTRIBUTES[entity.tag]
             for name in sorted(extra):
-                self.problem(entity.line, "launch-attr", f"unknown <{entity.tag}> attribute '{name}' ignored", "warning")
+                self.problem(entity.line, "launch-attr", f"unknown <{entity.tag}> attribute '{name}' ignored",
+                             "warning")
             try:
                 action = handler(entity, self.where(entity.line), self.conditions(entity))
             except (SubstitutionError, LaunchError) as exc:

@@ -1,9 +1,10 @@
 """Python launch files read statically: the module is walked with `ast` (never imported or run)
 and `generate_launch_description()` is interpreted over known values.
 
-Expressions reuse the restricted evaluator (archlog.extract.launch.evaluate, in ros2_python_values), extended with what launch files
-do: calls of the launch API (ros2_api), of functions defined in the file, and of a few
-methods of strings, lists, dicts and launch objects; comprehensions over known lists. A branch
+Expressions (ros2_python_values) reuse the restricted evaluator of archlog.extract.launch.evaluate,
+extended with what launch files do: calls of the launch API (ros2_api), of functions defined in
+the file, and of a few methods of strings, lists, dicts and launch objects; comprehensions over
+known lists. A branch
 whose test is not known (it depends on a launch argument) is read on both sides, the actions
 made there conditional on it. An OpaqueFunction runs at launch time with the context launch
 would give it. What cannot be read is an `Unread` value, reported where it ends up. Reading spends
@@ -109,8 +110,9 @@ class _Interpreter(Values):
     def statement(self, stmt: ast.stmt) -> None:
         if isinstance(stmt, (ast.FunctionDef, ast.AsyncFunctionDef)):
             args = stmt.args
-            self.assign_name(stmt.name, Function(stmt, self.scope, tuple(self.value(d) for d in args.defaults),
-                                                  tuple(None if d is None else self.value(d) for d in args.kw_defaults)))
+            defaults = tuple(self.value(d) for d in args.defaults)
+            kw_defaults = tuple(None if d is None else self.value(d) for d in args.kw_defaults)
+            self.assign_name(stmt.name, Function(stmt, self.scope, defaults, kw_defaults))
         elif isinstance(stmt, ast.Assign):
             value = self.value(stmt.value)
             for target in stmt.targets:
@@ -148,8 +150,8 @@ class _Interpreter(Values):
         elif isinstance(stmt, ast.ClassDef):
             self.assign_name(stmt.name, Unread(f"class {stmt.name} defined in the launch file", stmt.lineno))
         elif isinstance(stmt, ast.While):
-            self.launcher.diag(Where(self.path, stmt.lineno), "launch-unknown",
-                               "a while loop is not read statically; what it launches is not part of this configuration")
+            self.launcher.diag(Where(self.path, stmt.lineno), "launch-unknown", "a while loop is not read "
+                               "statically; what it launches is not part of this configuration")
 
     def imports(self, stmt: ast.Import | ast.ImportFrom) -> None:
         if isinstance(stmt, ast.Import):

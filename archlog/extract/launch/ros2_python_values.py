@@ -102,7 +102,10 @@ class Values(Evaluator):
                 self.assign(element, item)
         elif isinstance(target, ast.Subscript):
             container, key = self.value(target.value), self.value(target.slice)
-            if isinstance(container, dict) and hashable(key) or isinstance(container, list) and isinstance(key, int) and -len(container) <= key < len(container):
+            if isinstance(container, list) and isinstance(key, int):
+                if -len(container) <= key < len(container):
+                    container[key] = value
+            elif isinstance(container, dict) and hashable(key):
                 container[key] = value
 
     def iterable(self, value: object) -> list[object] | Unread:
@@ -111,6 +114,10 @@ class Values(Evaluator):
         if isinstance(value, (list, tuple, str)) and len(value) <= MAX_ITEMS:
             return list(value)
         return value if isinstance(value, Unread) else Unread(f"iterating over {why(value)}", self.line)
+
+    def call(self, function: object, args: list[object], kwargs: dict[str, object], line: int) -> object:
+        """A call of what the file holds (the statement reader calls functions)."""
+        raise NotImplementedError
 
     def value(self, node: ast.expr) -> object:
         """An expression's value, or Unread where the evaluator cannot follow it (or refuses to build
@@ -183,8 +190,9 @@ class Values(Evaluator):
         bad = next((p for p in pieces if not isinstance(p, str)), None)
         if bad is not None:
             return bad if isinstance(bad, Unread) else Unread("a launch object formatted into a string", node.lineno)
-        budget.charge("characters", sum(len(p) for p in pieces))  # type: ignore[arg-type]
-        return "".join(pieces)  # type: ignore[arg-type]
+        strings = [p for p in pieces if isinstance(p, str)]  # all of them
+        budget.charge("characters", sum(len(p) for p in strings))
+        return "".join(strings)
 
     def visit_FormattedValue(self, node: ast.FormattedValue) -> object:
         value = self.value(node.value)
