@@ -231,7 +231,6 @@ def _digits(number: int) -> int:
     return abs(number).bit_length() * 3 // 10 + 1
 
 
-
 def arithmetic(expr: str) -> object:
     """A plain arithmetic expression over numbers, pi and the math functions (for rosparam's rad())."""
     def lookup(name: str) -> object:

@@ -30,7 +30,6 @@ def ros2_marker(root: etree._Element) -> etree._Element | None:
     return None
 
 
-
 def ros2_by_name(path: Path) -> bool:
     """Whether a file's name alone shows a ROS 2 launch file (Python or YAML)."""
     return path.suffix in (".py", ".yaml", ".yml")

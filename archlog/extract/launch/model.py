@@ -70,7 +70,6 @@ class LaunchConfig:
     scope_remaps: list[tuple[Element, str, str]] = field(default_factory=list)
 
 
-
 class SubstitutionError(Exception):
     """A substitution roslaunch rejects."""
 
@@ -107,7 +106,6 @@ class UnknownArg:
     """An arg whose value could not be resolved statically."""
 
     reason: str
-
 
 
 def include_cycle(display: Callable[[Path], str], target: Path, file: Path, chain: tuple[Element, ...]) -> str | None:

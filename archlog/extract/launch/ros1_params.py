@@ -63,7 +63,6 @@ class Ros1Params(Ros1Loader):
                            "note")
         return name
 
-
     def _tag_param(self, path: Path, el: etree._Element, scope: _Scope,
                    local: list[tuple[str, object, Element]] | None = None) -> None:
         """A parameter; `~name`s (and every <param> of a node, given `local`) wait for the nodes."""
@@ -148,7 +147,6 @@ class Ros1Params(Ros1Loader):
         self._put_tree(full, data, elem)
 
 
-
 def convert(text: str, kind: str, angles: bool = False) -> object:
     """roslaunch's typed parameter conversion (`angles`: YAML knows rosparam's rad()/deg())."""
     if kind == "auto":
@@ -167,7 +165,6 @@ def convert(text: str, kind: str, angles: bool = False) -> object:
     if kind in ("bool", "boolean"):
         return parse_bool(text, "value")
     raise LaunchError(f"unknown type '{kind}'")
-
 
 
 class _RosparamLoader(bounded_yaml.BoundedLoader):

@@ -239,7 +239,6 @@ class Ros1Loader:
                    f"condition {condition} cannot be resolved statically; <{el.tag}> kept as conditional", "note")
 
 
-
 def parse_bool(text: str, label: str) -> bool:
     """A bool as if/unless and type="bool" read it: true/false/1/0, any case, stripped."""
     value = boolean(text.strip())
@@ -265,7 +264,6 @@ def command_line_args(args: dict[str, str]) -> dict[str, str | UnknownArg]:
         if key and value and ":=" not in value and not (len(key) > 1 and key[0] == "_" and key[1] != "_"):
             kept[key] = value
     return kept
-
 
 
 def ns_join(ns: str, name: str) -> str:

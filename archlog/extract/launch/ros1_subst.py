@@ -186,7 +186,6 @@ def _number(text: str) -> int | float | None:
         return None
 
 
-
 def _eval(expr: str, ctx: SubstContext) -> str:
     functions: dict[str, object] = {
         **MATH,

@@ -194,8 +194,6 @@ class Opaque(Action):
 Description = list[Action]
 
 
-
-
 def dialect_of(path: Path) -> str:
     """The dialect a launch file's name announces (AnyLaunchDescriptionSource's guess)."""
     if path.suffix == ".py":

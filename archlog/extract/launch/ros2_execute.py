@@ -340,7 +340,6 @@ class Ros2Launch(Ros2Nodes):
             self._guarded(component, ctx, lambda c, here, _: self._component(c, manager, here))
 
 
-
 def _label(action: Action) -> str:
     """What an action is called in messages (its frontend tag, which names the Python class too)."""
     return {DeclareArgument: "arg", SetConfiguration: "let", SetEnvironment: "set_env", Group: "group",

@@ -1,4 +1,4 @@
-"""The XML and YAML frontends of ROS 2 launch (launch_xml, launch_yaml) read into launch2 actions.
+"""The XML and YAML frontends of ROS 2 launch (launch_xml, launch_yaml) read into ROS 2 launch actions.
 
 Both dialects share one entity model: an XML element is an entity with string attributes and
 child elements; a YAML entity is a mapping whose keys are its attributes, whose list values of

@@ -243,7 +243,6 @@ class Ros2Nodes:
                                             parameters=params, ros2=True))
 
 
-
 def value_or_unknown(parts: Parts, ctx: Context) -> str | UnknownArg:
     try:
         return perform(parts, ctx)

@@ -5,7 +5,7 @@ Substitutions nest (`$(find-pkg-share $(var pkg))`); `parse` follows launch's fr
 (quoted arguments, backslash escapes). `perform` evaluates as launch does and raises `Unresolved`
 for what depends on the machine or the run (an unset variable, a package that is not here, a
 command's output) and `SubstitutionError` for what launch itself rejects. `$(eval)` goes through
-the restricted evaluator of `substitution.py`; nothing is executed.
+the restricted evaluator of `evaluate.py`; nothing is executed.
 """
 
 from __future__ import annotations
