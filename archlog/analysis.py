@@ -16,7 +16,8 @@ from archlog.errors import ConfigError
 from archlog.extract import registry
 from archlog.extract.cpp import CppEnvironment, extract_cpp
 from archlog.extract.files import files_under
-from archlog.extract.launch import LaunchConfig, LaunchInterpreter
+from archlog.extract.launch.model import LaunchConfig
+from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.msg_headers import generated_headers
 from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary

@@ -28,7 +28,8 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from archlog.diagnostics import DiagnosticSink  # noqa: E402
-from archlog.extract.launch import LaunchInterpreter, ros2_marker  # noqa: E402
+from archlog.extract.launch.load import ros2_marker  # noqa: E402
+from archlog.extract.launch.ros1 import LaunchInterpreter  # noqa: E402
 from archlog.extract.workspace.index import Workspace  # noqa: E402
 from archlog.extract.workspace.packages import SKIP_DIRS  # noqa: E402
 

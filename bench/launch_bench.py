@@ -14,7 +14,7 @@ import time
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchInterpreter
+from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.workspace.index import Workspace
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -19,7 +19,7 @@ from support.hostile import Outside, Run, problems, run_check
 
 from archlog import budget
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchInterpreter
+from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.workspace.index import Workspace
 
 PACKAGE_XML = """<package format="2"><name>demo</name><version>0.0.0</version><description>demo</description>

@@ -7,8 +7,9 @@ from pathlib import Path
 import pytest
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchConfig, LaunchInterpreter
-from archlog.extract.substitution import SubstContext, SubstitutionError, substitute
+from archlog.extract.launch.model import LaunchConfig, SubstitutionError
+from archlog.extract.launch.ros1 import LaunchInterpreter
+from archlog.extract.launch.ros1_subst import SubstContext, substitute
 from archlog.extract.workspace.index import Workspace
 
 

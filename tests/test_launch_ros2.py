@@ -10,7 +10,8 @@ from conftest import ROOT
 
 from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchConfig, LaunchInterpreter, LaunchNode
+from archlog.extract.launch.model import LaunchConfig, LaunchNode
+from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.workspace.index import Workspace
 from archlog.values import Unknown
 
@@ -552,7 +553,7 @@ def test_python_what_cannot_be_read_is_reported_not_dropped(tmp_path: Path) -> N
 
 # -- parameter files ------------------------------------------------------------------------
 def test_parameter_file_layouts(tmp_path: Path) -> None:
-    from archlog.extract.ros2_params import load_param_file
+    from archlog.extract.launch.ros2_params import load_param_file
 
     path = tmp_path / "params.yaml"
     path.write_text(textwrap.dedent("""
@@ -588,7 +589,7 @@ def test_parameter_file_layouts(tmp_path: Path) -> None:
     ("/talk", "/talker", False), ("/bad[", "/bad", False),
 ])
 def test_node_keys_match_as_rclcpp_matches_them(pattern: str, node: str, expected: bool) -> None:
-    from archlog.extract.ros2_params import matches
+    from archlog.extract.launch.ros2_params import matches
 
     assert matches(pattern, node) is expected
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from archlog.analysis import analyse
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import Element, LaunchConfig, LaunchNode
+from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary
 from archlog.system.instances import complete_instances
 from archlog.values import Unknown

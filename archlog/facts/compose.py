@@ -7,7 +7,7 @@ from dataclasses import replace
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchConfig, LaunchNode
+from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary, Port, Site
 from archlog.facts.behavior import Sites, add_behavior
 from archlog.facts.similarity import near_pairs, too_long

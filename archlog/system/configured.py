@@ -11,7 +11,7 @@ import yaml
 
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchConfig, LaunchNode
+from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.summary import Port
 from archlog.extract.workspace.index import Workspace
 from archlog.system.command_line import split_options

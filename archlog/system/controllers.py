@@ -12,7 +12,7 @@ import shlex
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchConfig, LaunchNode
+from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.system.command_line import split_options
 
 VALUED = {"--namespace", "--wait-for", "--timeout", "--shutdown-timeout"}

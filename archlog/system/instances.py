@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchConfig, LaunchNode
-from archlog.extract.ros2_params import matches
+from archlog.extract.launch.model import LaunchConfig, LaunchNode
+from archlog.extract.launch.ros2_params import matches
 from archlog.extract.summary import NodeSummary
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchConfig, LaunchNode
+from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.registry import Summaries
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace

@@ -27,8 +27,8 @@ import yaml
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.errors import ConfigError
-from archlog.extract import bounded_yaml
-from archlog.extract.launch import Element
+from archlog.extract.launch import bounded_yaml
+from archlog.extract.launch.model import Element
 from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.registry import Summaries
 from archlog.extract.summary import NodeSummary, Port

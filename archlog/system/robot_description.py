@@ -16,7 +16,7 @@ from pathlib import Path
 
 from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import Element, LaunchConfig, LaunchNode
+from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import Port
 from archlog.extract.workspace.index import Workspace
 from archlog.system.command_line import split_options

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import Element, LaunchConfig, LaunchNode
+from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
 

@@ -36,16 +36,9 @@ import yaml
 
 from archlog import budget, sandbox
 from archlog.budget import BudgetExceeded
-from archlog.extract.substitution import (
-    MATH,
-    PURE_BUILTINS,
-    SubstContext,
-    SubstitutionError,
-    bounded,
-    restricted_eval,
-    spend,
-    substitute,
-)
+from archlog.extract.launch.evaluate import MATH, PURE_BUILTINS, bounded, restricted_eval, spend
+from archlog.extract.launch.model import SubstitutionError
+from archlog.extract.launch.ros1_subst import SubstContext, substitute
 
 _TOKEN = re.compile(r"(?P<dollars>\$\$+[{(])|(?P<expr>\$\{[^}]*\})|(?P<extension>\$\([^)]*\))"
                     r"|(?P<text>[^$]+|\$[^{($]+|\$$)")

@@ -13,8 +13,8 @@ from pathlib import Path
 
 from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.launch import LaunchInterpreter
-from archlog.extract.substitution import auto_value
+from archlog.extract.launch.ros1 import LaunchInterpreter
+from archlog.extract.launch.ros1_subst import auto_value
 from archlog.extract.workspace.index import Workspace
 from archlog.sandbox import Sandbox
 from archlog.values import Unknown

@@ -1,5 +1,5 @@
 """What the launch, launch_ros (and nav2_common) Python API builds, as values a static reading of
-a Python launch file can hold: actions and substitutions become launch2 objects, and the few
+a Python launch file can hold: actions and substitutions become ROS 2 launch actions and substitutions, and the few
 standard-library calls launch files use to find files (os.path, pathlib, ament_index_python,
 os.environ, open + yaml) are answered from the workspace. Anything else is `Unread`.
 """
@@ -9,356 +9,71 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Callable
-from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Protocol
 
 import yaml
 
 from archlog import sandbox
-from archlog.extract import bounded_yaml
-from archlog.extract.launch import LaunchError
-from archlog.extract.launch2 import (PYTHON, XML, YAML, Action, Component, Condition, DeclareArgument, Group,
-                                     Include, LoadComponents, Node, Opaque, ParamDict, ParamFile, ParamItem,
-                                     ParamSource, ParamText, Process, PushNamespace, Remap, SetConfiguration,
-                                     SetEnvironment, SetParameter, SetParametersFile, SetRemap, Where)
-from archlog.extract.launch2_subst import Call, Context, Parts, Rewritten, Text, opaque, perform, text
-from archlog.extract.substitution import RefusedRead, SubstitutionError, UnknownArg, Unresolved, read_file
+from archlog.extract.launch import bounded_yaml
+from archlog.extract.launch.model import LaunchError, RefusedRead, SubstitutionError, UnknownArg, Unresolved, read_file
+from archlog.extract.launch.ros2_actions import (
+    PYTHON,
+    XML,
+    YAML,
+    Action,
+    Component,
+    Condition,
+    DeclareArgument,
+    Group,
+    Include,
+    LoadComponents,
+    Node,
+    Opaque,
+    ParamFile,
+    ParamText,
+    Process,
+    PushNamespace,
+    SetConfiguration,
+    SetEnvironment,
+    SetParameter,
+    SetParametersFile,
+    SetRemap,
+)
+from archlog.extract.launch.ros2_api_values import (
+    MAX_RANGE,
+    CallSite,
+    ContextValue,
+    Description,
+    FileHandle,
+    Handler,
+    Interpreter,
+    PathValue,
+    Ref,
+    S,
+    Source,
+    Typed,
+    Unread,
+    command_words,
+    components_of,
+    description_source,
+    entities,
+    include_args,
+    listed,
+    optional_parts,
+    param_value,
+    params,
+    remap_list,
+    to_parts,
+    value_kind,
+    why,
+)
+from archlog.extract.launch.ros2_subst import Call, Context, Parts, Rewritten, perform, text
 
-MAX_RANGE = 10_000
 
-
-# -- values -------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Unread:
-    """A value archlog cannot know ahead of time, with the reason and where it was met."""
-
-    reason: str
-    line: int
-
-
-@dataclass(frozen=True)
-class Ref:
-    """An imported module, class or function, by its qualified name."""
-
-    name: str
-
-
-@dataclass(frozen=True)
-class S:
-    """A launch substitution object (or a SomeSubstitutionsType list of them)."""
-
-    parts: Parts
-
-
-@dataclass
-class Description:
-    """A LaunchDescription under construction."""
-
-    actions: list[object] = field(default_factory=list)
-
-
-class LineDict(dict):
-    """A dict literal that remembers the line of each key."""
-
-    lines: dict[object, int]
-
-
-class LineTuple(tuple):
-    """A tuple literal that remembers its line."""
-
-    line: int
-
-
-@dataclass(frozen=True)
-class PathValue:
-    """A pathlib.Path."""
-
-    path: str
-
-
-@dataclass(frozen=True)
-class FileHandle:
-    """A file opened for reading."""
-
-    path: str
-
-
-@dataclass(frozen=True)
-class ContextValue:
-    """The LaunchContext an OpaqueFunction receives."""
-
-    ctx: Context
-
-
-@dataclass(frozen=True)
-class ConfigsView:
-    """context.launch_configurations."""
-
-    ctx: Context
-
-
-@dataclass(frozen=True)
-class Source:
-    """A launch description source: the file and its dialect (None: by its name)."""
-
-    target: Parts
-    dialect: str | None
-
-
-@dataclass(frozen=True)
-class Typed:
-    """launch_ros's ParameterValue (or Parameter, with a name): a value and its declared type."""
-
-    value: object
-    kind: str | None
-    name: Parts | None = None
-
-
-@dataclass(frozen=True)
-class Handler:
-    """An event handler (OnProcessExit, ...): the actions it starts, or a callable."""
-
-    actions: object
-
-
-class Interpreter(Protocol):
-    """What API calls need from the interpreter of the file."""
-
-    path: Path
-    env: dict[str, str | UnknownArg]
-    guards: list[Condition]
-
-    def find(self, pkg: str) -> Path | None: ...
-
-    def site(self, line: int) -> int: ...
-
-    def not_given(self, name: str, line: int) -> None: ...
-
-    def refused_read(self, exc: RefusedRead, line: int) -> None:
-        """Report a file the sandbox will not read, named at `line`."""
-
-    def call(self, function: object, args: list[object], kwargs: dict[str, object], line: int) -> object: ...
-
-
-@dataclass
-class CallSite:
-    """One call of an API function: its arguments, line and interpreter."""
-
-    args: list[object]
-    kwargs: dict[str, object]
-    line: int
-    interp: Interpreter
-
-    def arg(self, index: int, name: str, default: object = None) -> object:
-        """An argument given by position or keyword."""
-        if name in self.kwargs:
-            return self.kwargs[name]
-        return self.args[index] if index < len(self.args) else default
-
-    def where(self) -> Where:
-        return Where(self.interp.path, self.interp.site(self.line))
-
-    def conditions(self) -> tuple[Condition, ...]:
-        """The action's `condition=` and the Python branches it was created in."""
-        own = self.kwargs.get("condition")
-        found = list(self.interp.guards)
-        if isinstance(own, Condition):
-            found.append(own)
-        elif own is not None:
-            found.append(Condition("guard", to_parts(own, self.line)))
-        return tuple(found)
-
-
-# -- conversions --------------------------------------------------------------------------
-def to_parts(value: object, line: int) -> Parts:
-    """A SomeSubstitutionsType value as parts (numbers are written out, as launch users expect)."""
-    if isinstance(value, str):
-        return text(value)
-    if isinstance(value, S):
-        return value.parts
-    if isinstance(value, PathValue):
-        return text(value.path)
-    if isinstance(value, bool):
-        return text(str(value).lower())
-    if isinstance(value, (int, float)):
-        return text(str(value))
-    if isinstance(value, (list, tuple)):
-        return tuple(p for item in value for p in to_parts(item, line))
-    if isinstance(value, Unread):
-        return opaque(f"{value.reason} (line {value.line})")
-    return opaque(f"a {type(value).__name__} where text was expected (line {line})")
-
-
-def optional_parts(value: object, line: int) -> Parts | None:
-    return None if value is None else to_parts(value, line)
-
-
-def entities(value: object, where: Where) -> list[Action]:
-    """The actions of a LaunchDescription, a list of entities, or one entity."""
-    if isinstance(value, Description):
-        return entities(value.actions, where)
-    if isinstance(value, (list, tuple)):
-        return [a for item in value for a in entities(item, where)]
-    if isinstance(value, Action):
-        return [value]
-    if value is None:
-        return []
-    if isinstance(value, Unread):
-        return [Opaque(where=Where(where.file, value.line), reason=value.reason)]
-    return [Opaque(where=where, reason=f"a {type(value).__name__} is not a launch entity")]
-
-
-def _listed(value: object) -> list[object]:
-    if value is None:
-        return []
-    return list(value) if isinstance(value, (list, tuple)) else [value]
-
-
-def _source(value: object, line: int) -> Source:
-    return value if isinstance(value, Source) else Source(to_parts(value, line), None)
-
-
-def _args(value: object, line: int) -> tuple[tuple[Parts, Parts], ...]:
-    """launch_arguments: pairs, or a dict (its items)."""
-    if isinstance(value, dict):
-        value = list(value.items())
-    if value is None:
-        return ()
-    if not isinstance(value, (list, tuple)):
-        raise LaunchError(f"launch_arguments is not known statically ({_why(value)})")
-    pairs = []
-    for item in value:
-        if not isinstance(item, (list, tuple)) or len(item) != 2:
-            raise LaunchError(f"launch argument {item!r} is not a (name, value) pair")
-        pairs.append((to_parts(item[0], line), to_parts(item[1], line)))
-    return tuple(pairs)
-
-
-def _why(value: object) -> str:
-    return value.reason if isinstance(value, Unread) else type(value).__name__
-
-
-def _remaps(value: object, line: int) -> tuple[Remap, ...]:
-    if value is None:
-        return ()
-    if not isinstance(value, (list, tuple)):
-        return (Remap(opaque(f"remappings not known statically ({_why(value)})"), text(""), line),)
-    found = []
-    for item in value:
-        at = getattr(item, "line", line)
-        if isinstance(item, (list, tuple)) and len(item) == 2:
-            found.append(Remap(to_parts(item[0], at), to_parts(item[1], at), at))
-        else:
-            found.append(Remap(opaque(f"remapping not known statically ({_why(item)})"), text(""), at))
-    return tuple(found)
-
-
-def _arguments(value: object, line: int) -> tuple[Parts, ...]:
-    if value is None:
-        return ()
-    if not isinstance(value, (list, tuple)):
-        return (to_parts(value, line),)
-    return tuple(to_parts(item, line) for item in value)
-
-
-_TYPES = {"str": "str", "int": "int", "float": "float", "bool": "bool", "List[str]": "list_of_str",
-          "List[int]": "list_of_int", "List[float]": "list_of_float", "List[bool]": "list_of_bool"}
-
-
-def _kind(value: object) -> str | None:
-    """A ParameterValue's value_type (str, int, List[int]...) by its name."""
-    if isinstance(value, Ref):
-        return _TYPES.get(value.name.rpartition(".")[2]) or _TYPES.get(value.name)
-    if isinstance(value, type):
-        return _TYPES.get(value.__name__)
-    return None
-
-
-def param_value(value: object, line: int) -> object:
-    """A Python parameter value as launch_ros normalizes it: text stays text, substitutions are
-    read with YAML rules, lists become uniform."""
-    if isinstance(value, Typed):
-        if isinstance(value.value, (S, list, tuple)) and _has_subst(value.value):
-            return ParamText(to_parts(value.value, line), value.kind)
-        return value.value
-    if isinstance(value, (S, Unread)):
-        return ParamText(to_parts(value, line))
-    if isinstance(value, PathValue):
-        return value.path
-    if isinstance(value, (list, tuple)):
-        items = list(value)
-        kinds = {type(v) for v in items}
-        if items and _has_subst(items) and all(isinstance(v, (str, S)) for v in items):
-            return ParamText(to_parts(items, line))
-        if kinds == {int} or kinds == {bool} or kinds == {str}:
-            return items
-        if kinds <= {int, float} and items:
-            return [float(v) for v in items]
-        return [v if isinstance(v, (str, int, float, bool)) else param_value(v, line) for v in items]
-    if value is None:
-        return ParamText(opaque(f"None as a parameter value (line {line})"))
-    return value
-
-
-def _has_subst(value: object) -> bool:
-    if isinstance(value, (list, tuple)):
-        return any(_has_subst(v) for v in value)
-    return isinstance(value, (S, Unread))
-
-
-def _dict_items(value: dict, prefix: Parts, line: int) -> list[ParamItem]:
-    """A parameter dict flattened: nested dicts give dotted names."""
-    items = []
-    lines = getattr(value, "lines", {})
-    for key, item in value.items():
-        at = lines.get(key, line)
-        name = to_parts(key, at)
-        full = (*prefix, Text("."), *name) if prefix else name
-        if isinstance(item, dict):
-            items.extend(_dict_items(item, full, at))
-        else:
-            items.append(ParamItem(full, param_value(item, at), at))
-    return items
-
-
-def params(value: object, line: int) -> tuple[ParamSource, ...]:
-    """A node's `parameters` list: dicts, Parameter descriptions and parameter files."""
-    if value is None:
-        return ()
-    if not isinstance(value, (list, tuple)):
-        return (ParamDict((ParamItem(opaque(f"parameters not known statically ({_why(value)})"), None, line),)),)
-    found: list[ParamSource] = []
-    for item in value:
-        if isinstance(item, dict):
-            found.append(ParamDict(tuple(_dict_items(item, (), line))))
-        elif isinstance(item, ParamFile):
-            found.append(item)
-        elif isinstance(item, Typed) and item.name is not None:
-            found.append(ParamDict((ParamItem(item.name, param_value(item, line), line),)))
-        elif isinstance(item, Unread):
-            found.append(ParamDict((ParamItem(opaque(f"{item.reason} (line {item.line})"), None, line),)))
-        else:
-            found.append(ParamFile(to_parts(item, line), line))
-    return tuple(found)
-
-
-def _components(value: object, where: Where) -> tuple[Component, ...]:
-    """Composable node descriptions; one that is not known is kept as such (reported when loaded)."""
-    if value is None:
-        return ()
-    items = value if isinstance(value, (list, tuple)) else [value]
-    unknown = [opaque(f"composable node description not known statically ({_why(item)})") for item in items
-               if not isinstance(item, Component)]
-    return tuple(item for item in items if isinstance(item, Component)) + \
-        tuple(Component(where=where, pkg=reason, plugin=reason) for reason in unknown)
-
-
-# -- the API ------------------------------------------------------------------------------
 def _declare(c: CallSite) -> object:
     name = c.arg(0, "name")
     if not isinstance(name, str):
-        return Unread(f"a launch argument whose name is not known ({_why(name)})", c.line)
+        return Unread(f"a launch argument whose name is not known ({why(name)})", c.line)
     choices = c.kwargs.get("choices")
     return DeclareArgument(where=c.where(), conditions=c.conditions(), name=name,
                            default=optional_parts(c.arg(1, "default_value"), c.line),
@@ -373,10 +88,11 @@ def _node(c: CallSite, container: bool = False) -> object:
     return Node(where=c.where(), conditions=c.conditions(), pkg=optional_parts(c.kwargs.get("package"), c.line),
                 exe=to_parts(exe, c.line), name=optional_parts(c.kwargs.get("name", c.kwargs.get("node_name")), c.line),
                 namespace=optional_parts(c.kwargs.get("namespace", c.kwargs.get("node_namespace")), c.line),
-                params=params(c.kwargs.get("parameters"), c.line), remaps=_remaps(c.kwargs.get("remappings"), c.line),
-                arguments=_arguments(c.kwargs.get("arguments"), c.line),
-                ros_arguments=_arguments(ros_arguments, c.line) if ros_arguments is not None else None,
-                components=_components(c.kwargs.get("composable_node_descriptions"), c.where()) if container else ())
+                params=params(c.kwargs.get("parameters"), c.line),
+                remaps=remap_list(c.kwargs.get("remappings"), c.line),
+                arguments=command_words(c.kwargs.get("arguments"), c.line),
+                ros_arguments=command_words(ros_arguments, c.line) if ros_arguments is not None else None,
+                components=components_of(c.kwargs.get("composable_node_descriptions"), c.where()) if container else ())
 
 
 def _component(c: CallSite) -> object:
@@ -385,36 +101,37 @@ def _component(c: CallSite) -> object:
                      name=optional_parts(c.kwargs.get("name"), c.line),
                      namespace=optional_parts(c.kwargs.get("namespace"), c.line),
                      params=params(c.kwargs.get("parameters"), c.line),
-                     remaps=_remaps(c.kwargs.get("remappings"), c.line))
+                     remaps=remap_list(c.kwargs.get("remappings"), c.line))
 
 
 def _load(c: CallSite) -> object:
     target = c.arg(1, "target_container")
     return LoadComponents(where=c.where(), conditions=c.conditions(),
                           target=target if isinstance(target, Node) else to_parts(target, c.line),
-                          components=_components(c.arg(0, "composable_node_descriptions"), c.where()))
+                          components=components_of(c.arg(0, "composable_node_descriptions"), c.where()))
 
 
 def _group(c: CallSite) -> object:
     keep = c.kwargs.get("launch_configurations") or {}
     return Group(where=c.where(), conditions=c.conditions(), actions=tuple(entities(c.arg(0, "actions"), c.where())),
-                 scoped=c.kwargs.get("scoped", True) is not False, forwarding=c.kwargs.get("forwarding", True) is not False,
+                 scoped=c.kwargs.get("scoped", True) is not False,
+                 forwarding=c.kwargs.get("forwarding", True) is not False,
                  keep=tuple((to_parts(k, c.line), to_parts(v, c.line)) for k, v in keep.items())
                  if isinstance(keep, dict) else ())
 
 
 def _include(c: CallSite) -> object:
-    source = _source(c.arg(0, "launch_description_source"), c.line)
+    source = description_source(c.arg(0, "launch_description_source"), c.line)
     return Include(where=c.where(), conditions=c.conditions(), target=source.target,
-                   args=_args(c.arg(1, "launch_arguments"), c.line), dialect=source.dialect)
+                   args=include_args(c.arg(1, "launch_arguments"), c.line), dialect=source.dialect)
 
 
 def _opaque_function(c: CallSite) -> object:
     function = c.arg(0, "function")
-    extra_args = _listed(c.kwargs.get("args"))
+    extra_args = listed(c.kwargs.get("args"))
     given = c.kwargs.get("kwargs")
     extra_kwargs = {str(k): v for k, v in given.items()} if isinstance(given, dict) else {}
-    if isinstance(function, Unread) or isinstance(function, Ref):
+    if isinstance(function, (Unread, Ref)):
         return Opaque(where=c.where(), conditions=c.conditions(), reason=f"OpaqueFunction {_describe(function)}")
     interp, where = c.interp, c.where()
 
@@ -449,7 +166,7 @@ def _register(c: CallSite) -> object:
 
 
 def _process(c: CallSite) -> object:
-    return Process(where=c.where(), conditions=c.conditions(), cmd=_arguments(c.arg(0, "cmd"), c.line))
+    return Process(where=c.where(), conditions=c.conditions(), cmd=command_words(c.arg(0, "cmd"), c.line))
 
 
 def _env_action(mode: str) -> Callable[[CallSite], object]:
@@ -551,7 +268,7 @@ def _inert(c: CallSite) -> object:
 
 
 CONSTRUCTORS: dict[str, Callable[[CallSite], object]] = {
-    "LaunchDescription": lambda c: Description(_listed(c.arg(0, "initial_entities"))),
+    "LaunchDescription": lambda c: Description(listed(c.arg(0, "initial_entities"))),
     "DeclareLaunchArgument": _declare,
     "SetLaunchConfiguration": _action(SetConfiguration, name="name", value="value"),
     "UnsetLaunchConfiguration": lambda c: SetConfiguration(where=c.where(), conditions=c.conditions(),
@@ -586,8 +303,9 @@ CONSTRUCTORS: dict[str, Callable[[CallSite], object]] = {
     "SetUseSimTime": _use_sim_time,
     "ParameterFile": lambda c: ParamFile(to_parts(c.arg(0, "param_file"), c.line), c.line,
                                          c.arg(1, "allow_substs", False) is True),
-    "ParameterValue": lambda c: Typed(c.arg(0, "value"), _kind(c.kwargs.get("value_type"))),
-    "Parameter": lambda c: Typed(c.arg(1, "value"), _kind(c.kwargs.get("value_type")), to_parts(c.arg(0, "name"), c.line)),
+    "ParameterValue": lambda c: Typed(c.arg(0, "value"), value_kind(c.kwargs.get("value_type"))),
+    "Parameter": lambda c: Typed(c.arg(1, "value"), value_kind(c.kwargs.get("value_type")),
+                                 to_parts(c.arg(0, "name"), c.line)),
     "IfCondition": _condition("if"), "UnlessCondition": _condition("unless"),
     "LaunchConfigurationEquals": _condition("equals"), "LaunchConfigurationNotEquals": _condition("not-equals"),
     "LaunchConfiguration": _subst("var", "variable_name", "default"),
@@ -699,7 +417,7 @@ def _open(c: CallSite) -> object:
     file, mode = c.arg(0, "file"), c.arg(1, "mode", "r")
     path = _plain_path(file)
     if path is None:
-        return Unread(f"opening a file whose path is not known ({_why(file)})", c.line)
+        return Unread(f"opening a file whose path is not known ({why(file)})", c.line)
     if not isinstance(mode, str) or any(m in mode for m in "wax+"):
         return Unread(f"{path} opened for writing", c.line)
     return FileHandle(path)
@@ -721,7 +439,7 @@ def read_text(value: object, line: int, interp: Interpreter) -> str | Unread:
         return value
     path = value.path if isinstance(value, (FileHandle, PathValue)) else None
     if path is None:
-        return Unread(f"reading {_why(value)}", line)
+        return Unread(f"reading {why(value)}", line)
     try:
         return read_file(path, "config")
     except RefusedRead as exc:

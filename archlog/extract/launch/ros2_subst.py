@@ -5,7 +5,7 @@ Substitutions nest (`$(find-pkg-share $(var pkg))`); `parse` follows launch's fr
 (quoted arguments, backslash escapes). `perform` evaluates as launch does and raises `Unresolved`
 for what depends on the machine or the run (an unset variable, a package that is not here, a
 command's output) and `SubstitutionError` for what launch itself rejects. `$(eval)` goes through
-the restricted evaluator of `substitution.py`; nothing is executed.
+the restricted evaluator of `evaluate.py`; nothing is executed.
 """
 
 from __future__ import annotations
@@ -19,10 +19,10 @@ from pathlib import Path
 import yaml
 
 from archlog import budget, sandbox
-from archlog.extract import bounded_yaml
-from archlog.extract.launch import Element
-from archlog.extract.substitution import (BUILTINS, MATH, SubstitutionError, UnknownArg, Unresolved, read_file,
-                                          restricted_eval)
+from archlog.extract.launch import bounded_yaml
+from archlog.extract.launch.evaluate import BUILTINS, MATH, restricted_eval
+from archlog.extract.launch.model import Element, SubstitutionError, UnknownArg, Unresolved, read_file
+from archlog.extract.launch.read import boolean
 
 
 @dataclass(frozen=True)
@@ -39,7 +39,7 @@ class Call:
     (`path-join`, `as-bool`) and `opaque` stands for a value archlog could not interpret."""
 
     name: str
-    args: tuple["Parts", ...] = ()
+    args: tuple[Parts, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -47,10 +47,10 @@ class Rewritten:
     """nav2_common's RewrittenYaml: a parameter file rewritten at launch (under `root_key`, with
     leaf parameters and values replaced). Only a parameter file can use it."""
 
-    source: "Parts"
-    root_key: "Parts | None"
-    params: tuple[tuple[str, "Parts"], ...]
-    values: tuple[tuple[str, "Parts"], ...]
+    source: Parts
+    root_key: Parts | None
+    params: tuple[tuple[str, Parts], ...]
+    values: tuple[tuple[str, Parts], ...]
     convert_types: bool = False
 
 
@@ -82,7 +82,7 @@ class Context:
     condition: str | None = None
     chain: tuple[Element, ...] = ()  # the include Elements that led here, outermost first
 
-    def scoped(self) -> "Context":
+    def scoped(self) -> Context:
         """A pushed copy (launch's PushLaunchConfigurations + PushEnvironment): the dictionaries
         are copied, the lists in them are shared, as in launch."""
         return replace(self, configs=dict(self.configs), env=dict(self.env))
@@ -216,10 +216,9 @@ def describe(parts: Parts) -> str:
 def truth(parts: Parts, ctx: Context) -> bool:
     """A condition expression as launch's IfCondition reads it: true/1 or false/0, any case."""
     value = perform(parts, ctx).strip().lower()
-    if value in ("true", "1"):
-        return True
-    if value in ("false", "0"):
-        return False
+    flag = boolean(value)
+    if flag is not None:
+        return flag
     raise SubstitutionError(f"condition {describe(parts)!r} is {value!r}, expected true, false, 1 or 0")
 
 

@@ -1,213 +1,23 @@
-"""roslaunch substitution args: $(arg) $(find) $(env) $(optenv) $(anon) $(dirname) $(eval).
-
-The grammar follows roslaunch 1.15: `$(cmd words)` cannot nest (a `$` inside is an error), an
-unterminated `$(` stays literal, `find` is resolved after the others, and `$(eval expr)` applies
-only when it is the whole value. `$(eval)` is interpreted over Python's AST with roslaunch's
-names (args, true/false, arg/find/env/optenv/anon/dirname, math, a few pure builtins); nothing
-from the project is ever executed. Expansion spends from the budget (archlog.budget): characters
-for what substitutions and operations are about to build (checked before building), a step per
-evaluated node, and the nesting depth of an expression.
+"""The restricted expression evaluator shared by roslaunch's $(eval), ROS 2's PythonExpression
+and Python launch files, and xacro's ${...}: pure expressions over Python's AST, nothing from the
+project ever executed. Evaluation spends from the budget (archlog.budget): characters for what
+operations are about to build (checked before building), a step per evaluated node, and the
+nesting depth of an expression.
 """
 
 from __future__ import annotations
 
 import ast
-import itertools
 import math
 import operator
-import os
 import re
 import sys
-from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
-from pathlib import Path
+from collections.abc import Callable
+from typing import Any
 
-from archlog import budget, sandbox
+from archlog import budget
+from archlog.extract.launch.model import SubstitutionError
 
-
-class SubstitutionError(Exception):
-    """A substitution roslaunch rejects."""
-
-
-class Unresolved(SubstitutionError):
-    """A substitution that depends on the machine it runs on (an unset env var, a package that
-    is not here, an arg whose value is itself unresolved)."""
-
-
-class RefusedRead(Unresolved):
-    """A file a launch file names that archlog will not read (outside the analysed paths, not a
-    regular file, too large); `code` is the sandbox's diagnostic code. The message names the path."""
-
-    def __init__(self, refused: sandbox.Refused) -> None:
-        super().__init__(str(refused))
-        self.code = refused.code
-
-
-def read_file(path: Path | str, kind: str) -> str:
-    """A file's text as a launch file reads it, under the sandbox (bad bytes become U+FFFD)."""
-    try:
-        return sandbox.read_text(path, kind)
-    except sandbox.Refused as exc:
-        raise RefusedRead(exc) from None
-
-
-def unresolved_code(exc: Unresolved, default: str) -> str:
-    """The diagnostic code for an unresolved value: the sandbox's code when a read was refused."""
-    return exc.code if isinstance(exc, RefusedRead) else default
-
-
-@dataclass(frozen=True)
-class UnknownArg:
-    """An arg whose value could not be resolved statically."""
-
-    reason: str
-
-
-@dataclass
-class SubstContext:
-    """What substitutions can see: the current file's args, package lookup and environment (the
-    variables the run was given, archlog.sandbox; never the environment archlog itself runs in).
-
-    `anon` holds the $(anon) names of this scope (roslaunch keeps them next to the args, so a
-    group or node copies them and an include starts afresh); `serial` numbers them uniquely."""
-
-    args: dict[str, str | UnknownArg]
-    find: Callable[[str], Path | None]
-    file: Path
-    anon: dict[str, str] = field(default_factory=dict)
-    env: dict[str, str] = field(default_factory=lambda: dict(sandbox.current().env))
-    serial: Iterator[int] = field(default_factory=lambda: itertools.count(1))
-
-    def arg(self, name: str) -> str:
-        if name not in self.args:
-            raise SubstitutionError(f"arg '{name}' is not defined")
-        value = self.args[name]
-        if isinstance(value, UnknownArg):
-            raise Unresolved(f"arg '{name}' is unknown ({value.reason})")
-        return value
-
-    def find_pkg(self, name: str) -> str:
-        path = self.find(name)
-        if path is None:
-            raise Unresolved(f"package '{name}' not found")
-        return str(path)
-
-    def getenv(self, name: str, default: str | None = None) -> str:
-        if name in self.env:
-            return self.env[name]
-        sandbox.not_given(name)
-        if default is None:
-            raise Unresolved(f"environment variable {name} is not given")
-        return default
-
-    def anonymous(self, name: str) -> str:
-        if name not in self.anon:
-            self.anon[name] = f"{name}_anon{next(self.serial)}"
-        return self.anon[name]
-
-    def dirname(self) -> str:
-        return os.path.abspath(os.path.dirname(str(self.file)))
-
-    def child(self, args: dict[str, str | UnknownArg] | None = None, file: Path | None = None) -> "SubstContext":
-        """A copy for a group or node scope; with `args`, a fresh scope for an included file."""
-        fresh = args is not None
-        return SubstContext(args if fresh else dict(self.args), self.find, file or self.file,
-                            {} if fresh else dict(self.anon), self.env, self.serial)
-
-
-def substitute(text: str, ctx: SubstContext) -> str:
-    """Resolve every substitution in `text` as roslaunch does."""
-    if "$(" not in text:
-        return text
-    if text.startswith("$(eval ") and text.endswith(")"):
-        return _eval(text[7:-1], ctx)
-    text = _pass(text, ctx, ("env", "optenv", "dirname", "anon", "arg"))
-    return _pass(text, ctx, ("find",))
-
-
-_VALID = ("find", "env", "optenv", "dirname", "anon", "arg")
-
-
-def _pass(text: str, ctx: SubstContext, commands: tuple[str, ...]) -> str:
-    resolved = text
-    for inner in _collect(text):
-        words = [w for w in inner.split(" ") if w]
-        if not words or words[0] not in _VALID:
-            raise SubstitutionError(f"unknown substitution command $({inner})")
-        if words[0] in commands:
-            placeholder = f"$({inner})"
-            if words[0] == "find":
-                resolved = _find(resolved, placeholder, words[1:], ctx)
-            else:
-                value = _one(words[0], words[1:], ctx)
-                budget.charge("characters", resolved.count(placeholder) * len(value))
-                resolved = resolved.replace(placeholder, value)
-    return resolved
-
-
-def _collect(text: str) -> list[str]:
-    """The insides of `$(...)` in order; a `$` or `(` inside one is an error, as in roslaunch."""
-    found: list[str] = []
-    state, buffer = "out", []
-    for char in text:
-        if char == "$":
-            if state in ("in", "open"):
-                raise SubstitutionError(f"'$' cannot be inside a substitution arg: {text}")
-            state = "dollar"
-        elif char == "(":
-            if state == "dollar":
-                state = "open"
-                continue
-            if state != "out":
-                raise SubstitutionError(f"'(' cannot be inside a substitution arg: {text}")
-        elif char == ")":
-            if state == "in":
-                found.append("".join(buffer))
-                buffer = []
-            state = "out"
-        elif state == "dollar":
-            state = "out"
-        elif state == "open":
-            state = "in"
-        if state == "in":
-            buffer.append(char)
-    return found
-
-
-def _one(command: str, words: list[str], ctx: SubstContext) -> str:
-    if command == "arg":
-        if len(words) != 1:
-            raise SubstitutionError("$(arg) takes exactly one name")
-        return ctx.arg(words[0])
-    if command == "env":
-        if len(words) != 1:
-            raise SubstitutionError("$(env) takes exactly one variable")
-        return ctx.getenv(words[0])
-    if command == "optenv":
-        if not words:
-            raise SubstitutionError("$(optenv) needs a variable")
-        return ctx.getenv(words[0], " ".join(words[1:]))
-    if command == "anon":
-        if len(words) != 1:
-            raise SubstitutionError("$(anon) takes exactly one name")
-        return ctx.anonymous(words[0])
-    return ctx.dirname()
-
-
-def _find(resolved: str, placeholder: str, words: list[str], ctx: SubstContext) -> str:
-    """$(find pkg) joined with the path that follows it up to a space (executables and share files
-    alike); one leading separator of that path is dropped."""
-    if len(words) != 1:
-        raise SubstitutionError("$(find) takes exactly one package")
-    before, _, after = resolved.partition(placeholder)
-    path, space, rest = after.partition(" ")
-    path = path.replace("\\", "/")
-    path = path[1:] if path.startswith("/") else path
-    base = ctx.find_pkg(words[0])
-    return before + (os.path.join(base, path) if path else base) + space + rest
-
-
-# -- restricted $(eval) -------------------------------------------------------------------
 _BINOPS = {
     ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, ast.Div: operator.truediv,
     ast.FloorDiv: operator.floordiv, ast.Mod: operator.mod, ast.Pow: operator.pow,
@@ -233,7 +43,7 @@ def _sum(values: object, start: object = 0) -> object:
             joined.extend(item)
             bounded(joined)
         return joined
-    return sum(items, start)  # type: ignore[arg-type]
+    return sum(items, start)  # type: ignore[call-overload]
 
 
 def _range(*bounds: int) -> range:
@@ -258,26 +68,6 @@ _SEQUENCES = (str, bytes, list, tuple)
 _HUGE = 2 ** 62  # more characters than any budget allows
 
 
-def auto_value(text: str) -> object:
-    """roslaunch's 'auto' conversion: float with a '.', int without '_', true/false, else text."""
-    number = _number(text)
-    if number is not None:
-        return number
-    lowered = text.lower()
-    if lowered in ("true", "false"):
-        return lowered == "true"
-    return text
-
-
-def _number(text: str) -> int | float | None:
-    try:
-        if "." in text:
-            return float(text)
-        return None if "_" in text else int(text)
-    except ValueError:
-        return None
-
-
 def restricted_eval(expr: str, lookup: Callable[[str], object],
                     attribute: Callable[[object, str], object] | None = None) -> object:
     """Evaluate a Python expression over the AST whitelist of `Evaluator`; names come from `lookup`,
@@ -288,6 +78,7 @@ def restricted_eval(expr: str, lookup: Callable[[str], object],
         tree = parse(expr.strip(), "<eval>", "eval")
     except (SyntaxError, ValueError) as exc:  # ValueError: a NUL byte
         raise SubstitutionError(f"$(eval) syntax error: {getattr(exc, 'msg', exc)}") from None
+    assert isinstance(tree, ast.Expression)
     return Evaluator(lookup, attribute).visit(tree.body)
 
 
@@ -440,29 +231,6 @@ def _digits(number: int) -> int:
     return abs(number).bit_length() * 3 // 10 + 1
 
 
-def _eval(expr: str, ctx: SubstContext) -> str:
-    functions: dict[str, object] = {
-        **MATH,
-        "arg": lambda name: auto_value(ctx.arg(name)), "find": ctx.find_pkg, "env": ctx.getenv,
-        "optenv": lambda n, d="": ctx.getenv(n, d), "anon": ctx.anonymous, "dirname": ctx.dirname,
-        "true": True, "false": False, "True": True, "False": False,
-    }
-
-    def lookup(name: str) -> object:
-        """roslaunch's order: its functions and math, then the args (auto-typed), then builtins."""
-        if name in functions:
-            return functions[name]
-        if name in ctx.args or name not in BUILTINS:
-            return auto_value(ctx.arg(name))
-        return BUILTINS[name]
-
-    result = restricted_eval(expr, lookup)
-    try:
-        return str(result)
-    except ValueError as exc:  # an integer with more digits than Python converts
-        raise SubstitutionError(f"$(eval) {exc}") from None
-
-
 def arithmetic(expr: str) -> object:
     """A plain arithmetic expression over numbers, pi and the math functions (for rosparam's rad())."""
     def lookup(name: str) -> object:
@@ -518,7 +286,8 @@ class Evaluator(ast.NodeVisitor):
         value = self.visit(node.value)
         spec = str(self.visit(node.format_spec)) if node.format_spec is not None else ""
         budget.charge("characters", format_size(spec, (value,), False))  # before it is written out
-        convert = {ord("s"): str, ord("r"): repr, ord("a"): ascii}.get(node.conversion, lambda v: v)
+        conversions: dict[int, Callable[[object], object]] = {ord("s"): str, ord("r"): repr, ord("a"): ascii}
+        convert = conversions.get(node.conversion, lambda v: v)
         try:
             return format(convert(value), spec)
         except (TypeError, ValueError) as exc:
@@ -546,7 +315,8 @@ class Evaluator(ast.NodeVisitor):
         return result
 
     def visit_UnaryOp(self, node: ast.UnaryOp) -> object:
-        ops = {ast.Not: operator.not_, ast.USub: operator.neg, ast.UAdd: operator.pos}
+        ops: dict[type[ast.unaryop], Callable[[Any], object]] = {
+            ast.Not: operator.not_, ast.USub: operator.neg, ast.UAdd: operator.pos}
         if type(node.op) not in ops:
             return self.generic_visit(node)
         try:
@@ -584,14 +354,14 @@ class Evaluator(ast.NodeVisitor):
             return self.generic_visit(node)
         function = self.callee(node.func)
         args = [self.visit(a) for a in node.args]
-        kwargs = {k.arg: self.visit(k.value) for k in node.keywords}
+        kwargs = {k.arg: self.visit(k.value) for k in node.keywords if k.arg is not None}
         owner = getattr(function, "__self__", None)
         if isinstance(owner, str) and getattr(function, "__name__", "") == "format" and \
                 ("__" in owner or _FIELD_ATTRIBUTE.search(owner)):
             raise SubstitutionError("$(eval) format string not allowed (it reads attributes)")
         budget.charge("characters", call_size(function, args, kwargs))
         try:
-            return bounded(function(*args, **kwargs))  # type: ignore[operator]
+            return bounded(function(*args, **kwargs))
         except (TypeError, ValueError, OverflowError, LookupError, AttributeError) as exc:
             raise SubstitutionError(f"$(eval) {exc}") from None
 

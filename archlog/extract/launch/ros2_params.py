@@ -16,7 +16,7 @@ import yaml
 
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.bounded_yaml import BoundedLoader, crossing_in
+from archlog.extract.launch.bounded_yaml import BoundedLoader, crossing_in
 
 PARAMS_KEY = "ros__parameters"
 Entry = tuple[str, str, object, int]

@@ -1,4 +1,4 @@
-"""The XML and YAML frontends of ROS 2 launch (launch_xml, launch_yaml) read into launch2 actions.
+"""The XML and YAML frontends of ROS 2 launch (launch_xml, launch_yaml) read into ROS 2 launch actions.
 
 Both dialects share one entity model: an XML element is an entity with string attributes and
 child elements; a YAML entity is a mapping whose keys are its attributes, whose list values of
@@ -13,24 +13,40 @@ from __future__ import annotations
 import shlex
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import yaml
 from lxml import etree
 
 from archlog import sandbox
-from archlog.extract import bounded_yaml
-from archlog.extract.files import parse_xml
-from archlog.extract.launch import LaunchError
-from archlog.extract.launch2 import (Action, Component, Condition, DeclareArgument, Group, Include, LoadComponents,
-                                     Node, ParamDict, ParamFile, ParamItem, ParamSource, ParamText, Process,
-                                     PushNamespace, Remap, SetConfiguration, SetEnvironment, SetParameter,
-                                     SetParametersFile, SetRemap, Where)
-from archlog.extract.launch2_subst import Parts, Text, parse, text, yaml_value
-from archlog.extract.substitution import SubstitutionError
-
-if TYPE_CHECKING:
-    from archlog.extract.launch2 import Ros2Launch
+from archlog.extract.launch import bounded_yaml
+from archlog.extract.launch.model import LaunchError, SubstitutionError
+from archlog.extract.launch.read import boolean, open_xml
+from archlog.extract.launch.ros2_actions import (
+    Action,
+    Component,
+    Condition,
+    DeclareArgument,
+    Group,
+    Include,
+    LoadComponents,
+    Node,
+    ParamDict,
+    ParamFile,
+    ParamItem,
+    ParamSource,
+    ParamText,
+    Process,
+    PushNamespace,
+    Remap,
+    SetConfiguration,
+    SetEnvironment,
+    SetParameter,
+    SetParametersFile,
+    SetRemap,
+    Where,
+)
+from archlog.extract.launch.ros2_execute import Ros2Launch
+from archlog.extract.launch.ros2_subst import Parts, Text, parse, text, yaml_value
 
 _PROCESS = {"cwd", "name", "on_exit", "launch-prefix", "output", "respawn", "respawn_max_retries", "respawn_delay",
             "sigkill_timeout", "sigterm_timeout", "shell", "emulate_tty", "env"}
@@ -52,8 +68,8 @@ INERT = {"log", "shutdown", "reset_env", "set_ros_log_dir"}  # no effect on the 
 class Entity:
     """One entity of either frontend: its tag, line, attributes and sub-entities."""
 
-    def __init__(self, tag: str, line: int, attrs: dict[str, object], subs: dict[str, list["Entity"]],
-                 children: list["Entity"] | None) -> None:
+    def __init__(self, tag: str, line: int, attrs: dict[str, object], subs: dict[str, list[Entity]],
+                 children: list[Entity] | None) -> None:
         self.tag = tag
         self.line = line
         self.attrs = attrs
@@ -68,25 +84,15 @@ class Entity:
             raise LaunchError(f"<{self.tag}> is missing the required attribute '{name}'")
         return self.attrs[name]
 
-    def sub(self, name: str) -> list["Entity"]:
+    def sub(self, name: str) -> list[Entity]:
         return self.subs.get(name, [])
 
 
 # -- XML ----------------------------------------------------------------------------------
-def describe_xml(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
+def describe_xml(path: Path, launcher: Ros2Launch) -> list[Action] | None:
     """The actions of a ROS 2 XML launch file; None (with a diagnostic) when it cannot be read."""
-    shown = launcher.workspace.display(path)
-    try:
-        root = parse_xml(path, "launch", remove_comments=True, remove_pis=True)
-    except etree.XMLSyntaxError as exc:
-        launcher.diagnostics.add(shown, exc.lineno or 1, "launch-xml", f"malformed launch XML: {exc.msg}", "error")
-        return None
-    except sandbox.Refused as exc:
-        launcher.diagnostics.add(shown, 1, exc.code, f"cannot read launch file: {exc}", "error")
-        return None
-    if root.tag != "launch":
-        launcher.diagnostics.add(shown, root.sourceline or 1, "launch-xml", f"root element is <{root.tag}>, not <launch>",
-                                 "error")
+    root = open_xml(path, launcher.workspace.display(path), launcher.diagnostics, remove_pis=True)
+    if root is None:
         return None
     return _Reader(path, launcher, typed=False).actions(_xml_entity(root).children or [])
 
@@ -126,7 +132,7 @@ def _mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> _LineDict:
 _LineLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _mapping)
 
 
-def describe_yaml(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
+def describe_yaml(path: Path, launcher: Ros2Launch) -> list[Action] | None:
     """The actions of a ROS 2 YAML launch file; None (with a diagnostic) when it cannot be read."""
     shown = launcher.workspace.display(path)
     try:
@@ -153,7 +159,7 @@ def describe_yaml(path: Path, launcher: "Ros2Launch") -> list[Action] | None:
 class _Reader:
     """Reads the entities of one file into actions, reporting what launch would reject."""
 
-    def __init__(self, path: Path, launcher: "Ros2Launch", typed: bool) -> None:
+    def __init__(self, path: Path, launcher: Ros2Launch, typed: bool) -> None:
         self.path = path
         self.launcher = launcher
         self.typed = typed  # YAML values keep their type; XML text is read with YAML rules
@@ -215,7 +221,8 @@ class _Reader:
             if entity.tag not in ("group", "timer"):  # their sub-entities are actions
                 extra |= set(entity.subs) - ATTRIBUTES[entity.tag]
             for name in sorted(extra):
-                self.problem(entity.line, "launch-attr", f"unknown <{entity.tag}> attribute '{name}' ignored", "warning")
+                self.problem(entity.line, "launch-attr", f"unknown <{entity.tag}> attribute '{name}' ignored",
+                             "warning")
             try:
                 action = handler(entity, self.where(entity.line), self.conditions(entity))
             except (SubstitutionError, LaunchError) as exc:
@@ -252,8 +259,9 @@ class _Reader:
             return default
         if isinstance(value, bool):
             return value
-        if str(value).lower() in ("true", "false"):
-            return str(value).lower() == "true"
+        flag = boolean(str(value), numeric=False)
+        if flag is not None:
+            return flag
         raise LaunchError(f"'{name}' must be true or false, not {value!r}")
 
     def _arg(self, e: Entity, where: Where, conds: tuple[Condition, ...]) -> Action:

@@ -5,7 +5,8 @@ size of what it expands to (elements, characters of scalars, nesting), so consum
 expanded tree stay within the budget. Nesting is checked while composing, before PyYAML's
 recursive composer can run out of stack. A recursive alias (an anchor used inside itself) would
 expand forever and crosses the depth limit. A loader spends from the budget of the unit being
-read when it is made (outside one, from a budget of its own: one per file). `where` is the line the loader was at when it stopped.
+read when it is made (outside one, from a budget of its own: one per file). `where` is the line
+the loader was at when it stopped.
 """
 
 from __future__ import annotations
@@ -31,7 +32,7 @@ class BoundedLoader(yaml.SafeLoader):
         self._depth = 0
         self._sizes: dict[int, _Size] = {}
 
-    def compose_node(self, parent: yaml.Node | None, index: object) -> yaml.Node:
+    def compose_node(self, parent: yaml.Node | None, index: Any) -> yaml.Node | None:
         event = self.peek_event()
         self.where = event.start_mark.line + 1
         limits = self._budget
@@ -41,6 +42,8 @@ class BoundedLoader(yaml.SafeLoader):
             node = super().compose_node(parent, index)
         finally:
             self._depth -= 1
+        if node is None:
+            return None
         if isinstance(event, yaml.AliasEvent):
             if id(node) not in self._sizes:  # used inside its own anchor: endless
                 raise budget.BudgetExceeded("depth", limits.limits["depth"])
