@@ -14,11 +14,11 @@ from pathlib import Path
 from archlog import budget, names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.controllers import controller_nodes
-from archlog.extract.cpp import CppEnvironment, extract_cpp
+from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
 from archlog.extract.files import files_under
 from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode
 from archlog.extract.messages import message_files
-from archlog.extract.msg_headers import generated_headers
+from archlog.extract.cpp.msg_headers import generated_headers
 from archlog.extract.models import BUILTIN_DIR, load_models
 from archlog.extract.python import extract_python
 from archlog.extract.summary import NodeSummary

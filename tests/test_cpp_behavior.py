@@ -8,7 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cpp import CppEnvironment, extract_cpp
+from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
 from archlog.extract.summary import NodeSummary, Site
 
 HEADER = """#pragma once

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cpp import CppEnvironment, extract_cpp
+from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
 from archlog.extract.python import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace import registered_components

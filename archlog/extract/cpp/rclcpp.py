@@ -17,11 +17,23 @@ import clang.cindex as ci
 
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic
-from archlog.extract.cache import cache_dir
-from archlog.extract.cpp_ast import (CALL_WINDOW, K, SKIP, binary_operator, camera_info, line_finder, qualified,
-                                     ros2_type, ros_type, type_from_spelling, unquote, written_args)
+from archlog.extract.cpp.ast import (
+    CALL_WINDOW,
+    SKIP,
+    K,
+    binary_operator,
+    camera_info,
+    line_finder,
+    qualified,
+    ros2_type,
+    ros_type,
+    type_from_spelling,
+    unquote,
+    written_args,
+)
+from archlog.extract.cpp.cache import cache_dir
+from archlog.extract.cpp.stubs import API_DIR
 from archlog.extract.qos import FIXED_SETTERS, PRESET_NAMES, Qos, number, seconds_text
-from archlog.extract.ros2_stubs import API_DIR
 from archlog.extract.summary import Port
 from archlog.values import ParamRef, Unknown, Value, concat
 
@@ -102,17 +114,6 @@ def node_method(ref: ci.Cursor, owner: str) -> bool:
     (nav2::LifecycleNode::create_publisher)."""
     return owner in NODE_CLASSES or (ref.kind in (K.CXX_METHOD, K.FUNCTION_TEMPLATE) and
                                      node_class(ref.semantic_parent))
-
-
-def strip(expr: ci.Cursor) -> ci.Cursor:
-    """Below implicit conversions, parentheses and temporaries to the expression as written."""
-    while expr.kind in (K.UNEXPOSED_EXPR, K.PAREN_EXPR, K.CXX_FUNCTIONAL_CAST_EXPR, K.CSTYLE_CAST_EXPR,
-                        K.CXX_STATIC_CAST_EXPR):
-        children = [c for c in expr.get_children() if c.kind not in SKIP]
-        if len(children) != 1:
-            break
-        expr = children[0]
-    return expr
 
 
 def tokens(expr: ci.Cursor) -> str:

@@ -29,14 +29,23 @@ import clang.cindex as ci
 
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
-from archlog.extract.cache import ResultCache, cache_dir, key
-from archlog.extract.cpp_ast import line_finder
-from archlog.extract.cpp_behavior import FileBehavior, link_files
-from archlog.extract.cpp_walk import FileResult, walk
+from archlog.extract.cpp.ast import line_finder
+from archlog.extract.cpp.behavior import FileBehavior, link_files
+from archlog.extract.cpp.cache import ResultCache, cache_dir, key
+from archlog.extract.cpp.roscpp import FileResult, walk
+from archlog.extract.cpp.stubs import (
+    API_DIR,
+    DUAL,
+    INTERFACE_INCLUDE,
+    Interfaces,
+    is_ros2,
+    library_for,
+    library_interfaces,
+    spelled_types,
+    stand_in_dir,
+    stub_dir,
+)
 from archlog.extract.files import files_under, unreadable
-from archlog.extract.ros2_stubs import API_DIR, DUAL, INTERFACE_INCLUDE, Interfaces, is_ros2, library_for, \
-    library_interfaces, spelled_types, stand_in_dir
-from archlog.extract.stub_headers import stub_dir
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace import manifests, pruned
 

@@ -9,11 +9,10 @@ from fractions import Fraction
 
 import clang.cindex as ci
 
-from archlog.extract.cpp_ast import K, period, qualified, written_args
-from archlog.extract.cpp_index import Host
-from archlog.extract.cpp_state import object_of
+from archlog.extract.cpp.ast import K, period, qualified, strip, written_args
+from archlog.extract.cpp.index import Host
+from archlog.extract.cpp.state import object_of
 from archlog.extract.qos import number, seconds_text
-from archlog.extract.rclcpp_walk import strip
 from archlog.values import ParamRef, Unknown, Value
 
 RATES = ("ros::Rate", "ros::WallRate", "rclcpp::Rate", "rclcpp::WallRate", "rclcpp::GenericRate", "rclcpp::RateBase")

@@ -8,11 +8,10 @@ import re
 
 import clang.cindex as ci
 
-from archlog.extract.cpp_ast import K, binary_operator, unary_operator
-from archlog.extract.cpp_index import Host
-from archlog.extract.cpp_periods import Periods
-from archlog.extract.cpp_state import Conditions, StateVar, state_var
-from archlog.extract.rclcpp_walk import strip
+from archlog.extract.cpp.ast import K, binary_operator, strip, unary_operator
+from archlog.extract.cpp.index import Host
+from archlog.extract.cpp.periods import Periods
+from archlog.extract.cpp.state import Conditions, StateVar, state_var
 from archlog.extract.summary import Guard
 from archlog.values import Value
 

@@ -178,3 +178,14 @@ def line_finder(text: str) -> Callable[[int], int]:
     counting the newlines before every match of a file would be quadratic)."""
     newlines = [m.start() for m in re.finditer("\n", text)]
     return lambda offset: bisect.bisect_left(newlines, offset) + 1
+
+
+def strip(expr: ci.Cursor) -> ci.Cursor:
+    """Below implicit conversions, parentheses and temporaries to the expression as written."""
+    while expr.kind in (K.UNEXPOSED_EXPR, K.PAREN_EXPR, K.CXX_FUNCTIONAL_CAST_EXPR, K.CSTYLE_CAST_EXPR,
+                        K.CXX_STATIC_CAST_EXPR):
+        children = [c for c in expr.get_children() if c.kind not in SKIP]
+        if len(children) != 1:
+            break
+        expr = children[0]
+    return expr

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cache import cache_dir
+from archlog.extract.cpp.cache import cache_dir
 from archlog.extract.workspace import Workspace, share_dirs
 
 DEBIAN_PYTHON = Path("/usr/bin/python3")

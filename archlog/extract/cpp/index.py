@@ -13,9 +13,8 @@ from typing import Protocol
 
 import clang.cindex as ci
 
-from archlog.extract.cpp_ast import K, SKIP, binary_operator, qualified, unary_operator, written_args
-from archlog.extract.cpp_state import CONTAINER_WRITES, POINTER_WRITES, object_of, operands
-from archlog.extract.rclcpp_walk import strip
+from archlog.extract.cpp.ast import SKIP, K, binary_operator, qualified, strip, unary_operator, written_args
+from archlog.extract.cpp.state import CONTAINER_WRITES, POINTER_WRITES, object_of, operands
 from archlog.values import Unknown, Value
 
 PUBLISH_CALLS = {

@@ -17,16 +17,29 @@ import clang.cindex as ci
 
 from archlog import names, sandbox
 from archlog.diagnostics import Diagnostic
-from archlog.extract.cache import cache_dir
-from archlog.extract.cpp_behavior import FileBehavior, read_behavior
-from archlog.extract.cpp_ast import (CALL_WINDOW, K, SKIP, assignments, camera_info, default_constructed, is_rvalue,
-                                     line_finder, period, qualified, ros_type, template_arg_type, type_from_spelling,
-                                     unquote, written_args)
-from archlog.extract.rclcpp_walk import RclcppWalker
-from archlog.extract.ros2_stubs import API_DIR
+from archlog.extract.cpp.ast import (
+    CALL_WINDOW,
+    SKIP,
+    K,
+    assignments,
+    camera_info,
+    default_constructed,
+    is_rvalue,
+    line_finder,
+    period,
+    qualified,
+    ros_type,
+    template_arg_type,
+    type_from_spelling,
+    unquote,
+    written_args,
+)
+from archlog.extract.cpp.behavior import FileBehavior, read_behavior
+from archlog.extract.cpp.cache import cache_dir
+from archlog.extract.cpp.rclcpp import RclcppWalker
+from archlog.extract.cpp.stubs import API_DIR
 from archlog.extract.summary import Port
 from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
-
 
 NODE_HANDLE = "ros::NodeHandle"
 IMAGE_TRANSPORT = "image_transport::ImageTransport"

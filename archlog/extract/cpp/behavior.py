@@ -21,13 +21,20 @@ from dataclasses import dataclass, field, replace
 
 import clang.cindex as ci
 
-from archlog.extract.cpp_ast import K, SKIP, written_args
-from archlog.extract.cpp_index import ACCESSORS, DEFINITIONS, FUNCTIONS, THREADS, FileIndex, Function, Host, Store
-from archlog.extract.cpp_paths import Paths, running
-from archlog.extract.cpp_periods import Periods
-from archlog.extract.cpp_state import (Conditions, StateVar, assigned_value, initial_value, method_value, object_of,
-                                       operands, state_var)
-from archlog.extract.rclcpp_walk import strip
+from archlog.extract.cpp.ast import SKIP, K, strip, written_args
+from archlog.extract.cpp.index import ACCESSORS, DEFINITIONS, FUNCTIONS, THREADS, FileIndex, Function, Host, Store
+from archlog.extract.cpp.paths import Paths, running
+from archlog.extract.cpp.periods import Periods
+from archlog.extract.cpp.state import (
+    Conditions,
+    StateVar,
+    assigned_value,
+    initial_value,
+    method_value,
+    object_of,
+    operands,
+    state_var,
+)
 from archlog.extract.summary import Guard, Port, Publish, Site, StateWrite
 from archlog.values import Value
 
