@@ -1,4 +1,4 @@
-"""C++ behavior across the files of a node (cpp_behavior.link_files): a publish call in one file
+"""C++ behavior across the files of a node (cpp/behavior.link_files): a publish call in one file
 reached from a callback, a loop or a thread another file registers or runs; the code of a
 workspace header the file uses; calls a file that does not compile lost from its AST; bad input.
 The single-file patterns are fixtures in corpus/cpp_ros1 and corpus/cpp_ros2."""

@@ -1,4 +1,4 @@
-"""libclang helpers shared by the roscpp walker (cpp_walk.py) and the rclcpp one (rclcpp_walk.py):
+"""libclang helpers shared by the roscpp walker (roscpp.py) and the rclcpp one (rclcpp/):
 qualified names, written arguments, literals, ROS message types from C++ types, assignments."""
 
 from __future__ import annotations
@@ -7,6 +7,7 @@ import bisect
 import ctypes
 import re
 from collections.abc import Callable
+from typing import TypeAlias
 
 import clang.cindex as ci
 
@@ -14,6 +15,8 @@ from archlog.values import Value, concat
 
 K = ci.CursorKind
 SKIP = (K.TYPE_REF, K.NAMESPACE_REF, K.TEMPLATE_REF)
+# what the walkers key declarations by: (file, line, column), None for a cursor without a file
+CursorKey: TypeAlias = tuple | None
 # ROS 2 interfaces: pkg::msg::Name, pkg::srv::Name_Request_<...>, pkg::action::Name_Goal_<...>
 ROS2_TYPE = re.compile(r"\b(\w+)::(msg|srv|action)::([A-Z][A-Za-z0-9]*)")
 MSG_TYPE = re.compile(r"\b(\w+)::(\w+?)(?:Request|Response)?_<")

@@ -63,7 +63,7 @@ def main():
                 generate_from_file(path, pkg, out, request["templates"], search,
                                    {"msg.h.template": "@NAME@.h"}, {"srv.h.template": "@NAME@.h"})
             except Exception as exc:  # genmsg raises many types for bad definitions
-                errors.append([path, "%s: %s" % (type(exc).__name__, exc)])
+                errors.append([path, f"{type(exc).__name__}: {exc}"])
     print(json.dumps({"errors": errors}))
 
 

@@ -1,20 +1,24 @@
-"""Stand-in headers for ROS 2 C++ code when its headers are not installed.
+"""Stand-in headers: what archlog puts in place of headers that are not installed, so that a
+file using them still parses. All of them are written to the cache, searched before every other
+include folder; only missing includes get one.
 
-Two kinds: the client libraries (rclcpp, rclcpp_lifecycle, rclcpp_action, rclcpp_components,
-tf2, tf2_ros, image_transport, message_filters, diagnostic_updater, bondcpp, rmw, sensor_msgs'
-helpers) are declared once, by hand,
-in `stand_ins/archlog_ros2/*.hpp` with their real qualified names and signatures; a missing
-`#include "rclcpp/node.hpp"` gets a one-line header forwarding to them. Message, service and
-action headers (`std_msgs/msg/string.hpp`) are generated: the struct templates rosidl would
-generate (`std_msgs::msg::String_<Allocator>`, `String`, `::SharedPtr`...), with fields and
-constants when the definition is found (the workspace's .msg/.srv/.action files, a few ROS 2
-core interfaces below, Debian's ROS 1 definitions of the common packages) and with the type's
-name as the code spells it otherwise.
+ROS 2 code, two kinds: the client libraries (rclcpp, rclcpp_lifecycle, rclcpp_action,
+rclcpp_components, tf2, tf2_ros, image_transport, message_filters, diagnostic_updater, bondcpp,
+rmw, sensor_msgs' helpers) are declared once, by hand, in the shipped `stand_ins/archlog_ros2/*.hpp`
+with their real qualified names and signatures; a missing `#include "rclcpp/node.hpp"` gets a
+one-line header forwarding to them. Message, service and action headers
+(`std_msgs/msg/string.hpp`) are generated: the struct templates rosidl would generate
+(`std_msgs::msg::String_<Allocator>`, `String`, `::SharedPtr`...), with fields and constants when
+the definition is found (the workspace's .msg/.srv/.action files, a few ROS 2 core interfaces
+below, Debian's ROS 1 definitions of the common packages) and with the type's name as the code
+spells it otherwise. ROS 1 headers of packages that exist in both ROS versions under the same
+include names (tf2_ros, image_transport, message_filters, diagnostic_updater, bondcpp) do not
+count as present for ROS 2 code. The headers of one translation unit go to a folder named after
+their content.
 
-Only missing includes get stand-ins. ROS 1 headers of packages that exist in both ROS versions
-under the same include names (tf2_ros, image_transport, message_filters, diagnostic_updater,
-bondcpp) do not count as present for ROS 2 code. The headers of one translation unit go to a folder named
-after their content, searched before every other include folder.
+ROS 1 code: message packages that are not installed get a minimal declaration of the type (and
+of its service or action family), named as the code spells it; the fields are missing
+(ros1_stand_in_dir).
 """
 
 from __future__ import annotations
@@ -76,7 +80,8 @@ EMBEDDED = {
         "uint8 TRANSITION_INACTIVE_SHUTDOWN=6\nuint8 TRANSITION_ACTIVE_SHUTDOWN=7\nuint8 TRANSITION_DESTROY=8\n"
         "uint8 TRANSITION_CALLBACK_SUCCESS=97\nuint8 TRANSITION_CALLBACK_FAILURE=98\n"
         "uint8 TRANSITION_CALLBACK_ERROR=99\nuint8 id\nstring label\n"),
-    "lifecycle_msgs/msg/TransitionEvent": "uint64 timestamp\nTransition transition\nState start_state\nState goal_state\n",
+    "lifecycle_msgs/msg/TransitionEvent": ("uint64 timestamp\nTransition transition\nState start_state\n"
+                                           "State goal_state\n"),
     "lifecycle_msgs/srv/ChangeState": "Transition transition\n---\nbool success\n",
     "lifecycle_msgs/srv/GetState": "---\nState current_state\n",
     "unique_identifier_msgs/msg/UUID": "uint8[16] uuid\n",
@@ -182,7 +187,9 @@ def stand_in_dir(missing: Iterable[str], spellings: set[str], interfaces: Interf
             needed = library_interfaces(library)
         else:
             match = INTERFACE_INCLUDE.match(include)
-            files[include], needed = _interface_header(*match.groups(), spellings, interfaces)
+            assert match is not None  # pending holds library and interface includes only
+            pkg, kind, header = match.groups()
+            files[include], needed = _interface_header(pkg, kind, header, spellings, interfaces)
         pending += [n for n in needed if n not in files and not exists(n)]
     if not files:
         return None
@@ -318,9 +325,7 @@ def _remove(folder: Path) -> None:
     folder.rmdir()
 
 
-# ROS 1: stand-ins for message packages that are not installed, so that a file using them still
-# parses: `#include <control_msgs/FollowJointTrajectoryAction.h>` gets a minimal declaration of the
-# type (and of its service or action family), named as the code spells it; the fields are missing.
+# ROS 1: `#include <control_msgs/FollowJointTrajectoryAction.h>` of a package not installed
 MESSAGE_INCLUDE = re.compile(r"^(\w+)/([A-Z]\w*)\.h$")
 
 _ROS1_STRUCT = """#ifndef ARCHLOG_STUB_{pkg}_{name}
@@ -339,7 +344,7 @@ typedef boost::shared_ptr<{name} const> {name}ConstPtr;
 """
 
 
-def stub_dir(missing: list[str]) -> Path | None:
+def ros1_stand_in_dir(missing: list[str]) -> Path | None:
     """A folder with stand-ins for the missing message-like includes, or None if there are none."""
     wanted = [m for name in missing if (m := MESSAGE_INCLUDE.match(name))]
     if not wanted:
