@@ -63,8 +63,6 @@ TF2 = {
     "diagnostic_updater::Updater": [("publisher", "/diagnostics", "diagnostic_msgs/msg/DiagnosticArray",
                                      Qos({"depth": "1"}))],
 }
-
-
 CONSTRUCTED_ROS2 = {*TF2, "message_filters::Subscriber"}
 
 
