@@ -33,7 +33,6 @@ from archlog.extract.cpp.ast import (
     written_args,
 )
 from archlog.extract.cpp.behavior import read_behavior
-from archlog.extract.cpp.cache import cache_dir
 from archlog.extract.cpp.handles import (
     IMAGE_TRANSPORT,
     METHODS,
@@ -46,7 +45,7 @@ from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
 from archlog.extract.cpp.rclcpp.walker import RclcppWalker
 from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp_fallback import roscpp_fallback
-from archlog.extract.cpp.stubs import API_DIR
+from archlog.extract.cpp.scope import Scope
 from archlog.extract.summary import Port
 from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
 
@@ -96,8 +95,8 @@ class _Walker:
 
     def __init__(self, source: Path, shown: str, cls: str | None = None, ros2: bool = False,
                  workspace: tuple[str, ...] = ()) -> None:
-        self.source, self.file, self.cls, self.ros2 = str(source), shown, cls, ros2
-        self.workspace = tuple(folder.rstrip("/") + "/" for folder in workspace)  # whose headers' code is read
+        self.source, self.file, self.ros2 = str(source), shown, ros2
+        self.scope = Scope(self.source, workspace, cls)
         self.result = FileResult()
         self.param_vars: dict[CursorKey, Value] = {}
         self.bindings: dict[CursorKey, ci.Cursor] = {}  # parameter -> argument, while reading a call's callee
@@ -142,7 +141,7 @@ class _Walker:
     def walk(self, root: ci.Cursor) -> None:
         cursors = [c for top in root.get_children() if self.in_main(top) for c in top.walk_preorder()
                    if self.in_main(c)]
-        cursors += self.header_code(cursors)
+        cursors += self.scope.header_code(cursors, self.key)
         for cursor in cursors:
             if cursor.kind == K.CALL_EXPR and cursor.referenced is not None:
                 self.call_sites.setdefault(self.key(cursor.referenced.canonical), []).append(cursor)
@@ -155,57 +154,14 @@ class _Walker:
                 self.handles.member_inits(cursor)
         if self.rclcpp is not None:
             self.rclcpp.prepare(cursors)
-        self.kept = self.relevant(cursors)
+        self.kept, self.spans = self.scope.relevant(cursors)
         for cursor in self.kept:
             if cursor.kind == K.CALL_EXPR:
                 self.call(cursor)
 
-    def header_code(self, cursors: list[ci.Cursor]) -> list[ci.Cursor]:
-        """The cursors of definitions in the workspace's own headers that the file's code uses
-        (base class constructors, inline methods), and of the methods those use or register as
-        callbacks, transitively."""
-        found: list[ci.Cursor] = []
-        seen: set[tuple | None] = set()
-        pending = [c.referenced for c in cursors if c.kind == K.CALL_EXPR]
-        while pending and len(seen) < 4000:
-            decl = pending.pop()
-            if decl is None or (decl_key := self.key(decl.canonical)) in seen:
-                continue
-            seen.add(decl_key)
-            definition = decl.get_definition()
-            if definition is None or not self.workspace_header(definition):
-                continue
-            body = list(definition.walk_preorder())
-            found += body
-            pending += [c.referenced for c in body if c.kind in (K.CALL_EXPR, K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)
-                        and c.referenced is not None and c.referenced.kind in _CALLABLE]
-        return found
-
     def workspace_code(self, decl: ci.Cursor) -> bool:
         """A declaration in the file or in a header of the workspace."""
-        return self.in_main(decl) or self.workspace_header(decl)
-
-    def workspace_header(self, definition: ci.Cursor) -> bool:
-        """A definition in a header of the workspace (not the file itself, not a generated header
-        or one of archlog's stand-ins)."""
-        file = definition.location.file
-        if file is None or file.name == self.source or not file.name.startswith(self.workspace):
-            return False
-        return not file.name.startswith((str(cache_dir()), str(API_DIR)))
-
-    def relevant(self, cursors: list[ci.Cursor]) -> list[ci.Cursor]:
-        """All cursors, or for a nodelet class only those inside its methods and free functions."""
-        if self.cls is None:
-            return cursors
-        kept: list[ci.Cursor] = []
-        self.spans = []
-        for cursor in cursors:
-            if cursor.kind in (K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_DECL) and cursor.is_definition():
-                owner = cursor.semantic_parent
-                if cursor.kind == K.FUNCTION_DECL or qualified(owner) == self.cls:
-                    kept += list(cursor.walk_preorder())
-                    self.spans.append((cursor.extent.start.line, cursor.extent.end.line))
-        return kept
+        return self.in_main(decl) or self.scope.workspace_header(decl)
 
     def from_call_sites(self, param: ci.Cursor, expr: ci.Cursor, evaluate: Callable[[ci.Cursor], Value],
                         what: str) -> Value:
@@ -463,7 +419,5 @@ class _Walker:
         self.result.fallback_lines += [port.line for port in ports]
         self.named_callbacks += named
 
-
-_CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)
 
 
