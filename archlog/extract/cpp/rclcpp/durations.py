@@ -15,7 +15,7 @@ from archlog.values import Unknown, Value
 
 CHRONO_LITERAL = re.compile(r"^(\d+(?:\.\d*)?|\.\d+)(h|min|s|ms|us|ns)$")
 CHRONO_UNITS = {"h": Fraction(3600), "min": Fraction(60), "s": Fraction(1), "ms": Fraction(1, 1000),
-                 "us": Fraction(1, 1000000), "ns": Fraction(1, 1000000000)}
+                "us": Fraction(1, 1000000), "ns": Fraction(1, 1000000000)}
 _CHRONO = re.compile(r"^std::(?:__\w+::)?chrono::duration<[^,<>]+(?:,\s*std::(?:__\w+::)?ratio<(\d+)[lLuU]*"
                      r"(?:,\s*(\d+)[lLuU]*)?>)?\s*>$")
 _INFINITE = Fraction(9223372036)
