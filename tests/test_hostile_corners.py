@@ -26,12 +26,12 @@ from archlog import budget
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cmake import commands
 from archlog.extract.configured import configured_ports
-from archlog.extract.cpp.ast import line_finder
+from archlog.extract.cpp.clang_ast import line_finder
+from archlog.extract.cpp.stubs import _members
 from archlog.extract.launch import Element, LaunchConfig, LaunchInterpreter, LaunchNode, convert
 from archlog.extract.models import load_models
 from archlog.extract.python import extract_python, parse_tolerant
 from archlog.extract.ros2_params import load_param_file
-from archlog.extract.cpp.stubs import _members
 from archlog.extract.workspace import Workspace
 from archlog.facts.similarity import near_pairs, too_long
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, replace
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import SKIP, CursorKey, K, strip, written_args
+from archlog.extract.cpp.clang_ast import SKIP, CursorKey, K, strip, written_args
 from archlog.extract.cpp.index import ACCESSORS, DEFINITIONS, FUNCTIONS, THREADS, FileIndex, Function, Host, Store
 from archlog.extract.cpp.paths import Paths, running
 from archlog.extract.cpp.periods import Periods

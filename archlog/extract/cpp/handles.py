@@ -9,7 +9,7 @@ from typing import Protocol
 import clang.cindex as ci
 
 from archlog import names
-from archlog.extract.cpp.ast import CursorKey, K, written_args
+from archlog.extract.cpp.clang_ast import CursorKey, K, written_args
 from archlog.values import Unknown, Value, concat
 
 NODE_HANDLE = "ros::NodeHandle"

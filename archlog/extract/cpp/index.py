@@ -13,7 +13,16 @@ from typing import Protocol
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import SKIP, CursorKey, K, binary_operator, qualified, strip, unary_operator, written_args
+from archlog.extract.cpp.clang_ast import (
+    SKIP,
+    CursorKey,
+    K,
+    binary_operator,
+    qualified,
+    strip,
+    unary_operator,
+    written_args,
+)
 from archlog.extract.cpp.state import CONTAINER_WRITES, POINTER_WRITES, object_of, operands
 from archlog.values import Unknown, Value
 

@@ -7,7 +7,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from archlog.extract.cpp.ast import line_finder
+from archlog.extract.cpp.clang_ast import line_finder
 
 MACRO_TOKENS = 1_000_000
 """Most tokens one macro of the workspace may expand to (`#define A1 A0 A0`, ... doubles)."""

@@ -8,7 +8,7 @@ import re
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import CursorKey, K, binary_operator, strip, unary_operator
+from archlog.extract.cpp.clang_ast import CursorKey, K, binary_operator, strip, unary_operator
 from archlog.extract.cpp.index import Host
 from archlog.extract.cpp.periods import Periods
 from archlog.extract.cpp.state import Conditions, StateVar, state_var

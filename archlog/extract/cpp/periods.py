@@ -9,7 +9,7 @@ from fractions import Fraction
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import CursorKey, K, period, qualified, strip, written_args
+from archlog.extract.cpp.clang_ast import CursorKey, K, period, qualified, strip, written_args
 from archlog.extract.cpp.index import Host
 from archlog.extract.cpp.state import object_of
 from archlog.extract.qos import number, seconds_text

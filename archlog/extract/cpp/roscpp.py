@@ -16,7 +16,8 @@ import clang.cindex as ci
 
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic
-from archlog.extract.cpp.ast import (
+from archlog.extract.cpp.behavior import read_behavior
+from archlog.extract.cpp.clang_ast import (
     SKIP,
     CursorKey,
     K,
@@ -32,7 +33,6 @@ from archlog.extract.cpp.ast import (
     unquote,
     written_args,
 )
-from archlog.extract.cpp.behavior import read_behavior
 from archlog.extract.cpp.handles import (
     IMAGE_TRANSPORT,
     METHODS,

@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from archlog.extract.cpp.ast import CALL_WINDOW, line_finder, type_from_spelling, unquote
+from archlog.extract.cpp.clang_ast import CALL_WINDOW, line_finder, type_from_spelling, unquote
 from archlog.extract.cpp.handles import METHODS, NODE_HANDLE, NODELET_HANDLES
 from archlog.extract.summary import Port
 from archlog.values import Unknown, Value

@@ -7,8 +7,8 @@ from collections.abc import Callable
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import CursorKey, K, qualified
 from archlog.extract.cpp.cache import cache_dir
+from archlog.extract.cpp.clang_ast import CursorKey, K, qualified
 from archlog.extract.cpp.stubs import API_DIR
 
 _CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)

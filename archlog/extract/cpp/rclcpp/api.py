@@ -8,7 +8,7 @@ import re
 import clang.cindex as ci
 
 from archlog import sandbox
-from archlog.extract.cpp.ast import SKIP, K, qualified, strip, written_args
+from archlog.extract.cpp.clang_ast import SKIP, K, qualified, strip, written_args
 
 NODE_CLASSES = ("rclcpp::Node", "rclcpp_lifecycle::LifecycleNode")
 # Node methods (and free functions of the same name) -> port kind

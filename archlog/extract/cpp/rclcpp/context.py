@@ -6,7 +6,7 @@ from typing import Protocol
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import CursorKey
+from archlog.extract.cpp.clang_ast import CursorKey
 from archlog.extract.cpp.result import FileResult
 from archlog.values import Unknown, Value
 

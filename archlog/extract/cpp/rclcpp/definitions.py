@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import K
+from archlog.extract.cpp.clang_ast import K
 
 
 class Definitions:

@@ -8,7 +8,7 @@ from typing import Protocol
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import SKIP, K, qualified, strip, written_args
+from archlog.extract.cpp.clang_ast import SKIP, K, qualified, strip, written_args
 from archlog.extract.cpp.rclcpp.api import macro_name, tokens
 from archlog.extract.qos import number, seconds_text
 from archlog.values import Unknown, Value

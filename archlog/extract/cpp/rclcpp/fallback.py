@@ -9,8 +9,8 @@ from fractions import Fraction
 import clang.cindex as ci
 
 from archlog import sandbox
-from archlog.extract.cpp.ast import CALL_WINDOW, line_finder, type_from_spelling, unquote
 from archlog.extract.cpp.cache import cache_dir
+from archlog.extract.cpp.clang_ast import CALL_WINDOW, line_finder, type_from_spelling, unquote
 from archlog.extract.cpp.rclcpp.api import ENTITIES
 from archlog.extract.cpp.rclcpp.context import WalkContext
 from archlog.extract.cpp.rclcpp.durations import CHRONO_LITERAL, CHRONO_UNITS

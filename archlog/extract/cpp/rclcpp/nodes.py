@@ -5,7 +5,7 @@ from __future__ import annotations
 import clang.cindex as ci
 
 from archlog.diagnostics import Diagnostic
-from archlog.extract.cpp.ast import CursorKey, K, qualified, written_args
+from archlog.extract.cpp.clang_ast import CursorKey, K, qualified, written_args
 from archlog.extract.cpp.rclcpp.api import NODE_CLASSES, object_of, parameter_names
 from archlog.extract.cpp.rclcpp.context import WalkContext
 from archlog.extract.cpp.rclcpp.definitions import Definitions

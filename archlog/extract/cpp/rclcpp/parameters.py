@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import K, qualified, written_args
+from archlog.extract.cpp.clang_ast import K, qualified, written_args
 from archlog.extract.cpp.rclcpp.api import NODE_CLASSES, PARAMETER_READS, object_of, parameter_helper
 from archlog.extract.cpp.rclcpp.context import WalkContext
 from archlog.values import ParamRef, Value

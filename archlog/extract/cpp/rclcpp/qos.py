@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import SKIP, K, qualified, strip, written_args
+from archlog.extract.cpp.clang_ast import SKIP, K, qualified, strip, written_args
 from archlog.extract.cpp.rclcpp.api import chain_root, default_argument, object_of, parameter_names, tokens
 from archlog.extract.cpp.rclcpp.context import WalkContext
 from archlog.extract.cpp.rclcpp.definitions import Definitions

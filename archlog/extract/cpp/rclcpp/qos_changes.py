@@ -7,7 +7,7 @@ from typing import Protocol
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import CursorKey, K, binary_operator, qualified, strip
+from archlog.extract.cpp.clang_ast import CursorKey, K, binary_operator, qualified, strip
 from archlog.extract.cpp.rclcpp.api import chain_root
 
 _CONDITIONAL = (K.IF_STMT, K.FOR_STMT, K.WHILE_STMT, K.DO_STMT, K.SWITCH_STMT, K.CXX_FOR_RANGE_STMT,

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import clang.cindex as ci
 
-from archlog.extract.cpp.ast import (
+from archlog.extract.cpp.clang_ast import (
     SKIP,
     K,
     camera_info,

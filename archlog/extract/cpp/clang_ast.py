@@ -1,5 +1,7 @@
-"""libclang helpers shared by the roscpp walker (roscpp.py) and the rclcpp one (rclcpp/):
-qualified names, written arguments, literals, ROS message types from C++ types, assignments."""
+"""libclang helpers shared by the roscpp walker (roscpp.py), the rclcpp one (rclcpp/) and behavior:
+qualified names, written arguments, literals, ROS message types from C++ types, assignments,
+expressions below implicit conversions (strip). Not named ast.py: gencpp_driver.py runs by path
+from this folder, where that name would hide the standard library's ast."""
 
 from __future__ import annotations
 
