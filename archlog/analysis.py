@@ -14,11 +14,11 @@ from archlog import budget, sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.errors import ConfigError
 from archlog.extract import registry
-from archlog.extract.cpp import CppEnvironment, extract_cpp
+from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
+from archlog.extract.cpp.msg_headers import generated_headers
 from archlog.extract.files import files_under
 from archlog.extract.launch.model import LaunchConfig
 from archlog.extract.launch.ros1 import LaunchInterpreter
-from archlog.extract.msg_headers import generated_headers
 from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace

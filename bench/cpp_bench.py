@@ -60,8 +60,8 @@ def behavior(calls: dict[tuple[str, int], list[Publish]]) -> str:
 
 
 def system(root: Path) -> dict[tuple[str, int], list[Publish]]:
-    from archlog.extract.cpp import CppEnvironment, extract_cpp, is_ros2_source
-    from archlog.extract.msg_headers import generated_headers
+    from archlog.extract.cpp.extract import CppEnvironment, extract_cpp, is_ros2_source
+    from archlog.extract.cpp.msg_headers import generated_headers
 
     sink = DiagnosticSink()
     start = time.perf_counter()

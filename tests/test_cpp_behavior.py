@@ -1,4 +1,4 @@
-"""C++ behavior across the files of a node (cpp_behavior.link_files): a publish call in one file
+"""C++ behavior across the files of a node (cpp/behavior.link_files): a publish call in one file
 reached from a callback, a loop or a thread another file registers or runs; the code of a
 workspace header the file uses; calls a file that does not compile lost from its AST; bad input.
 The single-file patterns are fixtures in corpus/cpp_ros1 and corpus/cpp_ros2."""
@@ -8,7 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cpp import CppEnvironment, extract_cpp
+from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
 from archlog.extract.summary import NodeSummary, Site
 
 HEADER = """#pragma once

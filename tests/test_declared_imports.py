@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parent.parent
 # Scripts that run under Debian's /usr/bin/python3 (ROS 1 imports only there), started as
 # subprocesses: their imports come from Debian's packages (debian-packages.txt), not from PyPI.
 DEBIAN_PYTHON = {
-    "archlog/extract/gencpp_driver.py",
+    "archlog/extract/cpp/gencpp_driver.py",
     "bench/debian_nodes/feeder.py",
     "tests/support/roslaunch_oracle.py",
     "tests/support/topic_monitor.py",

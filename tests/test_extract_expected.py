@@ -15,7 +15,7 @@ from support.describe import describe
 from support.goldens import compare_text
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cpp import CppEnvironment, extract_cpp
+from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
 from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.executables import registered_components

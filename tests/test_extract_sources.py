@@ -6,7 +6,7 @@ import json
 from pathlib import Path
 
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cpp import CppEnvironment, extract_cpp
+from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
 from archlog.extract.python.node import extract_python
 from archlog.values import ParamRef, Unknown
 

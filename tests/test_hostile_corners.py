@@ -24,14 +24,14 @@ from support.hostile import Outside, problems, run_check
 
 from archlog import budget
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cpp_ast import line_finder
+from archlog.extract.cpp.clang_ast import line_finder
+from archlog.extract.cpp.stubs import _members
 from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
 from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.launch.ros1_params import convert
 from archlog.extract.launch.ros2_params import load_param_file
 from archlog.extract.python.node import extract_python
 from archlog.extract.python.repair import parse_tolerant
-from archlog.extract.ros2_stubs import _members
 from archlog.extract.workspace.cmake import commands
 from archlog.extract.workspace.index import Workspace
 from archlog.facts.similarity import near_pairs, too_long

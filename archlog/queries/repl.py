@@ -18,7 +18,7 @@ from rich.table import Table
 from rich.text import Text
 
 from archlog.analysis import Analysis
-from archlog.extract.cache import cache_dir
+from archlog.extract.cpp.cache import cache_dir
 from archlog.facts.schema import BY_NAME, DERIVED_BY_NAME
 from archlog.queries.session import QueryError, Result, Session
 from archlog.rules.engine import Finding, render

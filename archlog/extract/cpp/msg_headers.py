@@ -11,7 +11,7 @@ from pathlib import Path
 
 from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.cache import cache_dir
+from archlog.extract.cpp.cache import cache_dir
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.packages import share_dirs
 
@@ -23,7 +23,7 @@ DRIVER = Path(__file__).with_name("gencpp_driver.py")
 def generated_headers(workspace: Workspace, diagnostics: DiagnosticSink) -> Path | None:
     """An include folder with headers for every workspace message of ROS 1 packages, or None when
     there are none (or gencpp is not installed: then ports using them are read without their
-    types). ROS 2 packages' interfaces get stand-ins from their definitions instead (ros2_stubs.py).
+    types). ROS 2 packages' interfaces get stand-ins from their definitions instead (stubs.py).
     The generator reads copies of the definitions the sandbox allows, never the workspace itself."""
     texts = _definitions(workspace, diagnostics)
     if not texts:

@@ -1,4 +1,4 @@
-"""One pass over a C++ file's cursors for behavior (cpp_behavior.py): its functions and lambdas,
+"""One pass over a C++ file's cursors for behavior (behavior.py): its functions and lambdas,
 its publish calls, its writes (assignments, member initializers, container and pointer methods,
 arguments passed by non-const reference), what is stored in each variable, and the calls that
 register, hand on or invoke callbacks."""
@@ -13,9 +13,17 @@ from typing import Protocol
 
 import clang.cindex as ci
 
-from archlog.extract.cpp_ast import K, SKIP, binary_operator, qualified, unary_operator, written_args
-from archlog.extract.cpp_state import CONTAINER_WRITES, POINTER_WRITES, object_of, operands
-from archlog.extract.rclcpp_walk import strip
+from archlog.extract.cpp.clang_ast import (
+    SKIP,
+    CursorKey,
+    K,
+    binary_operator,
+    qualified,
+    strip,
+    unary_operator,
+    written_args,
+)
+from archlog.extract.cpp.state import CONTAINER_WRITES, POINTER_WRITES, object_of, operands
 from archlog.values import Unknown, Value
 
 PUBLISH_CALLS = {
@@ -37,14 +45,14 @@ ACCESSORS = ("operator->", "operator*", "operator[]", "at", "get", "back", "fron
 
 
 class Host(Protocol):
-    """What the walker (cpp_walk._Walker) gives behavior: ids and shown files of cursors, values,
+    """What the walker (roscpp._Walker) gives behavior: ids and shown files of cursors, values,
     and the file's calls by callee."""
 
     file: str
     source: str
-    call_sites: dict[tuple, list[ci.Cursor]]
+    call_sites: dict[CursorKey, list[ci.Cursor]]
 
-    def key(self, decl: ci.Cursor | None) -> tuple | None: ...
+    def key(self, decl: ci.Cursor | None) -> CursorKey: ...
     def shown(self, cursor: ci.Cursor) -> str: ...
     def workspace_code(self, decl: ci.Cursor) -> bool: ...
     def value(self, expr: ci.Cursor, depth: int = 0) -> Value: ...
@@ -56,7 +64,7 @@ class Host(Protocol):
 class Function:
     """A function definition or lambda of the file (or of a workspace header it uses)."""
 
-    id: tuple
+    id: CursorKey
     cursor: ci.Cursor
     file: str
     start: int
@@ -82,10 +90,10 @@ class FileIndex:
     key: Callable[[ci.Cursor | None], tuple | None]
     port_calls: Collection[ci.Cursor]
     functions: list[Function] = field(default_factory=list)
-    by_id: dict[tuple, Function] = field(default_factory=dict)
+    by_id: dict[CursorKey, Function] = field(default_factory=dict)
     publishes: list[ci.Cursor] = field(default_factory=list)
     stores: list[Store] = field(default_factory=list)
-    flows: dict[tuple, list[ci.Cursor]] = field(default_factory=dict)  # variable -> what is stored in it
+    flows: dict[CursorKey, list[ci.Cursor]] = field(default_factory=dict)  # variable -> what is stored in it
     registrations: list[ci.Cursor] = field(default_factory=list)
     handoffs: list[ci.Cursor] = field(default_factory=list)
     invocations: list[ci.Cursor] = field(default_factory=list)  # f() on a variable holding a lambda
@@ -211,7 +219,7 @@ def root_decl(expr: ci.Cursor) -> ci.Cursor | None:
     return None
 
 
-def _function(fid: tuple, cursor: ci.Cursor) -> Function:
+def _function(fid: CursorKey, cursor: ci.Cursor) -> Function:
     extent = cursor.extent
     return Function(fid, cursor, extent.start.file.name if extent.start.file is not None else "",
                     extent.start.offset, extent.end.offset)

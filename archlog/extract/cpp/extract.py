@@ -1,12 +1,12 @@
-"""roscpp and rclcpp nodes: parse C++ with libclang and hand each file to the walker (cpp_walk.py).
+"""roscpp and rclcpp nodes: parse C++ with libclang and hand each file to the walker (roscpp.py).
 
 No compile database is needed: include paths come from the workspace (include/ folders and
 include_directories()), headers generated for the workspace's own messages, /opt/ros/*/include
 and /usr/include. ros/ros.h is precompiled once per machine (a PCH in the cache folder), and
 each file's result is stored in an on-disk cache keyed by its content and every flag.
 
-Headers that are not installed get stand-ins: ROS 1 message headers (stub_headers.py), and for
-ROS 2 code the client libraries and interfaces (ros2_stubs.py), searched first. Errors that come
+Headers that are not installed get stand-ins: ROS 1 message headers (stubs.py), and for
+ROS 2 code the client libraries and interfaces (stubs.py), searched first. Errors that come
 from what a stand-in lacks are not the code's fault: they only make the walker read the lines
 it lost from the tokens.
 """
@@ -29,14 +29,24 @@ import clang.cindex as ci
 
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
-from archlog.extract.cache import ResultCache, cache_dir, key
-from archlog.extract.cpp_ast import line_finder
-from archlog.extract.cpp_behavior import FileBehavior, link_files
-from archlog.extract.cpp_walk import FileResult, walk
+from archlog.extract.cpp.behavior import FileBehavior, link_files
+from archlog.extract.cpp.cache import ResultCache, cache_dir, key
+from archlog.extract.cpp.macros import MACRO_TOKENS, Macro, defines, macro_bomb, nested_calls
+from archlog.extract.cpp.result import FileResult
+from archlog.extract.cpp.roscpp import walk
+from archlog.extract.cpp.stubs import (
+    API_DIR,
+    DUAL,
+    INTERFACE_INCLUDE,
+    Interfaces,
+    is_ros2,
+    library_for,
+    library_interfaces,
+    ros1_stand_in_dir,
+    spelled_types,
+    stand_in_dir,
+)
 from archlog.extract.files import files_under, unreadable
-from archlog.extract.ros2_stubs import API_DIR, DUAL, INTERFACE_INCLUDE, Interfaces, is_ros2, library_for, \
-    library_interfaces, spelled_types, stand_in_dir
-from archlog.extract.stub_headers import stub_dir
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.packages import manifests, pruned
 
@@ -44,8 +54,6 @@ _KEEP_GOING = 0x200
 SOURCE_CAP = 512 << 10
 """Largest C++ source parsed (bytes): libclang and the walk take ~13 s a MiB, and no node's file
 is near it (headers it includes are not capped: only their code a node calls is walked)."""
-MACRO_TOKENS = 1_000_000
-"""Most tokens one macro of the workspace may expand to (`#define A1 A0 A0`, ... doubles)."""
 _NOT_FOUND = re.compile(r"'([^']+)' file not found")
 _HEADER_SUFFIXES = {".h", ".hh", ".hpp", ".hxx", ".cuh"}
 
@@ -264,12 +272,12 @@ def _blocked_includes(tu: ci.TranslationUnit, source: Path, shown: str, scan: _S
 
 def _parse_ros1(index: ci.Index, source: Path, env: CppEnvironment, scan: _Scan) -> ci.TranslationUnit:
     """ROS 1 code: with ros/ros.h precompiled and stand-ins for message headers not installed."""
-    stubs = stub_dir(scan.missing)
+    stubs = ros1_stand_in_dir(scan.missing)
     extra = [f"-I{stubs}"] if stubs else []
     own = env.file_args(source)
     tu = _load(index, source, env.parse_args(source) + extra, env.args + own + extra, scan.unsaved)
     missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
-    more = stub_dir(missing) if missing else None
+    more = ros1_stand_in_dir(missing) if missing else None
     if more is not None and not extra:  # found only while parsing (included by a header): again
         tu = _load(index, source, env.parse_args(source) + [f"-I{more}"], env.args + own + [f"-I{more}"],
                    scan.unsaved)
@@ -337,7 +345,7 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
     dual: list[str] = []
     args = env.file_args(source)
     blocked = env.refused + _refused_includes([word for flag, word in zip(args, args[1:]) if flag == "-include"])
-    macros: dict[str, _Macro] = {}
+    macros: dict[str, Macro] = {}
     while queue and len(seen) < 400:
         path = queue.pop(0)
         try:
@@ -349,7 +357,7 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
         dirs = [path.parent] + folders
         blocked += _refused_includes([str(folder / name) for name in _named_files(text) for folder in dirs])
         read.append((path, text))
-        macros.update(_defines(path, text))
+        macros.update(defines(path, text))
         for name in _INCLUDE.findall(text):
             found = env.find(name, dirs)
             if str(found) in blocked or found is None and any(str(folder / name) in blocked for folder in dirs):
@@ -361,7 +369,7 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
                 seen.add(found)
                 queue.append(found)
     return _Scan(list(dict.fromkeys(missing)), list(dict.fromkeys(dual)), spelled_types(texts),
-                 any(is_ros2(t) for t in texts), _macro_bomb(macros) or _nested_calls(read, macros),
+                 any(is_ros2(t) for t in texts), macro_bomb(macros) or nested_calls(read, macros),
                  list(dict.fromkeys(blocked)))
 
 
@@ -380,67 +388,6 @@ def _refused_includes(candidates: list[str]) -> list[str]:
     """The candidate paths of an include (and -include'd files) that exist but that the sandbox
     will not read: outside the reading roots, symlinked out, devices, FIFOs, folders."""
     return [p for p in candidates if os.path.lexists(p) and not _own(p) and unreadable(p, "source") is not None]
-
-
-_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)(\([^)\n]*\))?(.*)$", re.M)
-_WORD = re.compile(r"\w+")
-_CALL_OR_PAREN = re.compile(r"(\w+)\s*\(|[()]")
-
-
-@dataclass(frozen=True)
-class _Macro:
-    file: Path
-    line: int
-    words: list[str]  # of its body
-    copies: int = 1  # function-like: the most times its body uses one parameter
-
-
-def _defines(path: Path, text: str) -> dict[str, _Macro]:
-    """The macros a file defines, by name."""
-    found, line_of = {}, line_finder(text)
-    for m in _DEFINE.finditer(text):
-        words = _WORD.findall(m.group(3))
-        params = _WORD.findall(m.group(2) or "")
-        found[m.group(1)] = _Macro(path, line_of(m.start()), words, max((words.count(p) for p in params), default=1))
-    return found
-
-
-def _nested_calls(texts: list[tuple[Path, str]], macros: dict[str, _Macro]) -> tuple[Path, int, str] | None:
-    """(file, line, name) where calls of function-like macros that copy their argument nest so
-    deep that the copies pass MACRO_TOKENS (`#define F(x) x x` and F(F(F(...))))."""
-    for path, text in texts:
-        product, stack = 1, list[int]()
-        for m in _CALL_OR_PAREN.finditer(text):
-            if m.group(0) == ")":
-                product //= stack.pop() if stack else 1
-                continue
-            copies = macros[m.group(1)].copies if m.group(1) in macros else 1
-            stack.append(copies)
-            product *= copies
-            if product > MACRO_TOKENS:
-                return path, line_finder(text)(m.start()), m.group(1)
-    return None
-
-
-def _macro_bomb(macros: dict[str, _Macro]) -> tuple[Path, int, str] | None:
-    """(file, line, name) of a macro whose expansion passes MACRO_TOKENS words, else None. Sizes
-    are computed bottom-up without recursion; a macro met again while expanding counts one word."""
-    size: dict[str, int] = {}
-    for root in (name for name in macros if name not in size):
-        stack, open_ = [(root, iter(macros[root].words))], {root}
-        while stack:
-            name, words = stack[-1]
-            child = next((w for w in words if w in macros and w not in size and w not in open_), None)
-            if child is not None:
-                stack.append((child, iter(macros[child].words)))
-                open_.add(child)
-                continue
-            stack.pop()
-            open_.discard(name)
-            size[name] = sum(size.get(w, 1) if w in macros else 1 for w in macros[name].words)
-            if size[name] > MACRO_TOKENS:
-                return macros[name].file, macros[name].line, name
-    return None
 
 
 _STAND_IN_NAME = re.compile(r"\b(?:rclcpp\w*|rmw|rcl|tf2_ros|tf2|image_transport|message_filters|diagnostic_updater|"

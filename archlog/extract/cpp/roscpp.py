@@ -8,45 +8,52 @@ compile, calls the AST lost are read from the tokens.
 
 from __future__ import annotations
 
-import re
-from dataclasses import dataclass, field
-from functools import lru_cache
+from collections.abc import Callable
+from fractions import Fraction
 from pathlib import Path
 
 import clang.cindex as ci
 
-from archlog import names, sandbox
+from archlog import sandbox
 from archlog.diagnostics import Diagnostic
-from archlog.extract.cache import cache_dir
-from archlog.extract.cpp_behavior import FileBehavior, read_behavior
-from archlog.extract.cpp_ast import (CALL_WINDOW, K, SKIP, assignments, camera_info, default_constructed, is_rvalue,
-                                     line_finder, period, qualified, ros_type, template_arg_type, type_from_spelling,
-                                     unquote, written_args)
-from archlog.extract.rclcpp_walk import RclcppWalker
-from archlog.extract.ros2_stubs import API_DIR
+from archlog.extract.cpp.behavior import read_behavior
+from archlog.extract.cpp.clang_ast import (
+    SKIP,
+    CursorKey,
+    K,
+    assignments,
+    camera_info,
+    default_constructed,
+    is_rvalue,
+    period,
+    qualified,
+    ros_type,
+    template_arg_type,
+    type_from_spelling,
+    unquote,
+    written_args,
+)
+from archlog.extract.cpp.handles import (
+    IMAGE_TRANSPORT,
+    METHODS,
+    NODE_HANDLE,
+    Handles,
+    is_handle_type,
+)
+from archlog.extract.cpp.rclcpp.durations import Durations
+from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
+from archlog.extract.cpp.rclcpp.walker import RclcppWalker
+from archlog.extract.cpp.result import FileResult
+from archlog.extract.cpp.roscpp_fallback import roscpp_fallback
+from archlog.extract.cpp.scope import Scope
 from archlog.extract.summary import Port
 from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
 
-
-NODE_HANDLE = "ros::NodeHandle"
-IMAGE_TRANSPORT = "image_transport::ImageTransport"
-HANDLE_TYPES = (NODE_HANDLE, IMAGE_TRANSPORT)
-# (class, method) -> port kind
-METHODS = {
-    (NODE_HANDLE, "advertise"): "publisher", (NODE_HANDLE, "subscribe"): "subscriber",
-    (NODE_HANDLE, "advertiseService"): "service_server", (NODE_HANDLE, "serviceClient"): "service_client",
-    (IMAGE_TRANSPORT, "advertise"): "publisher", (IMAGE_TRANSPORT, "subscribe"): "subscriber",
-    (IMAGE_TRANSPORT, "advertiseCamera"): "publisher", (IMAGE_TRANSPORT, "subscribeCamera"): "subscriber",
-    ("message_filters::Subscriber", "subscribe"): "subscriber",
-}
-# nodelet::Nodelet accessors for the manager-provided handles
-NODELET_HANDLES = {"getNodeHandle": "", "getMTNodeHandle": "", "getPrivateNodeHandle": "~",
-                   "getMTPrivateNodeHandle": "~"}
 PARAM_READS = {"param", "getParam", "getParamCached", "hasParam", "searchParam", "get", "getCached", "has", "search"}
 PARAM_WRITES = {"setParam", "deleteParam", "set", "del"}
 TIMERS = {"createTimer", "createWallTimer", "createSteadyTimer"}
 # constructed objects that are ports: class -> (kind, fixed name or None, index of the name argument)
-CONSTRUCTED = {
+CONSTRUCTED: dict[str, list[tuple[str, str | None, int | None]]] = {
     "message_filters::Subscriber": [("subscriber", None, 1)],
     "actionlib::SimpleActionServer": [("action_server", None, 1)],
     "actionlib::ActionServer": [("action_server", None, 1)],
@@ -64,35 +71,16 @@ CONSTRUCTED = {
 }
 FIXED_TYPES = {
     "/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage", "/diagnostics": "diagnostic_msgs/DiagnosticArray",
-    "set_parameters": "dynamic_reconfigure/Reconfigure", "parameter_descriptions": "dynamic_reconfigure/ConfigDescription",
+    "set_parameters": "dynamic_reconfigure/Reconfigure",
+    "parameter_descriptions": "dynamic_reconfigure/ConfigDescription",
     "parameter_updates": "dynamic_reconfigure/Config",
 }
-_FALLBACK = re.compile(r"(\w+)\s*(?:\.|->)\s*(advertise|subscribe|advertiseService|serviceClient)\s*"
-                       r"(?:<\s*([\w:\s]+?)\s*>)?\s*\(\s*(\"(?:[^\"\\]|\\.)*\"|\w+)")
-
-
-@dataclass
-class FileResult:
-    """What one C++ file contributes to its executable's summary."""
-
-    ports: list[Port] = field(default_factory=list)
-    default_name: Value | None = None
-    anonymous: bool = False
-    name_file: str = ""
-    name_line: int = 0
-    namespace: Value = ""
-    incomplete: str | None = None
-    diagnostics: list[Diagnostic] = field(default_factory=list)
-    fallback_lines: list[int] = field(default_factory=list)
-    depends: list[tuple[str, int]] = field(default_factory=list)
-    missing: list[str] = field(default_factory=list)
-    behavior: FileBehavior = field(default_factory=FileBehavior)
 
 
 def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool, cls: str | None = None,
          ros2: bool = False, workspace: tuple[str, ...] = ()) -> FileResult:
     """Read one parsed file; with `cls`, only that class's methods (and free functions) count.
-    `ros2`: the file is ROS 2 code (rclcpp_walk.py reads its API)."""
+    `ros2`: the file is ROS 2 code (rclcpp/walker.py reads its API)."""
     walker = _Walker(source, shown, cls, ros2, workspace or (str(source.parent),))
     walker.walk(tu.cursor)
     if incomplete_ast:
@@ -102,24 +90,28 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     return walker.result
 
 
-class _Walker(RclcppWalker):
+class _Walker:
+    """Reads the ROS calls of one file (roscpp here; rclcpp through RclcppWalker when `ros2`)."""
+
     def __init__(self, source: Path, shown: str, cls: str | None = None, ros2: bool = False,
                  workspace: tuple[str, ...] = ()) -> None:
-        self.source, self.file, self.cls, self.ros2 = str(source), shown, cls, ros2
-        self.workspace = tuple(folder.rstrip("/") + "/" for folder in workspace)  # whose headers' code is read
+        self.source, self.file, self.ros2 = str(source), shown, ros2
+        self.scope = Scope(self.source, workspace, cls)
         self.result = FileResult()
-        self.handles: dict[tuple, Value] = {}
-        self.param_vars: dict[tuple, Value] = {}
-        self.bindings: dict[tuple, ci.Cursor] = {}  # parameter -> argument, while reading a call's callee
-        self.call_sites: dict[tuple, list[ci.Cursor]] = {}
+        self.param_vars: dict[CursorKey, Value] = {}
+        self.bindings: dict[CursorKey, ci.Cursor] = {}  # parameter -> argument, while reading a call's callee
+        self.call_sites: dict[CursorKey, list[ci.Cursor]] = {}
         self.spans: list[tuple[int, int]] | None = None
-        self.loops: dict[tuple, ci.Cursor] = {}
-        self.port_calls: dict[ci.Cursor, list[str]] = {}  # the call that made each port (cpp_behavior.py)
+        self.loops: dict[CursorKey, ci.Cursor] = {}
+        self.port_calls: dict[ci.Cursor, list[str]] = {}  # the call that made each port (behavior.py)
         self.named_callbacks: list[tuple[str, Port]] = []  # functions named in calls read from the tokens
         self.kept: list[ci.Cursor] = []
+        self.durations = Durations(self)
+        self.handles = Handles(self)
+        self.rclcpp = RclcppWalker(self, self.durations) if ros2 else None
 
     @staticmethod
-    def key(decl: ci.Cursor | None) -> tuple | None:
+    def key(decl: ci.Cursor | None) -> CursorKey:
         if decl is None or decl.location.file is None:
             return None
         return (decl.location.file.name, decl.location.line, decl.location.column)
@@ -141,11 +133,15 @@ class _Walker(RclcppWalker):
         text = " ".join(t.spelling for t in cursor.get_tokens())[:120] or cursor.spelling
         return Unknown(text + (f" ({why})" if why else ""), self.shown(cursor), cursor.location.line)
 
+    def seconds(self, expr: ci.Cursor, depth: int = 0) -> Fraction | None:
+        """A duration in seconds (for behavior's timer periods)."""
+        return self.durations.seconds(expr, depth)
+
     # -- traversal ------------------------------------------------------------------------
     def walk(self, root: ci.Cursor) -> None:
         cursors = [c for top in root.get_children() if self.in_main(top) for c in top.walk_preorder()
                    if self.in_main(c)]
-        cursors += self.header_code(cursors)
+        cursors += self.scope.header_code(cursors, self.key)
         for cursor in cursors:
             if cursor.kind == K.CALL_EXPR and cursor.referenced is not None:
                 self.call_sites.setdefault(self.key(cursor.referenced.canonical), []).append(cursor)
@@ -155,116 +151,20 @@ class _Walker(RclcppWalker):
                     self.loops[self.key(children[0])] = children[1]
         for cursor in cursors:
             if cursor.kind == K.CONSTRUCTOR:
-                self.member_inits(cursor)
-        if self.ros2:
-            self.prepare_ros2(cursors)
-        self.kept = self.relevant(cursors)
+                self.handles.member_inits(cursor)
+        if self.rclcpp is not None:
+            self.rclcpp.prepare(cursors)
+        self.kept, self.spans = self.scope.relevant(cursors)
         for cursor in self.kept:
             if cursor.kind == K.CALL_EXPR:
                 self.call(cursor)
 
-    def header_code(self, cursors: list[ci.Cursor]) -> list[ci.Cursor]:
-        """The cursors of definitions in the workspace's own headers that the file's code uses
-        (base class constructors, inline methods), and of the methods those use or register as
-        callbacks, transitively."""
-        found: list[ci.Cursor] = []
-        seen: set[tuple | None] = set()
-        pending = [c.referenced for c in cursors if c.kind == K.CALL_EXPR]
-        while pending and len(seen) < 4000:
-            decl = pending.pop()
-            if decl is None or (decl_key := self.key(decl.canonical)) in seen:
-                continue
-            seen.add(decl_key)
-            definition = decl.get_definition()
-            if definition is None or not self.workspace_header(definition):
-                continue
-            body = list(definition.walk_preorder())
-            found += body
-            pending += [c.referenced for c in body if c.kind in (K.CALL_EXPR, K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)
-                        and c.referenced is not None and c.referenced.kind in _CALLABLE]
-        return found
-
     def workspace_code(self, decl: ci.Cursor) -> bool:
         """A declaration in the file or in a header of the workspace."""
-        return self.in_main(decl) or self.workspace_header(decl)
+        return self.in_main(decl) or self.scope.workspace_header(decl)
 
-    def workspace_header(self, definition: ci.Cursor) -> bool:
-        """A definition in a header of the workspace (not the file itself, not a generated header
-        or one of archlog's stand-ins)."""
-        file = definition.location.file
-        if file is None or file.name == self.source or not file.name.startswith(self.workspace):
-            return False
-        return not file.name.startswith((str(cache_dir()), str(API_DIR)))
-
-    def relevant(self, cursors: list[ci.Cursor]) -> list[ci.Cursor]:
-        """All cursors, or for a nodelet class only those inside its methods and free functions."""
-        if self.cls is None:
-            return cursors
-        kept: list[ci.Cursor] = []
-        self.spans = []
-        for cursor in cursors:
-            if cursor.kind in (K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_DECL) and cursor.is_definition():
-                owner = cursor.semantic_parent
-                if cursor.kind == K.FUNCTION_DECL or qualified(owner) == self.cls:
-                    kept += list(cursor.walk_preorder())
-                    self.spans.append((cursor.extent.start.line, cursor.extent.end.line))
-        return kept
-
-    def handle_ns(self, decl: ci.Cursor) -> Value:
-        getter = next((c.spelling for c in decl.walk_preorder() if c.kind == K.CALL_EXPR
-                       and c.spelling in NODELET_HANDLES), None)
-        if getter:
-            return NODELET_HANDLES[getter]
-        ctor = next((c for c in decl.get_children() if c.kind in (K.CALL_EXPR, K.UNEXPOSED_EXPR)), None)
-        return self.ctor_ns(ctor) if ctor is not None else ""
-
-    def ctor_ns(self, ctor: ci.Cursor) -> Value:
-        """The namespace of a NodeHandle (or ImageTransport) built by this constructor call."""
-        while ctor.kind == K.UNEXPOSED_EXPR and len(list(ctor.get_children())) == 1:
-            ctor = next(ctor.get_children())
-        args = written_args(ctor) if ctor.kind == K.CALL_EXPR else []
-        if not args:
-            return ""
-        first_is_handle = _is_handle_type(args[0].type)
-        parent = self.handle_of(args[0]) if first_is_handle else ""
-        if first_is_handle and len(args) == 1:
-            return parent
-        ns = self.value(args[1] if first_is_handle else args[0])
-        if not isinstance(ns, str) or not isinstance(parent, str):
-            return concat(parent, "/", ns) if parent else ns
-        if ns.startswith("/") or not parent:
-            return ns
-        return f"~{ns}" if parent == "~" else names.canonical(f"{parent}/{ns}")
-
-    def member_inits(self, ctor: ci.Cursor) -> None:
-        children = list(ctor.get_children())
-        for member, init in zip(children, children[1:]):
-            if member.kind == K.MEMBER_REF and _is_handle_type(member.type):
-                self.handles[self.key(member.referenced)] = self.ctor_ns(init)
-
-    def handle_of(self, expr: ci.Cursor, depth: int = 0) -> Value:
-        """The namespace of the NodeHandle an expression refers to."""
-        for cursor in expr.walk_preorder():
-            if cursor.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) and _is_handle_type(cursor.type):
-                decl = cursor.referenced
-                key = self.key(decl)
-                if key not in self.handles and decl is not None and decl.kind == K.VAR_DECL:
-                    self.handles[key] = self.handle_ns(decl)
-                if key in self.handles:
-                    return self.handles[key]
-                if decl is not None and decl.kind == K.FIELD_DECL:
-                    return ""
-                if decl is not None and decl.kind == K.PARM_DECL and depth < 4:
-                    return self.from_call_sites(decl, expr, lambda arg: self.handle_of(arg, depth + 1), "NodeHandle")
-                break
-            if cursor.kind == K.CALL_EXPR and _is_handle_type(cursor.type):
-                if cursor.spelling in NODELET_HANDLES:
-                    return NODELET_HANDLES[cursor.spelling]
-                if cursor.spelling in ("NodeHandle", "ImageTransport"):
-                    return self.ctor_ns(cursor)
-        return self.unknown(expr, "NodeHandle of unknown origin")
-
-    def from_call_sites(self, param: ci.Cursor, expr: ci.Cursor, evaluate, what: str) -> Value:
+    def from_call_sites(self, param: ci.Cursor, expr: ci.Cursor, evaluate: Callable[[ci.Cursor], Value],
+                        what: str) -> Value:
         """The value all call sites in this file agree on for a parameter (a function summary)."""
         function = param.semantic_parent
         params = [p.spelling for p in function.get_arguments()] if function is not None else []
@@ -290,7 +190,7 @@ class _Walker(RclcppWalker):
         if kind == K.CALL_EXPR:
             return self.call_value(expr, depth)
         if kind == K.CONDITIONAL_OPERATOR:
-            *_cond, then, other = [c for c in expr.get_children()]
+            *_cond, then, other = list(expr.get_children())
             return alternatives([self.value(then, depth + 1), self.value(other, depth + 1)], False,
                                 self.unknown(expr, "one of several values"))
         children = [c for c in expr.get_children() if c.kind not in SKIP]
@@ -343,8 +243,8 @@ class _Walker(RclcppWalker):
     def call_value(self, expr: ci.Cursor, depth: int) -> Value:
         name, owner = expr.spelling, qualified(expr.referenced.semantic_parent) if expr.referenced else ""
         args = written_args(expr)
-        if self.ros2 and expr.referenced is not None and \
-                (found := self.rclcpp_value(expr, owner, name, args, depth)) is not None:
+        if self.rclcpp is not None and expr.referenced is not None and \
+                (found := self.rclcpp.value(expr, owner, name, args, depth)) is not None:
             return found
         if name == "operator+" and len(args) == 2:
             return concat(self.value(args[0], depth + 1), self.value(args[1], depth + 1))
@@ -357,11 +257,13 @@ class _Walker(RclcppWalker):
         if owner == "ros::this_node" and name == "getNamespace":
             return ""
         if owner in (NODE_HANDLE, "ros::param") and name == "param" and len(args) == 2 and is_rvalue(args[1]):
-            handle = self.handle_of(next(expr.get_children())) if owner == NODE_HANDLE else ""
+            handle = self.handles.handle_of(next(expr.get_children())) if owner == NODE_HANDLE else ""
             return ParamRef(self.value(args[0], depth + 1), self.value(args[1], depth + 1), handle,
                             self.shown(expr), expr.location.line)
         if owner == NODE_HANDLE and name in ("resolveName", "getNamespace"):
-            return self.handle_of(next(expr.get_children())) if name == "getNamespace" else self.value(args[0], depth + 1)
+            if name == "getNamespace":
+                return self.handles.handle_of(next(expr.get_children()))
+            return self.value(args[0], depth + 1)
         if name in ("basic_string", "string", "c_str", "str") or (name == "" and len(args) == 1):
             inner = args or [c for c in expr.get_children() if c.kind not in SKIP]
             if len(inner) == 1:
@@ -378,7 +280,7 @@ class _Walker(RclcppWalker):
             return
         name, args = call.spelling, written_args(call)
         owner = qualified(ref.semantic_parent)
-        if self.ros2 and self.rclcpp_call(call, ref, owner, name, args):
+        if self.rclcpp is not None and self.rclcpp.call(call, ref, owner, name, args):
             return
         if ref.kind == K.CONSTRUCTOR and owner in CONSTRUCTED:
             self.constructed(call, owner, args)
@@ -394,11 +296,11 @@ class _Walker(RclcppWalker):
         elif (owner, name) in METHODS and args:
             self.method(call, ref, owner, name, args)
         elif owner == NODE_HANDLE and args and name in PARAM_READS | PARAM_WRITES:
-            self.param(call, args, self.handle_of(next(call.get_children())), name)
+            self.param(call, args, self.handles.handle_of(next(call.get_children())), name)
         elif owner == "ros::param" and args and name in PARAM_READS | PARAM_WRITES | {"param"}:
             self.param(call, args, "", name)
         elif owner == NODE_HANDLE and name in TIMERS and args:
-            self.add("timer", call, self.duration(args[0]), "", self.handle_of(next(call.get_children())))
+            self.add("timer", call, self.duration(args[0]), "", self.handles.handle_of(next(call.get_children())))
         elif owner == "ros::service" and name in ("call", "waitForService", "exists") and args:
             type_ = (ros_type(args[1].type) if len(args) > 1 and name == "call" else None) or \
                 self.unknown(call, "service type not given")
@@ -410,9 +312,9 @@ class _Walker(RclcppWalker):
             type_ = ros_type(call.referenced.semantic_parent.type) or template_arg_type(call) or \
                 self.unknown(call, "message type not resolved")
             self.add(kind, call, self.value(args[1]) if len(args) > 1 else self.unknown(call), type_,
-                     self.handle_of(args[0]))
+                     self.handles.handle_of(args[0]))
             return
-        handle = self.handle_of(next(call.get_children()))
+        handle = self.handles.handle_of(next(call.get_children()))
         topic = self.value(args[0])
         if owner == IMAGE_TRANSPORT:
             self.add(kind, call, topic, "sensor_msgs/Image", handle)
@@ -425,13 +327,15 @@ class _Walker(RclcppWalker):
 
     def constructed(self, call: ci.Cursor, owner: str, args: list[ci.Cursor]) -> None:
         """Library objects whose construction creates ports (tf, actionlib, message_filters...)."""
-        has_handle = bool(args) and _is_handle_type(args[0].type)
-        handle = self.handle_of(args[0]) if has_handle else ("~" if owner == "dynamic_reconfigure::Server" else "")
+        has_handle = bool(args) and is_handle_type(args[0].type)
+        handle = self.handles.handle_of(args[0]) if has_handle else \
+            ("~" if owner == "dynamic_reconfigure::Server" else "")
         type_ = ros_type(call.type) or self.unknown(call, "type not resolved")
         for kind, fixed, index in CONSTRUCTED[owner]:
             if fixed is not None:
                 self.add(kind, call, fixed, FIXED_TYPES[fixed], handle)
                 continue
+            assert index is not None  # a port without a fixed name has its name's argument
             position = index if has_handle else index - 1
             if position >= len(args):
                 return  # default-constructed: ports come from a later subscribe()/start()
@@ -508,67 +412,12 @@ class _Walker(RclcppWalker):
         covered = {p.line for p in self.result.ports if p.file == self.file}
         text = sandbox.read_text(self.source, "source")
         if self.ros2:
-            self.ros2_fallback(text, covered, tu)
+            ros2_fallback(self, text, covered, tu)
             return
-        handles = {m.group(1): unquote(m.group(2)) if m.group(2) else ""
-                   for m in re.finditer(r"NodeHandle\s+(\w+)\s*(?:\(\s*(\"[^\"]*\")\s*\))?", text)}
-        objects = {m.group(1) for m in _FALLBACK.finditer(text)}
-        handles.update({m.group(1): m.group(2) for m in re.finditer(r"[:,]\s*(\w+)\s*\(\s*\"(~?[\w/]*)\"\s*\)", text)
-                        if m.group(1) in objects and m.group(1) not in handles})  # member initialisers
-        handles.update({m.group(1): NODELET_HANDLES[m.group(2)] for m in re.finditer(
-            r"NodeHandle\s*&?\s*(\w+)\s*=\s*(get(?:MT)?(?:Private)?NodeHandle)\s*\(\s*\)", text)})
-        line_of = line_finder(text)
-        for match in _FALLBACK.finditer(text):
-            line = line_of(match.start())
-            if line in covered or (self.spans is not None and not any(a <= line <= b for a, b in self.spans)):
-                continue
-            obj, method, template, first = match.groups()
-            kind = METHODS.get((NODE_HANDLE, method))
-            name: Value = unquote(first) if first.startswith('"') else \
-                Unknown(f"{first} (read from tokens)", self.file, line)
-            handle: Value = handles[obj] if obj in handles else Unknown(f"{obj} (read from tokens)", self.file, line)
-            type_: Value = (type_from_spelling(template) if template else _callback_type(text, match.end())) or \
-                Unknown(f"{obj}.{method} (type not readable without the AST)", self.file, line)
-            self.result.ports.append(Port(kind, name, type_, self.file, line, 0, handle))
-            self.result.fallback_lines.append(line)
-            port = self.result.ports[-1]
-            self.named_callbacks += [(callback, port) for callback in _argument_names(text, match.end())]
+        ports, named = roscpp_fallback(text, self.file, covered, self.spans)
+        self.result.ports += ports
+        self.result.fallback_lines += [port.line for port in ports]
+        self.named_callbacks += named
 
 
-def _callback_type(text: str, start: int) -> str | None:
-    """The message type of a callback named in a call's arguments, from the callback's own
-    signature in the file text (for calls the AST lost)."""
-    arguments = _call_text(text, start)
-    callback = re.search(r"&\s*(?:\w+::)*(\w+)\s*[,)]", arguments)
-    if callback is None:
-        return None
-    return _signature_type(text, callback.group(1))
-
-
-@lru_cache(maxsize=128)
-def _signature_type(text: str, function: str) -> str | None:
-    """The message type of a callback's first parameter, from its signature in the text."""
-    signature = re.search(rf"\b{function}\s*\(\s*(?:const\s+)?([\w:]+)", text)
-    return type_from_spelling(signature.group(1)) if signature else None
-
-
-def _call_text(text: str, start: int) -> str:
-    """The rest of a call's statement from `start`, within CALL_WINDOW characters."""
-    window = text[start: start + CALL_WINDOW]
-    end = window.find(";")
-    return window if end < 0 else window[:end]
-
-
-def _argument_names(text: str, start: int) -> list[str]:
-    """The names in a call's further arguments (`&Class::cb`, `cb`, `this`...), from the text."""
-    arguments = _call_text(text, start)
-    return re.findall(r",\s*&?\s*(?:\w+::)*([A-Za-z_]\w*)\s*(?=[,)])", arguments)
-
-
-_CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)
-
-
-def _is_handle_type(type_: ci.Type) -> bool:
-    spelling = type_.spelling
-    return "NodeHandle" in spelling or "ImageTransport" in spelling
 

@@ -12,8 +12,7 @@ from dataclasses import dataclass
 
 import clang.cindex as ci
 
-from archlog.extract.cpp_ast import K, SKIP, binary_operator, unary_operator, written_args
-from archlog.extract.rclcpp_walk import strip
+from archlog.extract.cpp.clang_ast import SKIP, K, binary_operator, strip, unary_operator, written_args
 
 _GLOBAL_SCOPES = (K.TRANSLATION_UNIT, K.NAMESPACE, K.UNEXPOSED_DECL, K.LINKAGE_SPEC)
 _CLASSES = (K.CLASS_DECL, K.STRUCT_DECL, K.CLASS_TEMPLATE, K.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)

@@ -1,4 +1,4 @@
-"""The period of an endless loop in C++ (cpp_behavior.py): the ros::Rate / rclcpp::Rate it sleeps
+"""The period of an endless loop in C++ (behavior.py): the ros::Rate / rclcpp::Rate it sleeps
 on, else its sleeps added up (ros::Duration::sleep, usleep, sleep, std::this_thread::sleep_for),
 in seconds; a rate from a parameter counts with the parameter's default."""
 
@@ -9,11 +9,10 @@ from fractions import Fraction
 
 import clang.cindex as ci
 
-from archlog.extract.cpp_ast import K, period, qualified, written_args
-from archlog.extract.cpp_index import Host
-from archlog.extract.cpp_state import object_of
+from archlog.extract.cpp.clang_ast import CursorKey, K, period, qualified, strip, written_args
+from archlog.extract.cpp.index import Host
+from archlog.extract.cpp.state import object_of
 from archlog.extract.qos import number, seconds_text
-from archlog.extract.rclcpp_walk import strip
 from archlog.values import ParamRef, Unknown, Value
 
 RATES = ("ros::Rate", "ros::WallRate", "rclcpp::Rate", "rclcpp::WallRate", "rclcpp::GenericRate", "rclcpp::RateBase")
@@ -25,10 +24,10 @@ class Periods:
     """Loop periods; `flows` holds what is stored in each variable (a rate member's construction),
     `passed` what the calls of a function pass for a parameter (a rate handed to a thread)."""
 
-    def __init__(self, host: Host, flows: dict[tuple, list[ci.Cursor]],
+    def __init__(self, host: Host, flows: dict[CursorKey, list[ci.Cursor]],
                  passed: Callable[[ci.Cursor], list[ci.Cursor]]) -> None:
         self.host, self.flows, self.passed = host, flows, passed
-        self._memo: dict[tuple | None, Value] = {}
+        self._memo: dict[CursorKey, Value] = {}
 
     def of(self, loop: ci.Cursor) -> Value:
         """Seconds between iterations: the Rate slept on, else the sleeps of the body added up."""

@@ -1,5 +1,5 @@
 """Generate C++ message headers with Debian's gencpp. Runs under /usr/bin/python3 (genmsg and
-gencpp import only there); driven by archlog.extract.msg_headers through stdin/stdout JSON.
+gencpp import only there); driven by archlog.extract.cpp.msg_headers through stdin/stdout JSON.
 
 Input: {"out": DIR, "templates": DIR, "search": ["pkg:dir", ...], "files": [[pkg, path], ...]}.
 Output: {"errors": [[path, message], ...]}. An .action file is first expanded into its seven
@@ -63,7 +63,7 @@ def main():
                 generate_from_file(path, pkg, out, request["templates"], search,
                                    {"msg.h.template": "@NAME@.h"}, {"srv.h.template": "@NAME@.h"})
             except Exception as exc:  # genmsg raises many types for bad definitions
-                errors.append([path, "%s: %s" % (type(exc).__name__, exc)])
+                errors.append([path, f"{type(exc).__name__}: {exc}"])
     print(json.dumps({"errors": errors}))
 
 

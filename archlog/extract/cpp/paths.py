@@ -1,4 +1,4 @@
-"""Inside one C++ function (cpp_behavior.py): the state conditions that dominate a point (the
+"""Inside one C++ function (behavior.py): the state conditions that dominate a point (the
 if/else branches and loops around it, early returns, finished wait loops and switch cases before
 it) and the endless loop it runs in (`while (ros::ok())`, `for (;;)`, `do ... while (true)`)."""
 
@@ -8,11 +8,10 @@ import re
 
 import clang.cindex as ci
 
-from archlog.extract.cpp_ast import K, binary_operator, unary_operator
-from archlog.extract.cpp_index import Host
-from archlog.extract.cpp_periods import Periods
-from archlog.extract.cpp_state import Conditions, StateVar, state_var
-from archlog.extract.rclcpp_walk import strip
+from archlog.extract.cpp.clang_ast import CursorKey, K, binary_operator, strip, unary_operator
+from archlog.extract.cpp.index import Host
+from archlog.extract.cpp.periods import Periods
+from archlog.extract.cpp.state import Conditions, StateVar, state_var
 from archlog.extract.summary import Guard
 from archlog.values import Value
 
@@ -42,9 +41,9 @@ class Paths:
 
     def __init__(self, host: Host, conditions: Conditions, periods: Periods, vars: dict[str, StateVar]) -> None:
         self.host, self.conditions, self.periods, self.vars = host, conditions, periods, vars
-        self._memo: dict[tuple, Local] = {}
+        self._memo: dict[CursorKey, Local] = {}
 
-    def at(self, fid: tuple, function: ci.Cursor, point: ci.Cursor) -> Local:
+    def at(self, fid: CursorKey, function: ci.Cursor, point: ci.Cursor) -> Local:
         """The guards that dominate `point` in `function`, and the endless loop it runs in (its
         period, and whether there is one)."""
         memo = (fid, point.extent.start.offset, point.extent.end.offset)
@@ -144,7 +143,7 @@ def _endless_for(loop: ci.Cursor) -> bool:
     words = [t.spelling for t in loop.get_tokens()]
     if "(" not in words:
         return False
-    depth, parts, current = 0, [], []
+    depth, parts, current = 0, list[str](), list[str]()
     for word in words[words.index("(") + 1:]:
         if word == ")" and depth == 0:
             break

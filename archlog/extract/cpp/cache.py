@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import hashlib
 import os
-from functools import lru_cache
 import pickle
 import sqlite3
+from functools import lru_cache
 from pathlib import Path
 
 from archlog import __version__
@@ -25,8 +25,8 @@ def cache_dir() -> Path:
 def code_digest() -> str:
     """Changes whenever archlog's extraction code changes, so cached results never outlive it."""
     digest = hashlib.sha256(__version__.encode())
-    package = Path(__file__).resolve().parent.parent
-    for path in sorted([*package.glob("extract/*.py"), package / "values.py", package / "names.py"]):
+    package = Path(__file__).resolve().parents[2]
+    for path in sorted([*package.glob("extract/**/*.py"), package / "values.py", package / "names.py"]):
         digest.update(path.read_bytes())
     return digest.hexdigest()
 

@@ -1,5 +1,7 @@
-"""libclang helpers shared by the roscpp walker (cpp_walk.py) and the rclcpp one (rclcpp_walk.py):
-qualified names, written arguments, literals, ROS message types from C++ types, assignments."""
+"""libclang helpers shared by the roscpp walker (roscpp.py), the rclcpp one (rclcpp/) and behavior:
+qualified names, written arguments, literals, ROS message types from C++ types, assignments,
+expressions below implicit conversions (strip). Not named ast.py: gencpp_driver.py runs by path
+from this folder, where that name would hide the standard library's ast."""
 
 from __future__ import annotations
 
@@ -7,6 +9,7 @@ import bisect
 import ctypes
 import re
 from collections.abc import Callable
+from typing import TypeAlias
 
 import clang.cindex as ci
 
@@ -14,6 +17,8 @@ from archlog.values import Value, concat
 
 K = ci.CursorKind
 SKIP = (K.TYPE_REF, K.NAMESPACE_REF, K.TEMPLATE_REF)
+# what the walkers key declarations by: (file, line, column), None for a cursor without a file
+CursorKey: TypeAlias = tuple | None
 # ROS 2 interfaces: pkg::msg::Name, pkg::srv::Name_Request_<...>, pkg::action::Name_Goal_<...>
 ROS2_TYPE = re.compile(r"\b(\w+)::(msg|srv|action)::([A-Z][A-Za-z0-9]*)")
 MSG_TYPE = re.compile(r"\b(\w+)::(\w+?)(?:Request|Response)?_<")
@@ -178,3 +183,14 @@ def line_finder(text: str) -> Callable[[int], int]:
     counting the newlines before every match of a file would be quadratic)."""
     newlines = [m.start() for m in re.finditer("\n", text)]
     return lambda offset: bisect.bisect_left(newlines, offset) + 1
+
+
+def strip(expr: ci.Cursor) -> ci.Cursor:
+    """Below implicit conversions, parentheses and temporaries to the expression as written."""
+    while expr.kind in (K.UNEXPOSED_EXPR, K.PAREN_EXPR, K.CXX_FUNCTIONAL_CAST_EXPR, K.CSTYLE_CAST_EXPR,
+                        K.CXX_STATIC_CAST_EXPR):
+        children = [c for c in expr.get_children() if c.kind not in SKIP]
+        if len(children) != 1:
+            break
+        expr = children[0]
+    return expr

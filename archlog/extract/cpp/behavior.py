@@ -2,14 +2,14 @@
 reached and under which state conditions, and which callbacks set that state (summary.py's
 Publish and StateWrite).
 
-The file's functions and lambdas (cpp_index.py) form a call graph: calls, virtual methods by name
+The file's functions and lambdas (index.py) form a call graph: calls, virtual methods by name
 up the class hierarchy, lambdas run where they are written or called, functions handed to threads
 or as reply callbacks. Its roots are the callbacks of the ports the walker found (subscribers,
 services, actions, timers, and callbacks registered later on such an object), other registered
 callbacks (with no port), main(), onInit() and lifecycle transitions, and constructors nothing in
 the file calls. A publish call is reached along every path from a root; each function on the way
 adds the state conditions that dominate the path in it and the endless loop it runs in
-(cpp_paths.py, cpp_periods.py, cpp_state.py). Publisher objects are followed from the call that
+(paths.py, periods.py, state.py). Publisher objects are followed from the call that
 made them through assignments, members, containers, function returns and arguments.
 """
 
@@ -21,13 +21,20 @@ from dataclasses import dataclass, field, replace
 
 import clang.cindex as ci
 
-from archlog.extract.cpp_ast import K, SKIP, written_args
-from archlog.extract.cpp_index import ACCESSORS, DEFINITIONS, FUNCTIONS, THREADS, FileIndex, Function, Host, Store
-from archlog.extract.cpp_paths import Paths, running
-from archlog.extract.cpp_periods import Periods
-from archlog.extract.cpp_state import (Conditions, StateVar, assigned_value, initial_value, method_value, object_of,
-                                       operands, state_var)
-from archlog.extract.rclcpp_walk import strip
+from archlog.extract.cpp.clang_ast import SKIP, CursorKey, K, strip, written_args
+from archlog.extract.cpp.index import ACCESSORS, DEFINITIONS, FUNCTIONS, THREADS, FileIndex, Function, Host, Store
+from archlog.extract.cpp.paths import Paths, running
+from archlog.extract.cpp.periods import Periods
+from archlog.extract.cpp.state import (
+    Conditions,
+    StateVar,
+    assigned_value,
+    initial_value,
+    method_value,
+    object_of,
+    operands,
+    state_var,
+)
 from archlog.extract.summary import Guard, Port, Publish, Site, StateWrite
 from archlog.values import Value
 
@@ -122,12 +129,13 @@ class _Behavior:
         self.vars: dict[str, StateVar] = {}
         self.conditions = Conditions(running, self.targets)
         self.paths = Paths(host, self.conditions, Periods(host, self.index.flows, self.passed), self.vars)
-        self.roots: dict[tuple, list[tuple[str, Site | None]]] = {}
-        self.edges: dict[tuple, list[ci.Cursor]] = {}  # function -> points where it runs besides its calls
-        self.launches: dict[tuple, list[tuple[ci.Cursor, int]]] = {}  # function -> (thread launch, its first argument)
-        self.usrs: dict[tuple, str] = {}  # function id -> USR, for callbacks another file may define
-        self._overrides: dict[tuple, list[Function]] | None = None
-        self._reach: dict[tuple, list[Way]] = {}
+        self.roots: dict[CursorKey, list[tuple[str, Site | None]]] = {}
+        self.edges: dict[CursorKey, list[ci.Cursor]] = {}  # function -> points where it runs besides its calls
+        # function -> (thread launch, its first argument)
+        self.launches: dict[CursorKey, list[tuple[ci.Cursor, int]]] = {}
+        self.usrs: dict[CursorKey, str] = {}  # function id -> USR, for callbacks another file may define
+        self._overrides: dict[CursorKey, list[Function]] | None = None
+        self._reach: dict[CursorKey, list[Way]] = {}
 
     # -- the call graph ---------------------------------------------------------------------
     def link(self) -> None:
@@ -139,11 +147,12 @@ class _Behavior:
                 self.roots.setdefault(fid, []).append((sources[0], site) if sources else ("callback", None))
         for call in index.registrations:
             obj = object_of(call)
-            sites = [s for s in self.sites(obj) if self.kinds[s] & SOURCE_KINDS.keys()] if obj is not None else []
+            sites: list[Site | None] = [s for s in self.sites(obj) if self.kinds[s] & SOURCE_KINDS.keys()] \
+                if obj is not None else []
             for fid in self.callbacks(written_args(call)):
-                for site in sites or [None]:
-                    trigger = "timer" if site is not None and "timer" in self.kinds[site] else "callback"
-                    self.roots.setdefault(fid, []).append((trigger, site))
+                for registrar in sites or [None]:
+                    trigger = "timer" if registrar is not None and "timer" in self.kinds[registrar] else "callback"
+                    self.roots.setdefault(fid, []).append((trigger, registrar))
         for call in index.handoffs:
             args = written_args(call)
             for fid in self.callbacks(args):
@@ -188,10 +197,10 @@ class _Behavior:
                 else:
                     self.edges.setdefault(function.id, []).append(_innermost(caller.cursor, offset))
 
-    def callbacks(self, exprs: Iterable[ci.Cursor], depth: int = 0) -> list[tuple]:
+    def callbacks(self, exprs: Iterable[ci.Cursor], depth: int = 0) -> list[CursorKey]:
         """The functions and lambdas arguments pass: `&C::cb`, `cb`, a lambda, std::bind(...), a
         local variable holding one of these."""
-        found: list[tuple] = []
+        found: list[CursorKey] = []
         for expr in exprs:
             expr = strip(expr)
             kind = expr.kind
@@ -219,7 +228,7 @@ class _Behavior:
             found += self.host.call_sites.get(base, [])
         return found
 
-    def overridden(self, function: Function) -> list[tuple]:
+    def overridden(self, function: Function) -> list[CursorKey]:
         """The ids of the virtual methods of base classes a method overrides."""
         return [self.host.key(m.canonical) for m in self.bases(function)]
 
@@ -229,7 +238,7 @@ class _Behavior:
         if cursor.kind != K.CXX_METHOD or not cursor.is_virtual_method():
             return []
         found: list[ci.Cursor] = []
-        queue, seen = [cursor.semantic_parent], set()
+        queue, seen = [cursor.semantic_parent], set[CursorKey]()
         while queue and len(seen) < 16:
             cls = queue.pop()
             definition = cls.get_definition() if cls is not None else None
@@ -355,7 +364,8 @@ class _Behavior:
     def publishes(self, found: FileBehavior) -> None:
         for call in self.index.publishes:
             obj = object_of(call)
-            sites = [s for s in self.sites(obj) if "publisher" in self.kinds[s]] if obj is not None else []
+            sites: list[Site | None] = [s for s in self.sites(obj) if "publisher" in self.kinds[s]] \
+                if obj is not None else []
             for way in self.ways_to(call):
                 for site in sites or [None]:
                     publish = Publish(site, self.host.shown(call), call.location.line, way.trigger, way.source,
@@ -463,7 +473,7 @@ def _constructor_argument(expr: ci.Cursor) -> ci.Cursor | None:
 def _merge(ways: list[Way]) -> list[Way]:
     """One way per (trigger, source, period, entry), with the guards common to all that were
     merged."""
-    merged: dict[tuple, Way] = {}
+    merged: dict[CursorKey, Way] = {}
     for way in ways:
         key = (way.trigger, way.source, way.period, way.entry)
         if key in merged:

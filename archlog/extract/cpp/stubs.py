@@ -1,20 +1,24 @@
-"""Stand-in headers for ROS 2 C++ code when its headers are not installed.
+"""Stand-in headers: what archlog puts in place of headers that are not installed, so that a
+file using them still parses. All of them are written to the cache, searched before every other
+include folder; only missing includes get one.
 
-Two kinds: the client libraries (rclcpp, rclcpp_lifecycle, rclcpp_action, rclcpp_components,
-tf2, tf2_ros, image_transport, message_filters, diagnostic_updater, bondcpp, rmw, sensor_msgs'
-helpers) are declared once, by hand,
-in `stand_ins/archlog_ros2/*.hpp` with their real qualified names and signatures; a missing
-`#include "rclcpp/node.hpp"` gets a one-line header forwarding to them. Message, service and
-action headers (`std_msgs/msg/string.hpp`) are generated: the struct templates rosidl would
-generate (`std_msgs::msg::String_<Allocator>`, `String`, `::SharedPtr`...), with fields and
-constants when the definition is found (the workspace's .msg/.srv/.action files, a few ROS 2
-core interfaces below, Debian's ROS 1 definitions of the common packages) and with the type's
-name as the code spells it otherwise.
+ROS 2 code, two kinds: the client libraries (rclcpp, rclcpp_lifecycle, rclcpp_action,
+rclcpp_components, tf2, tf2_ros, image_transport, message_filters, diagnostic_updater, bondcpp,
+rmw, sensor_msgs' helpers) are declared once, by hand, in the shipped `stand_ins/archlog_ros2/*.hpp`
+with their real qualified names and signatures; a missing `#include "rclcpp/node.hpp"` gets a
+one-line header forwarding to them. Message, service and action headers
+(`std_msgs/msg/string.hpp`) are generated: the struct templates rosidl would generate
+(`std_msgs::msg::String_<Allocator>`, `String`, `::SharedPtr`...), with fields and constants when
+the definition is found (the workspace's .msg/.srv/.action files, a few ROS 2 core interfaces
+below, Debian's ROS 1 definitions of the common packages) and with the type's name as the code
+spells it otherwise. ROS 1 headers of packages that exist in both ROS versions under the same
+include names (tf2_ros, image_transport, message_filters, diagnostic_updater, bondcpp) do not
+count as present for ROS 2 code. The headers of one translation unit go to a folder named after
+their content.
 
-Only missing includes get stand-ins. ROS 1 headers of packages that exist in both ROS versions
-under the same include names (tf2_ros, image_transport, message_filters, diagnostic_updater,
-bondcpp) do not count as present for ROS 2 code. The headers of one translation unit go to a folder named
-after their content, searched before every other include folder.
+ROS 1 code: message packages that are not installed get a minimal declaration of the type (and
+of its service or action family), named as the code spells it; the fields are missing
+(ros1_stand_in_dir).
 """
 
 from __future__ import annotations
@@ -28,7 +32,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from archlog import sandbox
-from archlog.extract.cache import cache_dir
+from archlog.extract.cpp.cache import cache_dir
 
 API_DIR = Path(__file__).with_name("stand_ins")
 # first component of an include -> the stand-in declaring that library
@@ -76,7 +80,8 @@ EMBEDDED = {
         "uint8 TRANSITION_INACTIVE_SHUTDOWN=6\nuint8 TRANSITION_ACTIVE_SHUTDOWN=7\nuint8 TRANSITION_DESTROY=8\n"
         "uint8 TRANSITION_CALLBACK_SUCCESS=97\nuint8 TRANSITION_CALLBACK_FAILURE=98\n"
         "uint8 TRANSITION_CALLBACK_ERROR=99\nuint8 id\nstring label\n"),
-    "lifecycle_msgs/msg/TransitionEvent": "uint64 timestamp\nTransition transition\nState start_state\nState goal_state\n",
+    "lifecycle_msgs/msg/TransitionEvent": ("uint64 timestamp\nTransition transition\nState start_state\n"
+                                           "State goal_state\n"),
     "lifecycle_msgs/srv/ChangeState": "Transition transition\n---\nbool success\n",
     "lifecycle_msgs/srv/GetState": "---\nState current_state\n",
     "unique_identifier_msgs/msg/UUID": "uint8[16] uuid\n",
@@ -182,7 +187,9 @@ def stand_in_dir(missing: Iterable[str], spellings: set[str], interfaces: Interf
             needed = library_interfaces(library)
         else:
             match = INTERFACE_INCLUDE.match(include)
-            files[include], needed = _interface_header(*match.groups(), spellings, interfaces)
+            assert match is not None  # pending holds library and interface includes only
+            pkg, kind, header = match.groups()
+            files[include], needed = _interface_header(pkg, kind, header, spellings, interfaces)
         pending += [n for n in needed if n not in files and not exists(n)]
     if not files:
         return None
@@ -316,3 +323,64 @@ def _remove(folder: Path) -> None:
     for path in sorted(folder.rglob("*"), key=lambda p: len(p.parts), reverse=True):
         path.rmdir() if path.is_dir() else path.unlink()
     folder.rmdir()
+
+
+# ROS 1: `#include <control_msgs/FollowJointTrajectoryAction.h>` of a package not installed
+MESSAGE_INCLUDE = re.compile(r"^(\w+)/([A-Z]\w*)\.h$")
+
+_ROS1_STRUCT = """#ifndef ARCHLOG_STUB_{pkg}_{name}
+#define ARCHLOG_STUB_{pkg}_{name}
+namespace {pkg} {{
+template <class ContainerAllocator> struct {name}_ {{
+  typedef {name}_<ContainerAllocator> Type;
+  typedef boost::shared_ptr<{name}_<ContainerAllocator> > Ptr;
+  typedef boost::shared_ptr<{name}_<ContainerAllocator> const> ConstPtr;
+{members}}};
+typedef {name}_<std::allocator<void> > {name};
+typedef boost::shared_ptr<{name}> {name}Ptr;
+typedef boost::shared_ptr<{name} const> {name}ConstPtr;
+}}
+#endif
+"""
+
+
+def ros1_stand_in_dir(missing: list[str]) -> Path | None:
+    """A folder with stand-ins for the missing message-like includes, or None if there are none."""
+    wanted = [m for name in missing if (m := MESSAGE_INCLUDE.match(name))]
+    if not wanted:
+        return None
+    folder = cache_dir() / "stubs"
+    for match in wanted:
+        target = folder / match.group(1) / f"{match.group(2)}.h"
+        if not target.is_file():
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_text(_ros1_header(match.group(1), match.group(2)))
+    return folder
+
+
+def _ros1_struct(pkg: str, name: str, members: str = "") -> str:
+    return _ROS1_STRUCT.format(pkg=pkg, name=name, members=members)
+
+
+def _ros1_header(pkg: str, name: str) -> str:
+    parts = ["// archlog stand-in: the real header is not installed\n#pragma once\n#include <memory>\n"
+             "#include <boost/shared_ptr.hpp>\n"]
+    if name.endswith("Action"):
+        base = name[: -len("Action")]
+        for part in ("Goal", "Result", "Feedback"):
+            parts.append(_ros1_struct(pkg, base + part))
+            parts.append(_ros1_struct(pkg, f"{base}Action{part}",
+                                 f"  typedef {base}{part}_<ContainerAllocator> _{part.lower()}_type;\n"
+                                 f"  _{part.lower()}_type {part.lower()};\n"))
+        parts.append(_ros1_struct(pkg, name, "".join(
+            f"  typedef {base}Action{part}_<ContainerAllocator> _action_{part.lower()}_type;\n"
+            for part in ("Goal", "Result", "Feedback"))))
+    elif name.endswith(("Request", "Response")):
+        parts.append(_ros1_struct(pkg, name))
+    else:  # a message or a service: provide both shapes
+        parts.append(_ros1_struct(pkg, name + "Request"))
+        parts.append(_ros1_struct(pkg, name + "Response"))
+        parts.append(_ros1_struct(pkg, name, f"  typedef {name}Request_<ContainerAllocator> Request;\n"
+                                        f"  typedef {name}Response_<ContainerAllocator> Response;\n"
+                                        "  Request request;\n  Response response;\n"))
+    return "".join(parts)

@@ -1,0 +1,1 @@
+"""C++ extraction (roscpp and rclcpp) with libclang: plumbing, walkers, behavior, stand-in headers."""

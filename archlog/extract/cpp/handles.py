@@ -1,0 +1,108 @@
+"""roscpp's handles (NodeHandle, ImageTransport): the ports their methods create, and the
+namespace each handle of a file gives its ports."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Protocol
+
+import clang.cindex as ci
+
+from archlog import names
+from archlog.extract.cpp.clang_ast import CursorKey, K, written_args
+from archlog.values import Unknown, Value, concat
+
+NODE_HANDLE = "ros::NodeHandle"
+IMAGE_TRANSPORT = "image_transport::ImageTransport"
+HANDLE_TYPES = (NODE_HANDLE, IMAGE_TRANSPORT)
+# (class, method) -> port kind
+METHODS = {
+    (NODE_HANDLE, "advertise"): "publisher", (NODE_HANDLE, "subscribe"): "subscriber",
+    (NODE_HANDLE, "advertiseService"): "service_server", (NODE_HANDLE, "serviceClient"): "service_client",
+    (IMAGE_TRANSPORT, "advertise"): "publisher", (IMAGE_TRANSPORT, "subscribe"): "subscriber",
+    (IMAGE_TRANSPORT, "advertiseCamera"): "publisher", (IMAGE_TRANSPORT, "subscribeCamera"): "subscriber",
+    ("message_filters::Subscriber", "subscribe"): "subscriber",
+}
+# nodelet::Nodelet accessors for the manager-provided handles
+NODELET_HANDLES = {"getNodeHandle": "", "getMTNodeHandle": "", "getPrivateNodeHandle": "~",
+                   "getMTPrivateNodeHandle": "~"}
+
+
+def is_handle_type(type_: ci.Type) -> bool:
+    """A NodeHandle or an ImageTransport (or a pointer or reference to one)."""
+    spelling = type_.spelling
+    return "NodeHandle" in spelling or "ImageTransport" in spelling
+
+
+class HandleContext(Protocol):
+    """What reading handles needs of the walker: keys and values of cursors, and the value all
+    call sites of a function agree on for a parameter."""
+
+    def key(self, decl: ci.Cursor | None) -> CursorKey: ...
+    def value(self, expr: ci.Cursor, depth: int = 0) -> Value: ...
+    def unknown(self, cursor: ci.Cursor, why: str = "") -> Unknown: ...
+    def from_call_sites(self, param: ci.Cursor, expr: ci.Cursor, evaluate: Callable[[ci.Cursor], Value],
+                        what: str) -> Value: ...
+
+
+class Handles:
+    """The namespaces of a file's handles, by declaration, read as they are met."""
+
+    def __init__(self, ctx: HandleContext) -> None:
+        self.ctx = ctx
+        self.namespaces: dict[CursorKey, Value] = {}
+
+    def handle_ns(self, decl: ci.Cursor) -> Value:
+        getter = next((c.spelling for c in decl.walk_preorder() if c.kind == K.CALL_EXPR
+                       and c.spelling in NODELET_HANDLES), None)
+        if getter:
+            return NODELET_HANDLES[getter]
+        ctor = next((c for c in decl.get_children() if c.kind in (K.CALL_EXPR, K.UNEXPOSED_EXPR)), None)
+        return self.ctor_ns(ctor) if ctor is not None else ""
+
+    def ctor_ns(self, ctor: ci.Cursor) -> Value:
+        """The namespace of a NodeHandle (or ImageTransport) built by this constructor call."""
+        while ctor.kind == K.UNEXPOSED_EXPR and len(list(ctor.get_children())) == 1:
+            ctor = next(ctor.get_children())
+        args = written_args(ctor) if ctor.kind == K.CALL_EXPR else []
+        if not args:
+            return ""
+        first_is_handle = is_handle_type(args[0].type)
+        parent = self.handle_of(args[0]) if first_is_handle else ""
+        if first_is_handle and len(args) == 1:
+            return parent
+        ns = self.ctx.value(args[1] if first_is_handle else args[0])
+        if not isinstance(ns, str) or not isinstance(parent, str):
+            return concat(parent, "/", ns) if parent else ns
+        if ns.startswith("/") or not parent:
+            return ns
+        return f"~{ns}" if parent == "~" else names.canonical(f"{parent}/{ns}")
+
+    def member_inits(self, ctor: ci.Cursor) -> None:
+        children = list(ctor.get_children())
+        for member, init in zip(children, children[1:]):
+            if member.kind == K.MEMBER_REF and is_handle_type(member.type):
+                self.namespaces[self.ctx.key(member.referenced)] = self.ctor_ns(init)
+
+    def handle_of(self, expr: ci.Cursor, depth: int = 0) -> Value:
+        """The namespace of the NodeHandle an expression refers to."""
+        for cursor in expr.walk_preorder():
+            if cursor.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) and is_handle_type(cursor.type):
+                decl = cursor.referenced
+                key = self.ctx.key(decl)
+                if key not in self.namespaces and decl is not None and decl.kind == K.VAR_DECL:
+                    self.namespaces[key] = self.handle_ns(decl)
+                if key in self.namespaces:
+                    return self.namespaces[key]
+                if decl is not None and decl.kind == K.FIELD_DECL:
+                    return ""
+                if decl is not None and decl.kind == K.PARM_DECL and depth < 4:
+                    return self.ctx.from_call_sites(decl, expr, lambda arg: self.handle_of(arg, depth + 1),
+                                                    "NodeHandle")
+                break
+            if cursor.kind == K.CALL_EXPR and is_handle_type(cursor.type):
+                if cursor.spelling in NODELET_HANDLES:
+                    return NODELET_HANDLES[cursor.spelling]
+                if cursor.spelling in ("NodeHandle", "ImageTransport"):
+                    return self.ctor_ns(cursor)
+        return self.ctx.unknown(expr, "NodeHandle of unknown origin")

@@ -1,0 +1,28 @@
+"""What one C++ file contributes to its executable's summary (cached per file)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from archlog.diagnostics import Diagnostic
+from archlog.extract.cpp.behavior import FileBehavior
+from archlog.extract.summary import Port
+from archlog.values import Value
+
+
+@dataclass
+class FileResult:
+    """What one C++ file contributes to its executable's summary."""
+
+    ports: list[Port] = field(default_factory=list)
+    default_name: Value | None = None
+    anonymous: bool = False
+    name_file: str = ""
+    name_line: int = 0
+    namespace: Value = ""
+    incomplete: str | None = None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    fallback_lines: list[int] = field(default_factory=list)
+    depends: list[tuple[str, int]] = field(default_factory=list)
+    missing: list[str] = field(default_factory=list)
+    behavior: FileBehavior = field(default_factory=FileBehavior)

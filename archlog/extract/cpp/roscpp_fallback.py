@@ -1,0 +1,76 @@
+"""roscpp calls read from the text of lines where libclang's AST is incomplete (headers missing):
+NodeHandle calls, the namespaces of their handles, their message types and named callbacks."""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from archlog.extract.cpp.clang_ast import CALL_WINDOW, line_finder, type_from_spelling, unquote
+from archlog.extract.cpp.handles import METHODS, NODE_HANDLE, NODELET_HANDLES
+from archlog.extract.summary import Port
+from archlog.values import Unknown, Value
+
+_FALLBACK = re.compile(r"(\w+)\s*(?:\.|->)\s*(advertise|subscribe|advertiseService|serviceClient)\s*"
+                       r"(?:<\s*([\w:\s]+?)\s*>)?\s*\(\s*(\"(?:[^\"\\]|\\.)*\"|\w+)")
+
+
+def roscpp_fallback(text: str, file: str, covered: set[int],
+                    spans: list[tuple[int, int]] | None) -> tuple[list[Port], list[tuple[str, Port]]]:
+    """The ports of NodeHandle calls on lines of `text` (shown as `file`) that no port covers
+    (within `spans`, if given), and the functions each call names (callback, port)."""
+    ports: list[Port] = []
+    named: list[tuple[str, Port]] = []
+    handles = {m.group(1): unquote(m.group(2)) if m.group(2) else ""
+               for m in re.finditer(r"NodeHandle\s+(\w+)\s*(?:\(\s*(\"[^\"]*\")\s*\))?", text)}
+    objects = {m.group(1) for m in _FALLBACK.finditer(text)}
+    handles.update({m.group(1): m.group(2) for m in re.finditer(r"[:,]\s*(\w+)\s*\(\s*\"(~?[\w/]*)\"\s*\)", text)
+                    if m.group(1) in objects and m.group(1) not in handles})  # member initialisers
+    handles.update({m.group(1): NODELET_HANDLES[m.group(2)] for m in re.finditer(
+        r"NodeHandle\s*&?\s*(\w+)\s*=\s*(get(?:MT)?(?:Private)?NodeHandle)\s*\(\s*\)", text)})
+    line_of = line_finder(text)
+    for match in _FALLBACK.finditer(text):
+        line = line_of(match.start())
+        if line in covered or (spans is not None and not any(a <= line <= b for a, b in spans)):
+            continue
+        obj, method, template, first = match.groups()
+        kind = METHODS[(NODE_HANDLE, method)]  # every method _FALLBACK reads
+        name: Value = unquote(first) if first.startswith('"') else \
+            Unknown(f"{first} (read from tokens)", file, line)
+        handle: Value = handles[obj] if obj in handles else Unknown(f"{obj} (read from tokens)", file, line)
+        type_: Value = (type_from_spelling(template) if template else _callback_type(text, match.end())) or \
+            Unknown(f"{obj}.{method} (type not readable without the AST)", file, line)
+        port = Port(kind, name, type_, file, line, 0, handle)
+        ports.append(port)
+        named += [(callback, port) for callback in _argument_names(text, match.end())]
+    return ports, named
+
+
+def _callback_type(text: str, start: int) -> str | None:
+    """The message type of a callback named in a call's arguments, from the callback's own
+    signature in the file text (for calls the AST lost)."""
+    arguments = _call_text(text, start)
+    callback = re.search(r"&\s*(?:\w+::)*(\w+)\s*[,)]", arguments)
+    if callback is None:
+        return None
+    return _signature_type(text, callback.group(1))
+
+
+@lru_cache(maxsize=128)
+def _signature_type(text: str, function: str) -> str | None:
+    """The message type of a callback's first parameter, from its signature in the text."""
+    signature = re.search(rf"\b{function}\s*\(\s*(?:const\s+)?([\w:]+)", text)
+    return type_from_spelling(signature.group(1)) if signature else None
+
+
+def _call_text(text: str, start: int) -> str:
+    """The rest of a call's statement from `start`, within CALL_WINDOW characters."""
+    window = text[start: start + CALL_WINDOW]
+    end = window.find(";")
+    return window if end < 0 else window[:end]
+
+
+def _argument_names(text: str, start: int) -> list[str]:
+    """The names in a call's further arguments (`&Class::cb`, `cb`, `this`...), from the text."""
+    arguments = _call_text(text, start)
+    return re.findall(r",\s*&?\s*(?:\w+::)*([A-Za-z_]\w*)\s*(?=[,)])", arguments)
