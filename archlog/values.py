@@ -24,9 +24,9 @@ class Unknown:
 class ParamRef:
     """A value read from a ROS parameter (`name` as written in the source) with its default."""
 
-    name: "Value"
+    name: Value
     default: Value
-    handle_ns: "Value" = ""
+    handle_ns: Value = ""
     file: str = ""
     line: int = 0
 

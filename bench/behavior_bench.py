@@ -155,7 +155,7 @@ def report(results: list[SystemResult]) -> dict:
                          "requiring_outputs": r.requiring_outputs, "al601": r.al601, "seconds": round(r.seconds, 3),
                          "extract_seconds": round(r.extract_seconds, 3), "rules_seconds": round(r.rules_seconds, 3),
                          "error": r.error,
-                         "unrecovered": sorted(f"{f}:{l} {sorted(t) or '(none)'}" for (f, l), t in r.calls.items()
+                         "unrecovered": sorted(f"{f}:{line} {sorted(t) or '(none)'}" for (f, line), t in r.calls.items()
                                                if not _recovered(t))} for r in results],
             "distinct_calls": total, "recovered": recovered,
             "by_language": {k: dict(v) for k, v in by_language.items()}, "triggers": dict(kinds)}

@@ -29,7 +29,7 @@ from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.packages import Executable
 
 sys.path.insert(0, str(Path(__file__).parent))
-from python_bench import resolution  # noqa: E402  (one definition of "resolved" for every extractor)
+from python_bench import resolution
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -376,9 +376,9 @@ def score(case: Case, observed: dict, diff: dict) -> dict:
         only_obs = {tuple(x) for x in diff[kind]["only_observed"]}
         only_rec = {tuple(x) for x in diff[kind]["only_recovered"]}
         rec = (o - only_obs) | {(loaded.get(r[0], r[0]), *r[1:]) if r[0] in loaded else r for r in only_rec}
-        if managers and not (case.package == NODELET_INFRA):
-            split = lambda rows: ([r for r in rows if is_infra(kind, r, managers, loaders)],  # noqa: E731
-                                  [r for r in rows if not is_infra(kind, r, managers, loaders)])
+        if managers and case.package != NODELET_INFRA:
+            split = lambda rows, kind=kind: ([r for r in rows if is_infra(kind, r, managers, loaders)],  # noqa: E731
+                                             [r for r in rows if not is_infra(kind, r, managers, loaders)])
         else:
             split = lambda rows: ([], list(rows))  # noqa: E731
         o_infra, o_own = split(o)
@@ -485,7 +485,7 @@ def main() -> int:
         for c in chosen:
             try:
                 r = run_case(c, opts.debsrc, Path(tmp))
-            except Exception as exc:  # noqa: BLE001 - one broken case must not stop the bench
+            except Exception as exc:
                 r = {"case": c.name, "package": c.package, "error": str(exc)[-3000:]}
                 print(f"{c.name}: ERROR {str(exc)[-500:]}", file=sys.stderr)
             else:

@@ -250,7 +250,7 @@ def recover(subject_src: Path, launches: list[str], env: dict[str, str], models:
             host[str(node)] = names.resolve(str(manager), names.namespace_of(str(node)), str(node)) \
                 if not str(manager).startswith("/") else str(manager)
     controller_host = next((n for n, kind in nodes.items() if kind == ("gazebo_ros", "gzserver")), None)
-    controller_pkgs = {n for n in _controller_instances(analysis)}
+    controller_pkgs = set(_controller_instances(analysis))
     if controller_host:
         for node in controller_pkgs:
             host[node] = controller_host
@@ -263,7 +263,7 @@ def recover(subject_src: Path, launches: list[str], env: dict[str, str], models:
     arch["nodes"] = {n for n in nodes if n not in controller_pkgs}
     unknown_ports = defaultdict(list)
 
-    def owner(node) -> str:  # noqa: ANN001
+    def owner(node) -> str:
         return host.get(str(node), str(node))
 
     for kind, relation in (("publishers", "publisher"), ("subscribers", "subscriber")):
@@ -292,7 +292,7 @@ def recover(subject_src: Path, launches: list[str], env: dict[str, str], models:
     return arch, extra
 
 
-def _controller_instances(analysis) -> set[str]:  # noqa: ANN001
+def _controller_instances(analysis) -> set[str]:
     from archlog.diagnostics import DiagnosticSink
     from archlog.system.controllers import controller_nodes
     return {n.name for n in controller_nodes(analysis.config, DiagnosticSink())}
@@ -397,7 +397,7 @@ def score(recovered: dict[str, set], observed: dict[str, set]) -> dict:
     return out
 
 
-def by_node(pairs, kind: str) -> dict[str, list[str]]:  # noqa: ANN001
+def by_node(pairs, kind: str) -> dict[str, list[str]]:
     grouped = defaultdict(list)
     for node, name in pairs:
         grouped[node].append(f"{kind[:3]} {name}")
@@ -467,7 +467,7 @@ def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[s
         reported = meta / subject / "observed.recoverd.compare.csv"
         if reported.exists():
             rows = [r.split(",") for r in reported.read_text().splitlines() if r.startswith(f"{subject},all,")]
-            print(f"  the study's own reported numbers (its own filtering, kind: observed recovered missing extra):")
+            print("  the study's own reported numbers (its own filtering, kind: observed recovered missing extra):")
             for r in rows:
                 print(f"    {r[2]}: {' '.join(r[3:7])}")
     print_table(results)

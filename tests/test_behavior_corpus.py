@@ -8,13 +8,13 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from conftest import CORPUS_BEHAVIOR, corpus_cases, load_case
+from support.behavior import Key, Model, case_dir, describe, expected_behavior, recovered_behavior, silenced_outputs
 
 from archlog.analysis import analyse
 from archlog.extract.summary import TRIGGERS
 from archlog.rules.engine import Engine, Finding, render
 from archlog.rules.ruleset import load_rules
-from conftest import CORPUS_BEHAVIOR, corpus_cases, load_case
-from support.behavior import Key, Model, case_dir, describe, expected_behavior, recovered_behavior, silenced_outputs
 
 CASES = corpus_cases(CORPUS_BEHAVIOR)
 BUGGY = [v for v in CASES if v.name == "buggy"]

@@ -9,7 +9,6 @@ from pathlib import Path
 
 import jsonschema
 import pytest
-
 from conftest import CORPUS, ROOT
 
 BUGGY = CORPUS / "topic_typo" / "buggy"

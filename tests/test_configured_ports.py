@@ -38,7 +38,7 @@ Visualization Manager:
 def test_rosbag_and_rviz_ports(tmp_path: Path) -> None:
     (tmp_path / "view.rviz").write_text(RVIZ)
     launch = tmp_path / "tools.launch"
-    launch.write_text(f"""<launch>
+    launch.write_text("""<launch>
   <node pkg="rosbag" type="record" name="bag" args="-O /tmp/run.bag --split --size 1024 /scan /odom"/>
   <node pkg="rviz" type="rviz" name="rviz" args="-d $(dirname)/view.rviz"/>
 </launch>""")

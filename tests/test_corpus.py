@@ -6,7 +6,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
 from conftest import CORPUS, CORPUS_BEHAVIOR, CORPUS_ROS2, corpus_cases, finding_keys, load_case, run_case
 from support.goldens import rewrite_case_findings
 

@@ -15,7 +15,6 @@ import sys
 from pathlib import Path
 
 import pytest
-
 from conftest import ROOT, requires_ros
 
 DEBSRC = Path(os.environ.get("ARCHLOG_DEBSRC", "/work/debsrc"))

@@ -3,8 +3,9 @@ regenerates them, as `python -m archlog.docs` does)."""
 
 from __future__ import annotations
 
-from archlog.docs import DOCS, GENERATED
 from support.goldens import compare_text
+
+from archlog.docs import DOCS, GENERATED
 
 
 def test_generated_docs_are_fresh(update_goldens: bool) -> None:

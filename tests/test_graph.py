@@ -11,7 +11,6 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
-
 from conftest import CORPUS, ROOT
 
 CASE = ["graph", str(CORPUS / "topic_typo" / "buggy"), "--launch", "waypoint_nav/launch/follow_waypoints.launch"]

@@ -19,7 +19,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-
 from support.hostile import Outside, problems, run_check
 
 CATKIN_XML = """<?xml version="1.0"?>

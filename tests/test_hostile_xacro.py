@@ -38,7 +38,7 @@ def escapes(marker: Path) -> list[str]:
         f"(lambda: {SUBCLASSES}['open']('{m}', 'w'))()",
         f"[{SUBCLASSES}['open']('{m}', 'w') for _ in [1]]",
         f"{SUBCLASSES}['__import__']('os').system('touch {m}')",
-        f"getattr(0, '_' + '_class_' + '_')",
+        "getattr(0, '_' + '_class_' + '_')",
         f"__import__('os').system('touch {m}')",
         f"open('{m}', 'w')",
         f"eval('open(' + chr(39) + '{m}' + chr(39) + ', ' + chr(39) + 'w' + chr(39) + ')')",
@@ -281,9 +281,8 @@ def test_the_environment_is_not_read(fmt: str, tmp_path: Path) -> None:
         assert text in run.output
     if fmt == "text":
         reported, notes = diagnostics(run.output), diagnostics(run.output, "env-not-given")
-        assert {name: reported[name][:2] for name in ENV_PROBES} == {name: (3, "robot-description")
-                                                                      for name in ENV_PROBES}
-        assert {name: notes[name][:2] for name in ENV_PROBES} == {name: (3, "env-not-given") for name in ENV_PROBES}
+        assert {name: reported[name][:2] for name in ENV_PROBES} == dict.fromkeys(ENV_PROBES, (3, "robot-description"))
+        assert {name: notes[name][:2] for name in ENV_PROBES} == dict.fromkeys(ENV_PROBES, (3, "env-not-given"))
         assert "is not given" in reported["env.xacro"][2]
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from conftest import CORPUS, ROOT, corpus_cases, load_case, requires_ros
+from conftest import ROOT, corpus_cases, load_case, requires_ros
 from support.launch_oracle import archlog_view, case_args, expected_error_lines, roslaunch_view
 
 pytestmark = requires_ros()
@@ -29,7 +29,7 @@ def test_launch_case_agrees_with_roslaunch(case: Path) -> None:
         assert marks, f"roslaunch rejects this case ({theirs.error}); mark the element with <!-- roslaunch-error -->"
         found = {(Path(d.file).name, d.line) for d in ours.diagnostics
                  if d.severity == "error" or d.code in ("launch-unresolved", "launch-condition")}
-        assert ours.error and set(marks) <= found | ({m for m in marks} if ours.error == "duplicate node names"
+        assert ours.error and set(marks) <= found | (set(marks) if ours.error == "duplicate node names"
                                                      else set()), (theirs.error, ours.diagnostics)
         return
     assert not marks, "case is marked as an error but roslaunch accepts it"

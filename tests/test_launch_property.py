@@ -7,10 +7,9 @@ import tempfile
 from pathlib import Path
 from xml.sax.saxutils import quoteattr
 
+from conftest import ROOT, requires_ros
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-
-from conftest import ROOT, requires_ros
 from support.launch_oracle import archlog_view, roslaunch_view
 
 pytestmark = requires_ros()

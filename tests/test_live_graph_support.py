@@ -6,7 +6,6 @@ import textwrap
 from pathlib import Path
 
 import pytest
-
 from conftest import requires_ros
 from support.live_graph import LiveGraph, _pids_with_env, launch_graph
 

@@ -8,11 +8,11 @@ import ast
 from pathlib import Path
 
 import pytest
+from conftest import ROOT
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.python.node import extract_python
 from archlog.extract.python.repair import parse_tolerant
-from conftest import ROOT
 
 CORPUS_FILES = sorted(p for folder in ("python", "ros1", "ros2", "behavior") for p in (ROOT / "corpus" / folder).rglob("*")
                       if p.is_file() and (p.suffix == ".py" or p.name == "rospy_python2") and "launch" not in p.parts)

@@ -9,7 +9,6 @@ from pathlib import Path
 
 import pexpect
 import pytest
-
 from conftest import CORPUS, ROOT
 
 ANSI = re.compile(r"\x1b\[[0-9;?]*[A-Za-z]|\r")

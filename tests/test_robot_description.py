@@ -5,10 +5,11 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
+from conftest import ROOT
+
 from archlog.analysis import analyse
 from archlog.rules.engine import Engine
 from archlog.rules.ruleset import load_rules
-from conftest import ROOT
 
 CASES = ROOT / "corpus" / "robot_description"
 CAMERA_URDF = """<robot name="cam">

@@ -10,11 +10,11 @@ import re
 from pathlib import Path
 
 import pytest
+from conftest import ROOT
 
 from archlog.facts.schema import BY_NAME, DERIVED, DERIVED_BY_NAME
 from archlog.rules.engine import _parse
 from archlog.rules.ruleset import BUILTIN, RuleSet, load_rules
-from conftest import ROOT
 
 RULE_FOLDERS = [BUILTIN, ROOT / "docs" / "examples" / "rules"]
 

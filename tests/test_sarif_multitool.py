@@ -10,7 +10,6 @@ import sys
 from pathlib import Path
 
 import pytest
-
 from conftest import CORPUS, ROOT, load_case
 
 MULTITOOL = ROOT / "tests" / "sarif-multitool" / "node_modules" / "@microsoft" / "sarif-multitool-linux" / \

@@ -9,7 +9,6 @@ import sys
 from pathlib import Path
 
 import jsonschema
-
 from conftest import CORPUS, ROOT
 
 LAUNCH = ["--launch", "waypoint_nav/launch/follow_waypoints.launch"]

@@ -1,4 +1,4 @@
-"""The ROS 2 QoS vocabulary shared by the rclpy (python.py) and rclcpp (rclcpp_walk.py) readers.
+"""The ROS 2 QoS vocabulary shared by the rclpy (python/qos_profile.py) and rclcpp (cpp/rclcpp/qos.py) readers.
 
 A `Qos` starts from a preset (rmw's profiles, as rclcpp's QoS classes and rclpy's qos_profile_*
 name them) or from a depth, and changes one policy at a time, the way rclcpp's builder methods

@@ -16,7 +16,6 @@ Its node name is /archlog_feeder; the bench leaves it out of the observed graph.
 import json
 import struct
 import sys
-import time
 
 import genpy
 import rosgraph
@@ -32,18 +31,18 @@ CHANNELS = {"mono8": (1, 1), "bayer_rggb8": (1, 1), "rgb8": (3, 1), "bgr8": (3, 
 
 def message(spec):
     kind = spec["kind"]
-    frame = spec.get("frame", "camera")
+    spec.get("frame", "camera")
     if kind == "image":
         cls = roslib.message.get_message_class("sensor_msgs/Image")
         enc = spec.get("encoding", "mono8")
         ch, size = CHANNELS[enc]
         w, h = spec.get("width", 64), spec.get("height", 48)
         if enc == "32FC1":
-            data = struct.pack("<%df" % (w * h), *([1.5] * (w * h)))
+            data = struct.pack(f"<{w * h}f", *([1.5] * (w * h)))
         elif enc == "16UC1":
-            data = struct.pack("<%dH" % (w * h), *([1500] * (w * h)))
+            data = struct.pack(f"<{w * h}H", *([1500] * (w * h)))
         else:
-            data = bytes(((x * 7) % 250 for x in range(w * h * ch * size)))
+            data = bytes((x * 7) % 250 for x in range(w * h * ch * size))
         return cls(encoding=enc, width=w, height=h, step=w * ch * size, data=data)
     if kind == "camera_info":
         cls = roslib.message.get_message_class("sensor_msgs/CameraInfo")
@@ -122,7 +121,7 @@ def main(spec):
         if tick % 3 == 0 and targets:
             try:
                 pubs, _subs, _srvs = master.getSystemState()
-            except Exception:  # noqa: BLE001 - the master may be going down
+            except Exception:
                 pubs = []
             for topic, nodes in pubs:
                 if topic not in listened and targets & set(nodes) and topic not in ("/rosout", "/rosout_agg"):

@@ -14,8 +14,8 @@ import signal
 import socket
 import subprocess
 import tempfile
-import time
 import threading
+import time
 import xmlrpc.client
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -118,7 +118,7 @@ class TopicMonitor:
     def __init__(self, proc: subprocess.Popen, topics: list[str], log: Path) -> None:
         self.proc, self.topics, self.log = proc, list(topics), log
         self._lock = threading.Lock()
-        self._counts: dict[str, int] = {t: 0 for t in topics}
+        self._counts: dict[str, int] = dict.fromkeys(topics, 0)
         self._ready = threading.Event()
         self.unconnected: list[str] = []
         self._reader = threading.Thread(target=self._read, daemon=True)

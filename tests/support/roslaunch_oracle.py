@@ -22,7 +22,7 @@ def plain(value):
 
 def main():
     request = json.load(sys.stdin)
-    sys.argv = ["roslaunch"] + ["%s:=%s" % kv for kv in request["args"].items()]
+    sys.argv = ["roslaunch"] + ["{}:={}".format(*kv) for kv in request["args"].items()]
     import roslaunch.config
     import roslaunch.loader
     import roslaunch.xmlloader
@@ -42,7 +42,7 @@ def main():
         config = roslaunch.config.load_config_default(request["files"], None, verbose=False,
                                                       loader=roslaunch.xmlloader.XmlLoader())
     except Exception as exc:  # roslaunch raises many types; all mean "rejected"
-        result["error"] = "%s: %s" % (type(exc).__name__, exc)
+        result["error"] = f"{type(exc).__name__}: {exc}"
         print(json.dumps(result))
         return
     for node in config.nodes + config.tests:
