@@ -45,7 +45,8 @@ def nested_calls(texts: list[tuple[Path, str]], macros: dict[str, Macro]) -> tup
             if m.group(0) == ")":
                 product //= stack.pop() if stack else 1
                 continue
-            copies = macros[m.group(1)].copies if m.group(1) in macros else 1
+            # a macro that drops its argument (copies 0) still counts once: the product never reaches 0
+            copies = max(1, macros[m.group(1)].copies) if m.group(1) in macros else 1
             stack.append(copies)
             product *= copies
             if product > MACRO_TOKENS:
