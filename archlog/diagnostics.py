@@ -116,6 +116,12 @@ CODES: dict[str, Code] = {
         "robot-description": ("warning", "A robot description (URDF/xacro) cannot be read or expanded.",
                               "Fix the description; xacro expressions are evaluated by archlog's restricted "
                               "evaluator."),
+        "plugin-no-model": ("note", "A robot description loads a gazebo plugin that archlog has no model of "
+                            "(archlog/models/plugins/); the ports it creates in gzserver are unknown.",
+                            "Add the plugin to archlog/models/plugins/gazebo.yaml."),
+        "xacro-legacy": ("note", "A xacro file calls a macro without the xacro: prefix (<kobuki/>), which older "
+                         "xacro accepted with a deprecation warning; archlog expands it as a macro call.",
+                         "Write <xacro:NAME/>."),
         "rviz-config": ("warning", "An rviz configuration cannot be read; its displays' topics are unknown.",
                         "Check the -d path."),
     }),

@@ -59,11 +59,15 @@ def test_urdf_textfile_plugins_namespaces_and_unknown_topics(tmp_path: Path) -> 
         "args='-urdf -param robot_description -model cam2 -robot_namespace r2'/></group>"
         "<node pkg='gazebo_ros' type='spawn_model' name='orphan' args='-urdf -param missing_description'/></launch>")
     result = analyse([tmp_path], ["cam/cam.launch"], {}, [])
+    camera = [("/camera_info", "sensor_msgs/CameraInfo"), ("/image_raw", "sensor_msgs/Image"),
+              ("/parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
+              ("/parameter_updates", "dynamic_reconfigure/Config")]
     assert [p for p in ports(result, "publisher") if "spawn" in p[0]] == [
-        ("/spawn", "/rover/front/camera_info", "sensor_msgs/CameraInfo"),
-        ("/spawn", "/rover/front/image_raw", "sensor_msgs/Image"), ("/spawn", "?", "sensor_msgs/LaserScan"),
-        ("/two/spawn", "/r2/front/camera_info", "sensor_msgs/CameraInfo"),
-        ("/two/spawn", "/r2/front/image_raw", "sensor_msgs/Image"), ("/two/spawn", "?", "sensor_msgs/LaserScan")]
+        *[("/spawn", "/rover/front" + n, t) for n, t in camera], ("/spawn", "?", "sensor_msgs/LaserScan"),
+        *[("/two/spawn", "/r2/front" + n, t) for n, t in camera], ("/two/spawn", "?", "sensor_msgs/LaserScan")]
+    assert [p for p in ports(result, "service_server") if p[0] == "/spawn"] == [
+        ("/spawn", "/rover/front/set_camera_info", "sensor_msgs/SetCameraInfo"),
+        ("/spawn", "/rover/front/set_parameters", "dynamic_reconfigure/Reconfigure")]
     assert [(d.line, d.code) for d in result.diagnostics.items] == [(1, "robot-description")]
     assert "/missing_description" in result.diagnostics.items[0].message
 
@@ -89,4 +93,4 @@ def test_unreadable_descriptions_and_arguments_are_diagnostics(tmp_path: Path) -
         "<node pkg='controller_manager' type='spawner' name='c' args='base &quot;arm'/></launch>\n")
     result = analyse([tmp_path], ["bot/bad.launch"], {}, [])
     assert sorted((d.line, d.severity, d.code) for d in result.diagnostics.items) == [
-        (1, "note", "robot-description"), (3, "note", "robot-description"), (5, "error", "launch-invalid")]
+        (1, "note", "robot-description"), (3, "note", "plugin-no-model"), (5, "error", "launch-invalid")]

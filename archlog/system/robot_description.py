@@ -9,10 +9,14 @@ answered from the workspace. The plugins run inside gzserver once
 
 from __future__ import annotations
 
+import functools
+import re
 import shlex
 import xml.dom.minidom
 from dataclasses import dataclass
 from pathlib import Path
+
+import yaml
 
 from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
@@ -24,32 +28,35 @@ from archlog.system.xacro_expand import Place, XacroFailure, expand, parse_xml
 from archlog.values import Unknown
 
 
+PLUGIN_MODELS = Path(__file__).resolve().parent.parent / "models" / "plugins"
+KINDS = {"publishers": "publisher", "subscribers": "subscriber", "services": "service_server"}
+RECONFIGURE = (("publisher", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
+               ("publisher", "parameter_updates", "dynamic_reconfigure/Config"),
+               ("service_server", "set_parameters", "dynamic_reconfigure/Reconfigure"))
+
+
 @dataclass(frozen=True)
-class PluginTopic:
-    kind: str  # publisher or subscriber
-    element: str  # the plugin's SDF element naming the topic
-    default: str | None  # the plugin's default when the element is absent (None: no default)
-    type: str
+class PluginModel:
+    """The ports a gazebo plugin creates, as archlog/models/plugins/*.yaml describe them."""
+
+    filename: str
+    elements: dict[str, str | None]  # SDF element -> default (a template over earlier elements; None: unknown)
+    namespace: str  # template
+    ports: tuple[tuple[str, str, str], ...]  # (kind, name template, type)
 
 
-DRIVE = (PluginTopic("subscriber", "commandTopic", "cmd_vel", "geometry_msgs/Twist"),
-         PluginTopic("publisher", "odometryTopic", "odom", "nav_msgs/Odometry"))
-PLUGINS: dict[str, tuple[PluginTopic, ...]] = {
-    "libgazebo_ros_diff_drive.so": DRIVE,
-    "libgazebo_ros_skid_steer_drive.so": DRIVE,
-    "libgazebo_ros_planar_move.so": DRIVE,
-    "libgazebo_ros_imu.so": (PluginTopic("publisher", "topicName", None, "sensor_msgs/Imu"),),
-    "libgazebo_ros_imu_sensor.so": (PluginTopic("publisher", "topicName", None, "sensor_msgs/Imu"),),
-    "libgazebo_ros_laser.so": (PluginTopic("publisher", "topicName", None, "sensor_msgs/LaserScan"),),
-    "libgazebo_ros_gpu_laser.so": (PluginTopic("publisher", "topicName", None, "sensor_msgs/LaserScan"),),
-    "libgazebo_ros_p3d.so": (PluginTopic("publisher", "topicName", None, "nav_msgs/Odometry"),),
-    "libgazebo_ros_joint_state_publisher.so": (PluginTopic("publisher", "topicName", "joint_states",
-                                                           "sensor_msgs/JointState"),),
-    "libgazebo_ros_camera.so": (PluginTopic("publisher", "imageTopicName", "image_raw", "sensor_msgs/Image"),
-                                PluginTopic("publisher", "cameraInfoTopicName", "camera_info",
-                                            "sensor_msgs/CameraInfo")),
-    "libgazebo_ros_control.so": (),  # its controllers come from controller_manager's configuration
-}
+@functools.cache
+def plugin_models() -> dict[str, PluginModel]:
+    """Every plugin model shipped in archlog/models/plugins/, by library file name."""
+    found = {}
+    for path in sorted(PLUGIN_MODELS.glob("*.yaml")):
+        for entry in yaml.safe_load(path.read_text())["plugins"]:
+            ports = [(KINDS[key], p["name"], p["type"]) for key in KINDS for p in entry.get(key, [])]
+            ports += [(kind, names.join(ns, suffix) if ns else suffix, type_)
+                      for ns in entry.get("reconfigure", []) for kind, suffix, type_ in RECONFIGURE]
+            found[entry["filename"]] = PluginModel(entry["filename"], dict(entry.get("elements") or {}),
+                                                   entry.get("namespace", ""), tuple(ports))
+    return found
 
 
 def spawned_ports(node: LaunchNode, words: list[str], config: LaunchConfig, workspace: Workspace,
@@ -120,21 +127,40 @@ def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: 
                   workspace: Workspace, diagnostics: DiagnosticSink) -> list[Port]:
     library = plugin.getAttribute("filename")
     file, line = _where(library, files, elem, workspace)
-    if library not in PLUGINS:
-        if library.startswith("libgazebo_ros"):
-            diagnostics.add(file, line, "robot-description", f"gazebo plugin {library} is not modelled; "
-                                                               "its topics are unknown", "note")
+    model = plugin_models().get(library)
+    if model is None:
+        diagnostics.add(file, line, "plugin-no-model", f"gazebo plugin {library or '(no filename)'} has no model "
+                        "in archlog/models/plugins/; the ports it creates are unknown")
         return []
-    ns = robot_ns if robot_ns is not None else _text(plugin, "robotNamespace") or ""
-    if library == "libgazebo_ros_camera.so":
-        ns = names.join("/" + ns.strip("/"), _text(plugin, "cameraName") or "")
+    values: dict[str, str | None] = {}
+    for element, default in model.elements.items():
+        given = robot_ns if element == "robotNamespace" and robot_ns is not None else _text(plugin, element)
+        values[element] = given if given is not None else _fill(default, values)
+
+    def unknown(template: str) -> Unknown:
+        missing = sorted(e for e in model.elements if "{" + e + "}" in template and values[e] is None)
+        return Unknown(f"{library} without <{'>, <'.join(missing)}>", file, line)
+
+    ns = _fill(model.namespace, values)
     ports = []
-    for topic in PLUGINS[library]:
-        name = _text(plugin, topic.element) or topic.default
-        resolved: str | Unknown = names.resolve(name, "/" + ns.strip("/"), "/gazebo") if name else \
-            Unknown(f"{library} without <{topic.element}>", file, line)
-        ports.append(Port(topic.kind, resolved, topic.type, file, line))
+    for kind, template, type_ in model.ports:
+        name = _fill(template, values)
+        if name == "":
+            continue  # an element set empty: the plugin does not advertise it
+        resolved: str | Unknown = names.resolve(name, "/" + ns.strip("/"), "/gazebo") if name is not None \
+            and ns is not None else unknown(template if name is None else model.namespace)
+        ports.append(Port(kind, resolved, type_, file, line))
     return ports
+
+
+def _fill(template: str | None, values: dict[str, str | None]) -> str | None:
+    """A template over element values, None when it refers to an element whose value is unknown."""
+    if template is None:
+        return None
+    parts = re.split(r"\{(\w+)\}", template)
+    if any(values.get(p) is None for p in parts[1::2]):
+        return None
+    return "".join(p if i % 2 == 0 else values[p] or "" for i, p in enumerate(parts))
 
 
 def _text(plugin: xml.dom.minidom.Element, tag: str) -> str | None:
