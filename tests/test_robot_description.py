@@ -94,3 +94,39 @@ def test_unreadable_descriptions_and_arguments_are_diagnostics(tmp_path: Path) -
     result = analyse([tmp_path], ["bot/bad.launch"], {}, [])
     assert sorted((d.line, d.severity, d.code) for d in result.diagnostics.items) == [
         (1, "note", "robot-description"), (3, "note", "plugin-no-model"), (5, "error", "launch-invalid")]
+
+
+def test_legacy_macro_calls_hector_and_ros_control_plugins_and_unmodelled_plugins() -> None:
+    result = analyse([CASES / "legacy"], ["rover/sim.launch"], {}, [])
+    assert [(d.file, d.line, d.severity, d.code) for d in result.diagnostics.items] == [
+        ("rover/urdf/rover.urdf.xacro", 6, "note", "xacro-legacy"),  # <rover_imu/> is expanded, not dropped
+        ("rover/urdf/sensors.xacro", 13, "note", "plugin-no-model")]  # the plugin's file and line
+    assert "libgazebo_ros_bumper.so" in result.diagnostics.items[1].message
+    published = [t for n, t, _ in ports(result, "publisher") if n == "/spawn_rover"]
+    assert published == ["/imu/data", "/imu/data/accel/parameter_descriptions", "/imu/data/accel/parameter_updates",
+                         "/imu/data/bias", "/imu/data/rate/parameter_descriptions", "/imu/data/rate/parameter_updates",
+                         "/imu/data/yaw/parameter_descriptions", "/imu/data/yaw/parameter_updates"]
+    served = [t for n, t, _ in ports(result, "service_server") if n == "/spawn_rover"]
+    assert served == ["/controller_manager/list_controller_types", "/controller_manager/list_controllers",
+                      "/controller_manager/load_controller", "/controller_manager/reload_controller_libraries",
+                      "/controller_manager/switch_controller", "/controller_manager/unload_controller",
+                      "/imu/data/accel/set_parameters", "/imu/data/calibrate", "/imu/data/rate/set_parameters",
+                      "/imu/data/set_accel_bias", "/imu/data/set_rate_bias", "/imu/data/yaw/set_parameters"]
+
+
+def test_plugin_defaults_unknown_namespaces_and_plain_elements(tmp_path: Path) -> None:
+    shutil.copytree(CASES / "legacy" / "rover", tmp_path / "rover")
+    (tmp_path / "rover" / "urdf" / "rover.urdf.xacro").write_text(
+        "<robot name='r' xmlns:xacro='http://www.ros.org/wiki/xacro'><link name='base_link'/><gazebo>\n"
+        "<plugin name='gps' filename='libhector_gazebo_ros_gps.so'><robotNamespace>r</robotNamespace></plugin>\n"
+        "<plugin name='cm' filename='libgazebo_ros_control.so'/>\n"
+        "<plugin name='k' filename='libgazebo_ros_kobuki.so'/></gazebo></robot>\n")
+    result = analyse([tmp_path], ["rover/sim.launch"], {}, [])
+    assert result.diagnostics.items == []  # <link>, <gazebo> are no macros: no xacro-legacy note
+    published = [t for n, t, _ in ports(result, "publisher") if n == "/spawn_rover"]
+    assert published[:2] == ["/joint_states", "/mobile_base/events/bumper"]
+    assert {"/r/fix", "/r/fix_velocity", "/r/fix/status/parameter_updates", "/odom"} <= set(published)
+    served = [t for n, t, _ in ports(result, "service_server") if n == "/spawn_rover"]
+    assert served.count("?") == 6  # gazebo_ros_control without <robotNamespace>: the model's name, unknown here
+    assert "/r/fix/set_reference_geopose" in served
+    assert ("/spawn_rover", "/mobile_base/commands/velocity", "geometry_msgs/Twist") in ports(result, "subscriber")

@@ -120,6 +120,9 @@ def _xacro(source: Path, mappings: dict[str, str], workspace: Workspace, elem: E
         return None
     for name, place in expanded.unseen:
         diagnostics.add(*at(place), "env-not-given", sandbox.not_given_message(name))
+    for name, place in dict.fromkeys(expanded.legacy):
+        diagnostics.add(*at(place), "xacro-legacy", f"<{name}> calls the macro {name} without the xacro: prefix "
+                        "(deprecated; xacro 2 leaves it unexpanded); archlog expands it")
     return expanded.text, expanded.files
 
 

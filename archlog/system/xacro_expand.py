@@ -28,7 +28,7 @@ import re
 import xml.dom.minidom
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -71,6 +71,7 @@ class Expanded:
     text: str
     files: list[Path]
     unseen: list[tuple[str, Place]]
+    legacy: list[tuple[str, Place]] = field(default_factory=list)  # macros called without xacro:, with places
 
 
 class XacroFailure(Exception):
@@ -89,7 +90,7 @@ def expand(source: Path, mappings: dict[str, str], find: Callable[[str], Path | 
     with budget.scope(), routed(expansion):
         try:
             text = xacro.process_file(str(source), mappings=dict(mappings)).toxml()
-            return Expanded(text, [source, *map(Path, xacro.all_includes)], expansion.unseen)
+            return Expanded(text, [source, *map(Path, xacro.all_includes)], expansion.unseen, expansion.legacy)
         except Exception as exc:  # xacro reports every failure as some exception
             raise expansion.failure(exc, source) from None
 
@@ -103,6 +104,7 @@ class Expansion:
         self.find = find
         self.needle: str | None = None  # text of the innermost failing piece, to find its line by
         self.unseen: list[tuple[str, Place]] = []
+        self.legacy: list[tuple[str, Place]] = []
         self.names = self._names()
 
     def _names(self) -> dict[str, object]:
@@ -293,6 +295,25 @@ class Expansion:
 
         return counted
 
+    def handle_macro_call(self, original: Callable[..., bool]) -> Callable[..., bool]:
+        """xacro's `handle_macro_call`, also for the legacy call without the prefix (`<kobuki/>` for a
+        macro kobuki), which xacro before 1.13 expanded with a deprecation warning and xacro 2 leaves
+        as an element; each such call is recorded with its place."""
+        xacro = self.xacro
+
+        def call(node: xml.dom.minidom.Element, macros: object, symbols: object) -> bool:
+            name = node.tagName
+            if ":" not in name:
+                try:
+                    xacro.resolve_macro(name, macros, symbols)
+                except (KeyError, TypeError):
+                    return original(node, macros, symbols)
+                self.legacy.append((name, self._located(f"<{name}")))
+                node.tagName = node.nodeName = "xacro:" + name
+            return original(node, macros, symbols)
+
+        return call
+
     def replace_node(self, original: Callable[..., None]) -> Callable[..., None]:
         """xacro's `replace_node`, the sibling scans of its insertions and removal spent as steps."""
         def counted(node: xml.dom.minidom.Node, by: xml.dom.minidom.Node | list[xml.dom.minidom.Node] | None,
@@ -358,6 +379,7 @@ def routed(expansion: Expansion) -> Iterator[None]:
     replaced = {"eval_text": expansion.eval_text, "safe_eval": expansion.evaluate, "parse": expansion.parse,
                 "eval_all": expansion.eval_all(xacro.eval_all),
                 "replace_node": expansion.replace_node(xacro.replace_node),
+                "handle_macro_call": expansion.handle_macro_call(xacro.handle_macro_call),
                 "_global_symbols": expansion.names, "re_macro_arg": _MACRO_ARG, "all_includes": [],
                 "glob": SimpleNamespace(glob=expansion.glob),  # the module xacro lists include patterns with
                 "substitution_args_context": {}, "filestack": None, "macrostack": None}
