@@ -307,17 +307,10 @@ CAUSES = {
                       "target_link_libraries); archlog reads only the executable's own sources. No diagnostic.",
     "no-extension": "add_executable(${PROJECT_NAME} src/marker_server) names its source without the .cpp "
                     "extension; the executable gets no source file and no ports. No diagnostic.",
-    "plugin-unmodelled": "a robot-description gazebo plugin that archlog's plugin table does not know "
-                         "(libhector_gazebo_ros_imu.so, libhector_gazebo_ros_gps.so); no diagnostic, since only "
-                         "libgazebo_ros* plugins are reported as unmodelled.",
-    "xacro-unprefixed": "the turtlebot description calls its macros without the xacro: prefix (<kobuki/>, "
-                        "<sensor_kinect/>); the xacro 2.x library leaves them unexpanded, so the description has "
-                        "no <plugin> at all (libgazebo_ros_kobuki.so, libgazebo_ros_openni_kinect.so, neither "
-                        "modelled anyway). No diagnostic.",
-    "ros-control-plugin": "libgazebo_ros_control.so has no ports in archlog's plugin table: the controller "
-                          "manager's services it advertises inside gzserver are missing.",
-    "gazebo-model": "gzserver's ROS API plugin advertises more than archlog/models/gazebo_ros.yaml lists "
-                    "(light/joint/link property services, its own dynamic_reconfigure server).",
+    "image-transport": "the kinect's image is advertised through image_transport, whose installed plugins add "
+                       "compressed, compressedDepth and theora topics and their dynamic_reconfigure servers; "
+                       "archlog/models/plugins/gazebo.yaml lists the raw topics only (what is installed is "
+                       "not in the sources).",
     "model-condition": "archlog/models/diff_drive_controller.yaml publishes /tf only if ~enable_odom_tf; the "
                        "controller advertises /tf unconditionally (diff_drive_controller.cpp:727), so the master "
                        "sees it even with enable_odom_tf: false (husky control.yaml).",
@@ -346,11 +339,8 @@ CAUSES = {
 
 # (subject or "", tool or "", node regex, port regex, cause); first match wins.
 CAUSE_PATTERNS = [
-    ("husky", "", "/gazebo", r"/(imu|navsat)/", "plugin-unmodelled"),
-    ("", "", "/gazebo", r"/controller_manager/", "ros-control-plugin"),
-    ("", "", "/gazebo", r"/gazebo/", "gazebo-model"),
     ("husky", "", "/gazebo", r"/tf$", "model-condition"),
-    ("turtlebot", "", "/gazebo", r".", "xacro-unprefixed"),
+    ("turtlebot", "", "/gazebo", r"/image_raw/(compressed|compressedDepth|theora)", "image-transport"),
     ("", "", "/twist_marker_server", r".", "no-extension"),
     ("", "archlog", "/(ekf_localization|joy_teleop/teleop_twist_joy|robot_state_publisher)", r".", "linked-library"),
     ("", "archlog", "/move_base", r".", "linked-library"),

@@ -126,6 +126,7 @@ def test_plugin_defaults_unknown_namespaces_and_plain_elements(tmp_path: Path) -
     published = [t for n, t, _ in ports(result, "publisher") if n == "/spawn_rover"]
     assert published[:2] == ["/joint_states", "/mobile_base/events/bumper"]
     assert {"/r/fix", "/r/fix_velocity", "/r/fix/status/parameter_updates", "/odom"} <= set(published)
+    assert "/tf" not in published  # kobuki broadcasts odometry on /tf only with <publish_tf>1</publish_tf>
     served = [t for n, t, _ in ports(result, "service_server") if n == "/spawn_rover"]
     assert served.count("?") == 6  # gazebo_ros_control without <robotNamespace>: the model's name, unknown here
     assert "/r/fix/set_reference_geopose" in served

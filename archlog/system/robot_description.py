@@ -42,7 +42,7 @@ class PluginModel:
     filename: str
     elements: dict[str, str | None]  # SDF element -> default (a template over earlier elements; None: unknown)
     namespace: str  # template
-    ports: tuple[tuple[str, str, str], ...]  # (kind, name template, type)
+    ports: tuple[tuple[str, str, str, str | None], ...]  # (kind, name template, type, element it needs true)
 
 
 @functools.cache
@@ -51,8 +51,8 @@ def plugin_models() -> dict[str, PluginModel]:
     found = {}
     for path in sorted(PLUGIN_MODELS.glob("*.yaml")):
         for entry in yaml.safe_load(path.read_text())["plugins"]:
-            ports = [(KINDS[key], p["name"], p["type"]) for key in KINDS for p in entry.get(key, [])]
-            ports += [(kind, names.join(ns, suffix) if ns else suffix, type_)
+            ports = [(KINDS[key], p["name"], p["type"], p.get("if")) for key in KINDS for p in entry.get(key, [])]
+            ports += [(kind, names.join(ns, suffix) if ns else suffix, type_, None)
                       for ns in entry.get("reconfigure", []) for kind, suffix, type_ in RECONFIGURE]
             found[entry["filename"]] = PluginModel(entry["filename"], dict(entry.get("elements") or {}),
                                                    entry.get("namespace", ""), tuple(ports))
@@ -146,10 +146,10 @@ def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: 
 
     ns = _fill(model.namespace, values)
     ports = []
-    for kind, template, type_ in model.ports:
+    for kind, template, type_, needs in model.ports:
         name = _fill(template, values)
-        if name == "":
-            continue  # an element set empty: the plugin does not advertise it
+        if name == "" or needs is not None and (values.get(needs) or "").lower() not in ("1", "true"):
+            continue  # an element set empty, or a flag not set: the plugin does not advertise it
         resolved: str | Unknown = names.resolve(name, "/" + ns.strip("/"), "/gazebo") if name is not None \
             and ns is not None else unknown(template if name is None else model.namespace)
         ports.append(Port(kind, resolved, type_, file, line))
