@@ -327,8 +327,6 @@ CAUSES = {
     "no-compile": "the C++ does not compile here (rosbag/bag.h, yaml-cpp, generated dynamic_reconfigure "
                   "headers missing) and the token fallback misses calls on members of unresolved types "
                   "(amcl's diagnostic_updater, kinetic amcl's tf::TransformListener).",
-    "image-transport": "image_transport plugin topics (compressed, compressedDepth, theora and their "
-                       "dynamic_reconfigure servers) and the camera plugin's own ports are not modelled.",
     "move-base-model": "move_base model approximations (its header says so): layer and planner plugins' "
                        "dynamic_reconfigure servers, obstacle-layer observation sources, DWA clouds, footprint "
                        "subscriptions.",

@@ -27,7 +27,6 @@ from archlog.system.command_line import split_options
 from archlog.system.xacro_expand import Place, XacroFailure, expand, parse_xml
 from archlog.values import Unknown
 
-
 PLUGIN_MODELS = Path(__file__).resolve().parent.parent / "models" / "plugins"
 KINDS = {"publishers": "publisher", "subscribers": "subscriber", "services": "service_server"}
 RECONFIGURE = (("publisher", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
