@@ -313,3 +313,10 @@ def test_readers_survive_random_input(name: str) -> None:
                                                                                        budget.Crossed)):
                     raise
     read()
+
+
+def test_a_macro_that_drops_its_argument_counts_once_in_nested_calls(tmp_path: Path) -> None:
+    from archlog.extract.cpp.macros import defines, nested_calls
+    text = "#define DROP(x) 0\n#define F(x) x x\nint f() { return DROP(F(1)) + F(DROP(2)); }\n"
+    path = tmp_path / "drop.cpp"
+    assert nested_calls([(path, text)], defines(path, text)) is None  # copies 0 once divided by zero
