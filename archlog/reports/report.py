@@ -10,10 +10,9 @@ from pathlib import Path
 from archlog import sandbox
 from archlog.diagnostics import SEVERITIES, Diagnostic
 from archlog.facts.compose import NAMED_PORTS
-from archlog.values import Unknown
 from archlog.rules.engine import Finding, Location
 from archlog.rules.ruleset import Rule
-
+from archlog.values import Unknown
 
 STATUSES = ("recovered", "partial", "opaque")
 _WHERE = re.compile(r"^(?P<file>[^:\n]+?)(?::(?P<line>\d+))?: (?P<why>.*)$", re.S)
