@@ -99,3 +99,14 @@ def test_diff_divides_both_approximations_by_the_observed_count() -> None:
     assert table["publishers"]["over_approximation"] == 100.0  # 2 extra / 2 observed, not 2/3
     assert table["publishers"]["under_approximation"] == 50.0
     assert table["subscribers"]["over_approximation"] == table["subscribers"]["under_approximation"] == 0.0
+
+
+def test_a_macro_that_drops_its_argument_does_not_stop_the_nesting_check() -> None:
+    # `#define DROP(x) 0` copies its argument 0 times: the check divided by it (ZeroDivisionError,
+    # which stopped the analysis of husky and turtlebot in bench/eval_recovery.py)
+    from archlog.extract.cpp.macros import defines, nested_calls
+
+    path = Path("m.cpp")
+    text = "#define DROP(x) 0\n#define F(x) x x\nint a = DROP(F(1)) + F(2);\nint b = " + "F(" * 40 + "1" + ")" * 40 + ";\n"
+    assert nested_calls([(path, text[: text.index("int b")])], defines(path, text)) is None
+    assert nested_calls([(path, text)], defines(path, text)) == (path, 4, "F")
