@@ -47,7 +47,7 @@ from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp_fallback import roscpp_fallback
 from archlog.extract.cpp.scope import Scope
 from archlog.extract.summary import Port
-from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
+from archlog.values import Alternatives, FullNodeName, ParamRef, Unknown, Value, alternatives, concat
 
 PARAM_READS = {"param", "getParam", "getParamCached", "hasParam", "searchParam", "get", "getCached", "has", "search"}
 PARAM_WRITES = {"setParam", "deleteParam", "set", "del"}
@@ -253,7 +253,7 @@ class _Walker:
         if owner in ("ros::names", "") and name in ("resolve", "clean") and args:
             return self.value(args[-1] if name == "resolve" else args[0], depth + 1)
         if owner == "ros::this_node" and name == "getName":  # the full name: resolves as "~" does
-            return "~"
+            return FullNodeName("~")
         if owner == "ros::this_node" and name == "getNamespace":
             return ""
         if owner in (NODE_HANDLE, "ros::param") and name == "param" and len(args) == 2 and is_rvalue(args[1]):
@@ -399,7 +399,7 @@ class _Walker:
         loc, file = call.location, self.shown(call)
         self.port_calls.setdefault(call, []).append(kind)
         if isinstance(name, str) and name.startswith("~") and call.referenced is not None and \
-                qualified(call.referenced.semantic_parent) == NODE_HANDLE and not names_the_node(call):
+                qualified(call.referenced.semantic_parent) == NODE_HANDLE and not isinstance(name, FullNodeName):
             self.result.diagnostics.append(Diagnostic(
                 file, loc.line, "cpp-private-name",
                 f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
@@ -419,23 +419,3 @@ class _Walker:
         self.result.fallback_lines += [port.line for port in ports]
         self.named_callbacks += named
 
-
-def names_the_node(call: ci.Cursor) -> bool:
-    """Whether the name argument of `call` is built from ros::this_node::getName(), directly or
-    through a local variable: the node's full name, which a NodeHandle accepts (unlike a written
-    ~name, although both resolve alike)."""
-    args = written_args(call)
-    if not args:
-        return False
-    for cursor in args[0].walk_preorder():
-        if _is_get_name(cursor):
-            return True
-        if cursor.kind == K.DECL_REF_EXPR and cursor.referenced is not None and cursor.referenced.kind == K.VAR_DECL \
-                and any(_is_get_name(c) for c in cursor.referenced.walk_preorder()):
-            return True
-    return False
-
-
-def _is_get_name(cursor: ci.Cursor) -> bool:
-    return cursor.kind == K.CALL_EXPR and cursor.spelling == "getName" and cursor.referenced is not None and \
-        qualified(cursor.referenced.semantic_parent) == "ros::this_node"
