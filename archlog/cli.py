@@ -22,7 +22,7 @@ from archlog.errors import ConfigError
 from archlog.queries.session import QueryError, Result, Session
 from archlog.reports.codequality import to_codequality
 from archlog.reports.json_report import to_json
-from archlog.reports.report import Report
+from archlog.reports.report import Report, coverage
 from archlog.reports.sarif import to_sarif
 from archlog.reports.suppress import apply_suppressions, read_baseline
 from archlog.reports.suppress import write_baseline as write_baseline_file
@@ -122,9 +122,11 @@ def main() -> None:
               help="Report only findings that are not in this baseline (matched by fingerprint).")
 @click.option("--write-baseline", type=click.Path(dir_okay=False, path_type=Path),
               help="Record the current findings as the baseline.")
+@click.option("--fail-on-incomplete", is_flag=True,
+              help="Also exit 1 when a node is only partially recovered or opaque (no model or source).")
 @click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, output,
-          fail_on, baseline, write_baseline, quiet) -> None:
+          fail_on, baseline, write_baseline, fail_on_incomplete, quiet) -> None:
     """Check a ROS system configuration and report findings."""
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env, quiet or fmt != "text" and output is None)
@@ -142,7 +144,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     if write_baseline:
         write_baseline_file(findings, write_baseline)
     report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused), config.adjust(ruleset.rules),
-                    root, Report.node_origins(analysis.store))
+                    root, Report.node_origins(analysis.store), coverage(analysis.store))
     if fmt == "text" and output:
         with output.open("w", encoding="utf-8") as fh, sandbox.active(analysis.policy):
             print_text(report, Console(file=fh, no_color=True, soft_wrap=True), quiet)
@@ -155,9 +157,11 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
             output.write_text(text, encoding="utf-8")
         else:
             sys.stdout.write(text)
+    failed = fail_on_incomplete and report.incomplete
     if fail_on != "never":
         worst = SEVERITIES[: SEVERITIES.index(fail_on) + 1]
-        sys.exit(1 if any(f.severity in worst and f.suppression is None for f in findings) else 0)
+        failed = failed or any(f.severity in worst and f.suppression is None for f in findings)
+    sys.exit(1 if failed else 0)
 
 
 @main.command()

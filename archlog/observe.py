@@ -137,15 +137,15 @@ def from_facts(store: FactStore) -> Architecture:
 
 
 def compare(recovered: Architecture, observed: Architecture) -> dict[str, dict]:
-    """Per kind: counts, over- and under-approximation (as in the ROSDiscover paper's Table IV),
-    and the differences."""
+    """Per kind: counts, over- and under-approximation (as in the ROSDiscover paper's Table IV:
+    both divided by the observed count, so over-approximation may exceed 100), and the differences."""
     result = {}
     ours, theirs = recovered.compared(), observed.compared()
     for kind in KINDS:
         extra, missing = sorted(ours[kind] - theirs[kind]), sorted(theirs[kind] - ours[kind])
         result[kind] = {
             "recovered": len(ours[kind]), "observed": len(theirs[kind]),
-            "over_approximation": round(100 * len(extra) / len(ours[kind]), 1) if ours[kind] else 0.0,
+            "over_approximation": round(100 * len(extra) / len(theirs[kind]), 1) if theirs[kind] else 0.0,
             "under_approximation": round(100 * len(missing) / len(theirs[kind]), 1) if theirs[kind] else 0.0,
             "only_recovered": [list(x) if isinstance(x, tuple) else x for x in extra],
             "only_observed": [list(x) if isinstance(x, tuple) else x for x in missing],

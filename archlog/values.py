@@ -20,6 +20,13 @@ class Unknown:
         return f"?({self.expr})"
 
 
+class FullNodeName(str):
+    """A name that starts with ros::this_node::getName(), the node's full name. Written with "~"
+    (it resolves as the private namespace does), but it is not a ~name: a NodeHandle accepts it."""
+
+    __slots__ = ()
+
+
 @dataclass(frozen=True)
 class ParamRef:
     """A value read from a ROS parameter (`name` as written in the source) with its default."""
@@ -94,7 +101,8 @@ def concat(*parts: Value) -> Value:
         pieces = part.parts if isinstance(part, Concat) else (part,)
         for piece in pieces:
             if isinstance(piece, str) and folded and isinstance(folded[-1], str):
-                folded[-1] += piece
+                joined = folded[-1] + piece
+                folded[-1] = FullNodeName(joined) if isinstance(folded[-1], FullNodeName) else joined
             elif piece != "":
                 folded.append(piece)
     if not folded:

@@ -54,8 +54,21 @@ def compose(system: System, diagnostics: DiagnosticSink, near_threshold: float =
         if summary.incomplete:
             store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config)
+    _unknown_port_names(store, diagnostics)
     add_near_names(store, near_threshold, diagnostics)
     return store
+
+
+def _unknown_port_names(store: FactStore, diagnostics: DiagnosticSink) -> None:
+    """A note at each call that creates a port whose name is unknown, naming what is unknown."""
+    for rel in NAMED_PORTS:
+        for port, _node, name, *_rest in store.rows(rel):
+            if isinstance(name, Unknown):
+                file, line, column = store.location(str(port)) or (name.file, name.line, 0)
+                what = rel.replace("_", " ")
+                diagnostics.add(file, line, "port-name-unknown",
+                                f"the name of this {what} is unknown: {name.expr}; its connections are not checked",
+                                column=column)
 
 
 def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSink | None = None) -> None:

@@ -41,5 +41,13 @@ def to_json(report: Report) -> str:
         "findings": findings,
         "diagnostics": diagnostics,
         "summary": report.counts(),
+        "coverage": {
+            **report.coverage_counts(),
+            "nodes": [
+                {"node": c.node, "status": c.status, "origin": c.origin,
+                 "reasons": [{"message": why, "file": file, "line": line} for why, file, line in c.reasons]}
+                for c in report.coverage
+            ],
+        },
     }
     return json.dumps(document, indent=2) + "\n"

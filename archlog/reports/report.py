@@ -3,13 +3,63 @@
 from __future__ import annotations
 
 import io
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from archlog import sandbox
 from archlog.diagnostics import SEVERITIES, Diagnostic
+from archlog.facts.compose import NAMED_PORTS
 from archlog.rules.engine import Finding, Location
 from archlog.rules.ruleset import Rule
+from archlog.values import Unknown
+
+STATUSES = ("recovered", "partial", "opaque")
+_WHERE = re.compile(r"^(?P<file>[^:\n]+?)(?::(?P<line>\d+))?: (?P<why>.*)$", re.S)
+
+
+@dataclass
+class NodeCoverage:
+    """How completely a node instance was recovered: `recovered` (its model or source read whole),
+    `partial` (read, but something is missing: each reason with its file and line) or `opaque`
+    (neither a model nor a source)."""
+
+    node: str
+    status: str
+    origin: str  # cpp, python, model, or empty when opaque
+    reasons: list[tuple[str, str, int]] = field(default_factory=list)  # (why, file, line)
+
+
+def coverage(store) -> list[NodeCoverage]:
+    """Each node instance of the system, by name, with what keeps its recovery from being complete."""
+    origins = {str(name): str(origin) for name, origin in store.rows("node_source")}
+    incomplete: dict[str, list[str]] = {}
+    for name, reason in store.rows("node_incomplete"):
+        incomplete.setdefault(str(name), []).append(str(reason))
+    unnamed: dict[str, list[tuple[str, str, int]]] = {}
+    for rel in NAMED_PORTS:
+        for port, node, name, *_rest in store.rows(rel):
+            if isinstance(name, Unknown):
+                file, line, _column = store.location(str(port)) or (name.file, name.line, 0)
+                unnamed.setdefault(str(node), []).append(
+                    (f"{rel.replace('_', ' ')} name unknown: {name.expr}", file, line))
+    result = []
+    for name, pkg, exe, elem in sorted(store.rows("node"), key=lambda row: str(row[0])):
+        node = str(name)
+        file, line, _column = store.location(str(elem)) or ("", 0, 0)
+        if node not in origins:
+            result.append(NodeCoverage(node, "opaque", "", [(f"no model or source for {pkg}/{exe}", file, line)]))
+            continue
+        reasons = []
+        for reason in incomplete.get(node, []):
+            where = _WHERE.match(reason)
+            if where and ("/" in where["file"] or "." in where["file"]):
+                reasons.append((where["why"], where["file"], int(where["line"] or 0)))
+            else:
+                reasons.append((reason, file, line))
+        reasons += sorted(set(unnamed.get(node, [])), key=lambda r: (r[1], r[2], r[0]))
+        result.append(NodeCoverage(node, "partial" if reasons else "recovered", origins[node], reasons))
+    return result
 
 
 @dataclass
@@ -19,6 +69,7 @@ class Report:
     rules: list[Rule]
     root: Path
     origins: dict[str, list[tuple[Location, str]]] = field(default_factory=dict)
+    coverage: list[NodeCoverage] = field(default_factory=list)
 
     @staticmethod
     def node_origins(store) -> dict[str, list[tuple[Location, str]]]:
@@ -37,6 +88,14 @@ class Report:
     def counts(self) -> dict[str, int]:
         """Findings per severity, not counting suppressed ones."""
         return {s: sum(f.severity == s and f.suppression is None for f in self.findings) for s in SEVERITIES}
+
+    def coverage_counts(self) -> dict[str, int]:
+        """Node instances per recovery status."""
+        return {s: sum(c.status == s for c in self.coverage) for s in STATUSES}
+
+    @property
+    def incomplete(self) -> bool:
+        return any(c.status != "recovered" for c in self.coverage)
 
     @property
     def suppressed(self) -> int:

@@ -72,11 +72,24 @@ def to_sarif(report: Report) -> str:
         }
         for d in report.diagnostics
     ]
+    for c in report.coverage:  # nodes whose recovery is not complete, one notification per reason
+        for why, file, line in c.reasons if c.status != "recovered" else []:
+            notification: dict = {
+                "level": "note",
+                "message": {"text": f"node {c.node} is {c.status}ly recovered: {why}" if c.status == "partial"
+                            else f"node {c.node} is opaque: {why}"},
+                "descriptor": {"id": f"recovery-{c.status}"},
+                "properties": {"node": c.node, "status": c.status},
+            }
+            if file:
+                notification["locations"] = [{"physicalLocation": _physical(Location(file, line, 0), report.root)}]
+            notifications.append(notification)
     run = {
         "tool": {"driver": {"name": "archlog", "version": __version__, "semanticVersion": __version__,
                             "informationUri": INFO_URI, "rules": driver_rules}},
         "originalUriBaseIds": {"SRCROOT": {"uri": report.root.resolve().as_uri() + "/"}},
-        "invocations": [{"executionSuccessful": True, "toolExecutionNotifications": notifications}],
+        "invocations": [{"executionSuccessful": True, "toolExecutionNotifications": notifications,
+                         "properties": {"coverage": report.coverage_counts()}}],
         "results": results,
         "columnKind": "unicodeCodePoints",
     }

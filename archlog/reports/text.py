@@ -41,6 +41,23 @@ def print_text(report: Report, console: Console, quiet: bool = False) -> None:
     suppressed = f"; {report.suppressed} suppressed" if report.suppressed else ""
     console.print(f"[bold]{total} finding{'s' if total != 1 else ''}[/] ({summary}){suppressed}; "
                   f"{len(report.diagnostics)} diagnostic{'s' if len(report.diagnostics) != 1 else ''}")
+    print_coverage(report, console)
+
+
+def print_coverage(report: Report, console: Console) -> None:
+    """The recovery summary: nodes fully recovered, partial (each reason with file:line), opaque."""
+    if not report.coverage:
+        return
+    n = report.coverage_counts()
+    console.print(f"[bold]recovery[/]: {n['recovered']} of {len(report.coverage)} node"
+                  f"{'s' if len(report.coverage) != 1 else ''} fully recovered, {n['partial']} partial, "
+                  f"{n['opaque']} opaque (no model or source)")
+    for c in report.coverage:
+        if c.status == "recovered":
+            continue
+        for why, file, line in c.reasons:
+            where = f" ({escape(file)}:{line})" if file else ""
+            console.print(f"  {c.status} {escape(c.node)}: {escape(why)}{where}", highlight=False)
 
 
 def _source(report: Report, console: Console, file: str, line: int, column: int) -> None:

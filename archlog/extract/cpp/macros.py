@@ -40,15 +40,14 @@ def nested_calls(texts: list[tuple[Path, str]], macros: dict[str, Macro]) -> tup
     """(file, line, name) where calls of function-like macros that copy their argument nest so
     deep that the copies pass MACRO_TOKENS (`#define F(x) x x` and F(F(F(...))))."""
     for path, text in texts:
-        product, stack = 1, list[int]()
+        product, stack = 1, list[int]()  # the copies so far, and before each open call
         for m in _CALL_OR_PAREN.finditer(text):
             if m.group(0) == ")":
-                product //= stack.pop() if stack else 1
+                product = stack.pop() if stack else product
                 continue
-            # a macro that drops its argument (copies 0) still counts once: the product never reaches 0
-            copies = max(1, macros[m.group(1)].copies) if m.group(1) in macros else 1
-            stack.append(copies)
-            product *= copies
+            copies = macros[m.group(1)].copies if m.group(1) in macros else 1
+            stack.append(product)
+            product *= copies  # 0 for a macro that drops its argument: nothing inside is copied
             if product > MACRO_TOKENS:
                 return path, line_finder(text)(m.start()), m.group(1)
     return None

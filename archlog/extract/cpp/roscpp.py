@@ -47,7 +47,7 @@ from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp_fallback import roscpp_fallback
 from archlog.extract.cpp.scope import Scope
 from archlog.extract.summary import Port
-from archlog.values import Alternatives, ParamRef, Unknown, Value, alternatives, concat
+from archlog.values import Alternatives, FullNodeName, ParamRef, Unknown, Value, alternatives, concat
 
 PARAM_READS = {"param", "getParam", "getParamCached", "hasParam", "searchParam", "get", "getCached", "has", "search"}
 PARAM_WRITES = {"setParam", "deleteParam", "set", "del"}
@@ -252,8 +252,8 @@ class _Walker:
             return concat(self.value(args[0], depth + 1), "/", self.value(args[1], depth + 1))
         if owner in ("ros::names", "") and name in ("resolve", "clean") and args:
             return self.value(args[-1] if name == "resolve" else args[0], depth + 1)
-        if owner == "ros::this_node" and name == "getName":
-            return "~"
+        if owner == "ros::this_node" and name == "getName":  # the full name: resolves as "~" does
+            return FullNodeName("~")
         if owner == "ros::this_node" and name == "getNamespace":
             return ""
         if owner in (NODE_HANDLE, "ros::param") and name == "param" and len(args) == 2 and is_rvalue(args[1]):
@@ -399,7 +399,7 @@ class _Walker:
         loc, file = call.location, self.shown(call)
         self.port_calls.setdefault(call, []).append(kind)
         if isinstance(name, str) and name.startswith("~") and call.referenced is not None and \
-                qualified(call.referenced.semantic_parent) == NODE_HANDLE:
+                qualified(call.referenced.semantic_parent) == NODE_HANDLE and not isinstance(name, FullNodeName):
             self.result.diagnostics.append(Diagnostic(
                 file, loc.line, "cpp-private-name",
                 f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
@@ -418,6 +418,4 @@ class _Walker:
         self.result.ports += ports
         self.result.fallback_lines += [port.line for port in ports]
         self.named_callbacks += named
-
-
 

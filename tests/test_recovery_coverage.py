@@ -1,0 +1,112 @@
+"""Completeness is visible (issue 17): every `archlog check` says which nodes it recovered fully,
+partly (why, and where) or not at all, in text, JSON and SARIF; --fail-on-incomplete; the
+port-name-unknown note; `archlog diff` percentages over the observed count."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import jsonschema
+import pytest
+from conftest import ROOT
+
+from archlog.observe import Architecture, compare
+
+CASE = ROOT / "corpus" / "coverage" / "unrecovered_nodes"
+JSON_SCHEMA = json.loads((ROOT / "archlog" / "reports" / "findings.schema.json").read_text())
+
+
+def check(variant: Path, *args: str | Path) -> subprocess.CompletedProcess:
+    case = json.loads((variant / "case.json").read_text())
+    launches = [w for spec in case["launch"] for w in ("--launch", spec)]
+    return subprocess.run([sys.executable, "-m", "archlog", "check", str(variant), *launches, *map(str, args)],
+                          capture_output=True, text=True, cwd=ROOT, timeout=300)
+
+
+@pytest.mark.parametrize("variant", ["buggy", "clean"])
+def test_json_coverage_matches_the_case_and_the_schema(variant: str) -> None:
+    case = json.loads((CASE / variant / "case.json").read_text())
+    result = check(CASE / variant, "--format", "json")
+    assert result.returncode == 0, result.stderr
+    document = json.loads(result.stdout)
+    jsonschema.validate(document, JSON_SCHEMA)
+    coverage = document["coverage"]
+    assert {k: coverage[k] for k in ("recovered", "partial", "opaque")} == case["coverage"]
+    assert len(coverage["nodes"]) == sum(case["coverage"].values())
+    if variant == "clean":
+        assert all(n["status"] == "recovered" and n["reasons"] == [] for n in coverage["nodes"])
+        return
+    nodes = {n["node"]: n for n in coverage["nodes"]}
+    assert nodes["/lidar"]["status"] == "opaque" and nodes["/lidar"]["origin"] == ""
+    assert nodes["/lidar"]["reasons"] == [{"message": "no model or source for vendor_lidar/lidar_driver",
+                                           "file": "src/relay/launch/relay.launch", "line": 4}]
+    assert nodes["/scan_relay"]["status"] == "partial" and nodes["/scan_relay"]["origin"] == "python"
+    assert nodes["/scan_relay"]["reasons"] == [{"message": "publisher name unknown: sys.argv[1]",
+                                                "file": "src/relay/scripts/scan_relay.py", "line": 10}]
+    assert nodes["/scan_source"]["status"] == "recovered"
+    # the call that created the port gets a note naming what is unknown
+    notes = [d for d in document["diagnostics"] if d["code"] == "port-name-unknown"]
+    assert [(d["file"], d["line"], d["severity"]) for d in notes] == [("src/relay/scripts/scan_relay.py", 10, "note")]
+    assert "sys.argv[1]" in notes[0]["message"]
+
+
+def test_text_prints_the_recovery_block_after_the_summary() -> None:
+    lines = check(CASE / "buggy").stdout.splitlines()
+    at = next(i for i, line in enumerate(lines) if line.startswith("0 findings"))
+    assert lines[at + 1] == "recovery: 1 of 3 nodes fully recovered, 1 partial, 1 opaque (no model or source)"
+    assert lines[at + 2:] == [
+        "  opaque /lidar: no model or source for vendor_lidar/lidar_driver (src/relay/launch/relay.launch:4)",
+        "  partial /scan_relay: publisher name unknown: sys.argv[1] (src/relay/scripts/scan_relay.py:10)"]
+    clean = check(CASE / "clean", "--quiet").stdout.splitlines()
+    assert clean[-1] == "recovery: 2 of 2 nodes fully recovered, 0 partial, 0 opaque (no model or source)"
+
+
+@pytest.mark.parametrize("variant", ["buggy", "clean"])
+def test_sarif_coverage_notifications_validate(variant: str, sarif_schema: dict) -> None:
+    sarif = json.loads(check(CASE / variant, "--format", "sarif").stdout)
+    jsonschema.validate(sarif, sarif_schema)
+    invocation = sarif["runs"][0]["invocations"][0]
+    counts = json.loads((CASE / variant / "case.json").read_text())["coverage"]
+    assert invocation["properties"]["coverage"] == counts
+    coverage = {(n["descriptor"]["id"], n["properties"]["node"],
+                 n["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
+                 n["locations"][0]["physicalLocation"]["region"]["startLine"])
+                for n in invocation["toolExecutionNotifications"] if n["descriptor"]["id"].startswith("recovery-")}
+    expected = {("recovery-opaque", "/lidar", "src/relay/launch/relay.launch", 4),
+                ("recovery-partial", "/scan_relay", "src/relay/scripts/scan_relay.py", 10)}
+    assert coverage == (expected if variant == "buggy" else set())
+
+
+def test_fail_on_incomplete() -> None:
+    assert check(CASE / "buggy").returncode == 0
+    assert check(CASE / "buggy", "--fail-on-incomplete", "--format", "json").returncode == 1
+    assert check(CASE / "clean", "--fail-on-incomplete").returncode == 0
+    assert check(CASE / "buggy", "--fail-on-incomplete", "--fail-on", "never").returncode == 1
+
+
+def test_diff_divides_both_approximations_by_the_observed_count() -> None:
+    observed = Architecture(frozenset({"/a", "/b"}), frozenset({("/a", "/x", "T"), ("/a", "/y", "T")}),
+                            frozenset(), frozenset())
+    recovered = Architecture(frozenset({"/a", "/b", "/c", "/d", "/e"}),
+                             frozenset({("/a", "/x", "T"), ("/a", "/z", "T"), ("/a", "/w", "T")}),
+                             frozenset(), frozenset())
+    table = compare(recovered, observed)
+    # nodes: 3 extra over 2 observed (the old code divided by the 5 recovered: 60.0)
+    assert table["nodes"]["over_approximation"] == 150.0 and table["nodes"]["under_approximation"] == 0.0
+    assert table["publishers"]["over_approximation"] == 100.0  # 2 extra / 2 observed, not 2/3
+    assert table["publishers"]["under_approximation"] == 50.0
+    assert table["subscribers"]["over_approximation"] == table["subscribers"]["under_approximation"] == 0.0
+
+
+def test_a_macro_that_drops_its_argument_does_not_stop_the_nesting_check() -> None:
+    # `#define DROP(x) 0` copies its argument 0 times: the check divided by it (ZeroDivisionError,
+    # which stopped the analysis of husky and turtlebot in bench/eval_recovery.py)
+    from archlog.extract.cpp.macros import defines, nested_calls
+
+    path = Path("m.cpp")
+    text = "#define DROP(x) 0\n#define F(x) x x\nint a = DROP(F(1)) + F(2);\nint b = " + "F(" * 40 + "1" + ")" * 40 + ";\n"
+    assert nested_calls([(path, text[: text.index("int b")])], defines(path, text)) is None
+    assert nested_calls([(path, text)], defines(path, text)) == (path, 4, "F")
