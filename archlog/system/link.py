@@ -70,7 +70,9 @@ def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: Diagn
     then the model. Where the two disagree on a resolved name, a model-drift note."""
     ours, theirs = _resolved(source), _resolved(model)
     chosen = model if len(ours) < len(theirs) else source
-    only_source, only_model = sorted(ours - theirs), sorted(theirs - ours)
+    actions = {n for k, n in ours | theirs if k.startswith("action")}  # an action's topics are the action
+    only_source, only_model = ([(k, n) for k, n in sorted(a - b) if not _action_topic(k, n, actions)]
+                               for a, b in ((ours, theirs), (theirs, ours)))
     if only_source and only_model or chosen is source and only_model:
         shown = lambda found: ", ".join(f"{k.replace('_', ' ')} {n}" for k, n in found[:8]) or "nothing"  # noqa: E731
         where = (source.name_file, source.name_line) if source.name_file else \
@@ -83,6 +85,12 @@ def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: Diagn
     return chosen
 
 
+def _action_topic(kind: str, name: str, actions: set[str]) -> bool:
+    ns, _, last = name.rpartition("/")
+    return kind in ("publisher", "subscriber") and ns in actions and last in ("goal", "cancel", "status", "feedback",
+                                                                           "result")
+
+
 def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
     """(kind, name) of the ports whose names are known (a parameter's default counts), relative
     names and global ones alike without their leading slash."""
@@ -93,7 +101,8 @@ def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
         if port.kind in _COMPARED and isinstance(name, str) and isinstance(handle, str):
             full = name if name.startswith(("/", "~")) or not handle else \
                 (f"~{name}" if handle == "~" else f"{handle.rstrip('/')}/{name}")
-            found.add((port.kind, full.lstrip("/")))
+            if full.strip("/"):
+                found.add((port.kind, full.lstrip("/")))
     return found
 
 
