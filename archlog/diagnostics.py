@@ -114,6 +114,9 @@ CODES: dict[str, Code] = {
     **_codes("Models and configured ports", {
         "no-model": ("warning", "A node has neither source nor model: its ports are unknown.",
                      "Describe it in a YAML model passed with --model (see archlog/models/)."),
+        "model-drift": ("note", "A node's source and archlog's shipped model of it disagree on port names (the one "
+                        "with fewer resolved ports is not used).",
+                        "Check which is right; fix the source or pass a corrected model with --model."),
         "model-yaml": ("error", "A model file is not valid YAML.", "Fix the YAML."),
         "model-schema": ("error", "A model does not follow the model schema.",
                          "Fix it as the message says (archlog/models/model.schema.json)."),

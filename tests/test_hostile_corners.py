@@ -166,7 +166,8 @@ def case_cpp(root: Path) -> list[tuple[str, str]]:
     macros = "".join(f"#define A{i} A{i - 1} A{i - 1}\n" for i in range(1, 41))
     pkg = _package(root, "demo", "cmake_minimum_required(VERSION 3.5)\nproject(demo)\n"
                    "add_executable(doubling src/doubling.cpp)\nadd_executable(big src/big.cpp)\n"
-                   "add_executable(fallback src/fallback.cpp)\nadd_executable(copies src/copies.cpp)\n")
+                   "add_executable(fallback src/fallback.cpp)\nadd_executable(copies src/copies.cpp)\n"
+                   "add_executable(unused src/unused.cpp)\n")  # a macro not using its parameter: no crash
     (pkg / "src").mkdir()
     (pkg / "src" / "doubling.cpp").write_text(f"#include <ros/ros.h>\n#define A0 x\n{macros}"
                                               "int f() { return A40; }\n")
@@ -176,6 +177,7 @@ def case_cpp(root: Path) -> list[tuple[str, str]]:
                                               + calls)
     (pkg / "src" / "copies.cpp").write_text("#include <ros/ros.h>\n#define F(x) x x\nint f() { return "
                                             + "F(" * 40 + "1" + ")" * 40 + "; }\n")
+    (pkg / "src" / "unused.cpp").write_text("#include <ros/ros.h>\n#define G(x) 1\nint g() { return G(G(2)); }\n")
     return [("doubling.cpp", "cpp-macro"), ("big.cpp", "too-large"), ("fallback.cpp", "cpp-compile"),
             ("copies.cpp", "cpp-macro")]
 

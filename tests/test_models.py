@@ -192,3 +192,36 @@ def test_ros2_model_ports_carry_qos(tmp_path: Path) -> None:
 def test_model_schema_names_every_qos_preset() -> None:
     schema = json.loads((BUILTIN_DIR / "model.schema.json").read_text())
     assert set(schema["$defs"]["preset"]["enum"]) == set(PRESETS) - {"unknown"}
+
+
+def _map_server_source(tmp_path: Path, body: str) -> Path:
+    pkg = tmp_path / "src" / "map_server"
+    (pkg / "scripts").mkdir(parents=True)
+    (pkg / "package.xml").write_text(PACKAGE_XML.format("map_server"))
+    (pkg / "scripts" / "map_server").write_text("#!/usr/bin/env python3\nimport rospy\nfrom nav_msgs.msg import "
+                                                "OccupancyGrid\nfrom nav_msgs.srv import GetMap\n"
+                                                "rospy.init_node('map_server')\n" + body)
+    (pkg / "scripts" / "map_server").chmod(0o755)
+    return workspace(tmp_path, "<launch><node pkg='map_server' type='map_server' name='map_server'/></launch>")
+
+
+def test_a_source_resolving_fewer_ports_than_the_shipped_model_does_not_win(tmp_path: Path) -> None:
+    """Read incompletely (a name not known, code in a library not read), a source does not hide
+    archlog's model: the model's ports are used, and where they disagree a model-drift note says so."""
+    launch = _map_server_source(tmp_path, "rospy.Publisher('grid', OccupancyGrid)\n"
+                                          "rospy.Service(rospy.get_name() + compute(), GetMap, print)\n")
+    analysis = analyse([tmp_path], [str(launch)], {}, [])
+    assert {t for _p, _n, t, _ty in analysis.store.rows("service_server")} == {"/static_map", "/change_map"}
+    assert {t for _p, _n, t, _ty in analysis.store.rows("publisher")} == {"/map", "/map_metadata"}
+    drift = [d for d in analysis.diagnostics.items if d.code == "model-drift"]
+    assert len(drift) == 1 and "publisher grid" in drift[0].message and "the model is used" in drift[0].message
+
+
+def test_a_source_resolving_as_many_ports_wins_and_its_drift_is_noted(tmp_path: Path) -> None:
+    launch = _map_server_source(tmp_path, "".join(f"rospy.Publisher('{t}', OccupancyGrid)\n"
+                                                  for t in ("map", "map_metadata", "grid", "costs")))
+    analysis = analyse([tmp_path], [str(launch)], {}, [])
+    assert {t for _p, _n, t, _ty in analysis.store.rows("publisher")} == {"/map", "/map_metadata", "/grid", "/costs"}
+    assert analysis.store.rows("service_server") == []
+    drift = [d for d in analysis.diagnostics.items if d.code == "model-drift"]
+    assert len(drift) == 1 and "service server static_map" in drift[0].message and "source is used" in drift[0].message

@@ -131,3 +131,28 @@ def test_ament_executables_get_the_sources_of_the_libraries_they_link(tmp_path: 
     loader = Workspace([tmp_path], DiagnosticSink()).packages["depot"].executables["loader"]
     assert [s.name for s in loader.sources] == ["loader_main.cpp", "loader.cpp", "geometry.cpp"]
 
+
+
+def test_catkin_executables_read_the_libraries_of_their_package_they_link(tmp_path: Path) -> None:
+    """A ROS 1 node whose code sits in a library of its own package (transitively); a library
+    source exporting a nodelet the node never names is not its code; a source named without its
+    extension is found as CMake finds it, and a missing one is kept (reported when it is read)."""
+    package(tmp_path, "tracking", {
+        "CMakeLists.txt": "project(tracking)\nadd_library(core src/core.cpp)\n"
+                          "add_library(${PROJECT_NAME}_ros src/ros.cpp src/debayer.cpp src/rectify.cpp)\n"
+                          "target_link_libraries(${PROJECT_NAME}_ros core ${catkin_LIBRARIES})\n"
+                          "add_executable(tracker src/main)\ntarget_link_libraries(tracker tracking_ros)\n"
+                          "add_executable(lost src/gone)\n",
+        "package.xml": MANIFEST.format("tracking").replace(
+            "</package>", "<export><nodelet plugin='${prefix}/nodelets.xml'/></export></package>"),
+        "nodelets.xml": "<library path='lib/libtracking_ros'><class name='tracking/debayer' type='t::Debayer' "
+                        "base_class_type='nodelet::Nodelet'/><class name='tracking/rectify' type='t::Rectify' "
+                        "base_class_type='nodelet::Nodelet'/></library>",
+        "src/main.cpp": 'int main() { loader.load("tracking/debayer"); }\n', "src/ros.cpp": "", "src/core.cpp": "",
+        "src/debayer.cpp": "PLUGINLIB_EXPORT_CLASS(t::Debayer, nodelet::Nodelet)\n",
+        "src/rectify.cpp": "PLUGINLIB_EXPORT_CLASS(t::Rectify, nodelet::Nodelet)\n",
+    })
+    sink = DiagnosticSink()
+    exes = Workspace([tmp_path], sink).packages["tracking"].executables
+    assert [s.name for s in exes["tracker"].sources] == ["main.cpp", "ros.cpp", "core.cpp", "debayer.cpp"]
+    assert [s.name for s in exes["lost"].sources] == ["gone"]

@@ -18,6 +18,7 @@ from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels
 from archlog.system.rosrun import rosrun_config
+from archlog.values import ParamRef
 
 
 @dataclass
@@ -43,6 +44,8 @@ def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, 
     """The system a configuration (None: no launch file, every executable runs once) starts, from
     the extracted summaries and the node models (the user's win over extracted ones)."""
     summaries = {**models.builtin, **extracted, **models.user}
+    for kind in extracted.keys() & models.builtin.keys() - models.user.keys():
+        summaries[kind] = _source_or_model(extracted[kind], models.builtin[kind], diagnostics)
     if config is None:
         config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
                                workspace, diagnostics)
@@ -56,6 +59,51 @@ def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, 
     instances = [Instance(node, _summary(node, summaries, config, workspace, diagnostics, missing))
                  for node in config.nodes]
     return System(workspace, config, instances, message_files(workspace))
+
+
+_COMPARED = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
+
+
+def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: DiagnosticSink) -> NodeSummary:
+    """A node both read from source and modelled by archlog: the source, unless it resolves fewer
+    ports than the model (code in a library not read, names not known, a file that did not compile):
+    then the model. Where the two disagree on a resolved name, a model-drift note."""
+    ours, theirs = _resolved(source), _resolved(model)
+    chosen = model if len(ours) < len(theirs) else source
+    actions = {n for k, n in ours | theirs if k.startswith("action")}  # an action's topics are the action
+    only_source, only_model = ([(k, n) for k, n in sorted(a - b) if not _action_topic(k, n, actions)]
+                               for a, b in ((ours, theirs), (theirs, ours)))
+    if only_source and only_model or chosen is source and only_model:
+        shown = lambda found: ", ".join(f"{k.replace('_', ' ')} {n}" for k, n in found[:8]) or "nothing"  # noqa: E731
+        where = (source.name_file, source.name_line) if source.name_file else \
+            next(((p.file, p.line) for p in source.ports), (model.ports[0].file, model.ports[0].line) if model.ports
+                 else (source.package, 1))
+        diagnostics.add(where[0], where[1] or 1, "model-drift",
+                        f"{source.package}/{source.executable}: the source ({len(ours)} resolved ports) has "
+                        f"{shown(only_source)} that archlog's model ({len(theirs)}) lacks, the model "
+                        f"{shown(only_model)}; the {'model' if chosen is model else 'source'} is used", "note")
+    return chosen
+
+
+def _action_topic(kind: str, name: str, actions: set[str]) -> bool:
+    ns, _, last = name.rpartition("/")
+    return kind in ("publisher", "subscriber") and ns in actions and last in ("goal", "cancel", "status", "feedback",
+                                                                           "result")
+
+
+def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
+    """(kind, name) of the ports whose names are known (a parameter's default counts), relative
+    names and global ones alike without their leading slash."""
+    found = set()
+    for port in summary.ports:
+        name = port.name.default if isinstance(port.name, ParamRef) else port.name
+        handle = port.handle_ns
+        if port.kind in _COMPARED and isinstance(name, str) and isinstance(handle, str):
+            full = name if name.startswith(("/", "~")) or not handle else \
+                (f"~{name}" if handle == "~" else f"{handle.rstrip('/')}/{name}")
+            if full.strip("/"):
+                found.add((port.kind, full.lstrip("/")))
+    return found
 
 
 def _summary(node: LaunchNode, summaries: Summaries, config: LaunchConfig, workspace: Workspace,

@@ -32,7 +32,8 @@ def defines(path: Path, text: str) -> dict[str, Macro]:
     for m in _DEFINE.finditer(text):
         words = _WORD.findall(m.group(3))
         params = _WORD.findall(m.group(2) or "")
-        found[m.group(1)] = Macro(path, line_of(m.start()), words, max((words.count(p) for p in params), default=1))
+        # a parameter the body never uses is copied 0 times: count it as 1 (nested calls vanish, never divide by 0)
+        found[m.group(1)] = Macro(path, line_of(m.start()), words, max([1, *(words.count(p) for p in params)]))
     return found
 
 

@@ -24,6 +24,11 @@ _LINK_WORDS = {"PRIVATE", "PUBLIC", "INTERFACE", "debug", "optimized", "general"
 _LIBRARY_WORDS = {"SHARED", "STATIC", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL", "WIN32", "MACOSX_BUNDLE",
                   "NO_TARGET_LINK_LIBRARIES", "PRIVATE", "PUBLIC", "INTERFACE"}
 SOURCE_SUFFIXES = {".cpp", ".cc", ".cxx", ".c++", ".C"}
+# what CMake appends, in order, to a source named without its extension (C, C++, CUDA, headers)
+_CMAKE_EXTENSIONS = (".c", ".C", ".c++", ".cc", ".cpp", ".cxx", ".cu", ".m", ".M", ".mm", ".h", ".hh", ".h++", ".hm",
+                     ".hpp", ".hxx", ".in", ".txx")
+_KEYWORD = re.compile(r"^[A-Z][A-Z0-9_]*$")  # an argument keyword of a CMake command (OPTIONS, SHARED...)
+_EXPORT = re.compile(r"\bPLUGINLIB_(?:EXPORT_CLASS\s*\(\s*([\w:]+)|DECLARE_CLASS\s*\(\s*\w+\s*,\s*\w+\s*,\s*([\w:]+))")
 _SHEBANG = re.compile(rb"^#!.*python")
 
 
@@ -54,26 +59,53 @@ class ExecutableFinder:
 
     def _cmake_executables(self, package: Package) -> None:
         self._cmake_dir(package, package.path, {"CMAKE_CURRENT_SOURCE_DIR": str(package.path)}, depth=0)
-        if package.ament:
-            self._linked_sources(package)
+        self._linked_sources(package)
 
-    @staticmethod
-    def _linked_sources(package: Package) -> None:
-        """ROS 2 packages often build the node class into a library of their own that the
-        executable links (target_link_libraries): its sources belong to the executable, except
-        those defining a node class the executable's own sources never name."""
+    def _linked_sources(self, package: Package) -> None:
+        """Packages often build the node's code into a library of their own that the executable
+        links (target_link_libraries, followed transitively within the package): its sources belong
+        to the executable, except, in ROS 2, those defining a node class the executable's own
+        sources never name, and in ROS 1, those exporting a plugin (a nodelet) that no source read
+        with the executable names, by class or by plugin name (image_proc's node loads
+        "image_proc/debayer", not the library's other nodelets)."""
+        plugins = {} if package.ament else self._plugin_names(package)
         for exe in package.executables.values():
             if exe.lang != "cpp" or exe.cls is not None:
                 continue
             own = "\n".join(_text(s) for s in exe.sources)
-            pending, seen = list(package.links.get(exe.target, [])), set()
+            pending, seen, linked = list(package.links.get(exe.target, [])), set(), list[Path]()
             while pending:
                 library = pending.pop(0)
-                if library in package.libraries and library not in seen:
+                if library in package.libraries and library not in seen and library != exe.target:
                     seen.add(library)
-                    exe.sources += [s for s in package.libraries[library] if s not in exe.sources
-                                    and all(re.search(rf"\b{c}\b", own) for c in _node_classes(s))]
+                    linked += [s for s in package.libraries[library] if s not in exe.sources and s not in linked]
                     pending += package.links.get(library, [])
+            if package.ament:
+                exe.sources += [s for s in linked if all(re.search(rf"\b{c}\b", own) for c in _node_classes(s))]
+                continue
+            exported = {s: _exported_plugins(s) for s in linked}
+            plain = [s for s in linked if not exported[s]]
+            exe.sources += plain
+            text = "\n".join([own, *(_text(s) for s in plain)])
+            waiting = [s for s in linked if exported[s]]
+            while named := [s for s in waiting if any(_names(text, cls, plugins.get(cls)) for cls in exported[s])]:
+                exe.sources += named
+                waiting = [s for s in waiting if s not in named]
+                text += "\n".join(_text(s) for s in named)
+
+    def _plugin_names(self, package: Package) -> dict[str, str]:
+        """Plugin class (as exported, no leading ::) -> plugin name, from the package's plugin XML
+        files (unreadable ones are reported where nodelets are read)."""
+        found: dict[str, str] = {}
+        for raw in package.plugin_xml:
+            try:
+                root = parse_xml(Path(raw.replace("${prefix}", str(package.path))), "build")
+            except (sandbox.Refused, etree.XMLSyntaxError):
+                continue
+            for cls in root.iter("class"):
+                if cls.get("type") and cls.get("name"):
+                    found[cls.get("type", "").lstrip(":")] = cls.get("name", "")
+        return found
 
     def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int,
                    asker: tuple[Path, int] | None = None) -> None:
@@ -242,6 +274,17 @@ def _node_classes(source: Path) -> list[str]:
     return sorted(set(_NODE_CONSTRUCTOR.findall(_text(source))))
 
 
+def _exported_plugins(source: Path) -> list[str]:
+    """Classes a C++ file exports as plugins (PLUGINLIB_EXPORT_CLASS, PLUGINLIB_DECLARE_CLASS)."""
+    return sorted({(m.group(1) or m.group(2)).lstrip(":") for m in _EXPORT.finditer(_text(source))})
+
+
+def _names(text: str, cls: str, plugin: str | None) -> bool:
+    """Whether a text names a plugin class (by its last component) or its plugin name (in quotes)."""
+    return bool(re.search(rf"\b{re.escape(cls.rsplit('::', 1)[-1])}\b", text)) or \
+        plugin is not None and f'"{plugin}"' in text
+
+
 def registered_components(text: str) -> list[tuple[str, int]]:
     """(class, line) of every RCLCPP_COMPONENTS_REGISTER_NODE(ns::Class) in a C++ source."""
     return [(m.group(1).lstrip(":"), text.count("\n", 0, m.start()) + 1) for m in _REGISTER_NODE.finditer(text)]
@@ -257,6 +300,17 @@ def _sources(folder: Path, args: tuple[str, ...]) -> list[Path]:
             found += _source_files(_under(folder, words[index + 1]))
         elif word not in _LIBRARY_WORDS and Path(word).suffix in SOURCE_SUFFIXES | {".cu"}:
             found.append(_under(folder, word))
+        elif word not in _LIBRARY_WORDS and not _KEYWORD.match(word) and "$" not in word and "<" not in word:
+            path = _under(folder, word)
+            if path.is_file():
+                continue  # a header, or a file of another language
+            # CMake's lookup: a name not found as written is tried with each source extension
+            given = next((path.with_name(path.name + ext) for ext in _CMAKE_EXTENSIONS
+                          if path.with_name(path.name + ext).is_file()), None)
+            if given is not None and given.suffix in SOURCE_SUFFIXES | {".cu"}:
+                found.append(given)
+            elif given is None and not path.suffix:
+                found.append(path)  # missing: reported (cpp-missing) when the executable is read
     return found
 
 
