@@ -66,3 +66,17 @@ def test_nodelet_instances_get_their_class_ports(tmp_path: Path) -> None:
     assert sorted(result.store.rows("nodelet")) == [("/cam/blur", "vision/Blur", "/manager"),
                                                    ("/cam/edges", "vision/Edges", "")]
     assert [d.code for d in result.diagnostics.items] == ["no-model"]  # only the manager has no model
+
+
+def test_plugin_descriptions_with_several_libraries() -> None:
+    """corpus/workspace/nodelet_libraries: one description with two top-level <library>
+    elements after an XML declaration (not one XML document, as robot_localization's
+    nodelet_plugins.xml), one with a <class_libraries> wrapper; every class of every library is read."""
+    fixture = Path(__file__).resolve().parent.parent / "corpus" / "workspace" / "nodelet_libraries"
+    result = analyse([fixture], [str(fixture / "main.launch")], {}, [])
+    ports = sorted((n, t) for rel in ("publisher", "subscriber") for _p, n, t, _ty in result.store.rows(rel))
+    assert ports == [("/a", "/a/out_a"), ("/b", "/b/out_b"), ("/c", "/in_c"), ("/d", "/in_d")]
+    assert sorted(result.store.rows("nodelet")) == [("/a", "filters/FilterA", "/manager"),
+                                                   ("/b", "filters/FilterB", "/manager"),
+                                                   ("/c", "wrapped/C", ""), ("/d", "wrapped/D", "")]
+    assert [d.code for d in result.diagnostics.items] == ["no-model"]  # only the manager has no model

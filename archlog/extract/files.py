@@ -4,6 +4,7 @@ that stay inside the analysed paths (no symlinked folder is entered, loops end).
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
@@ -29,6 +30,31 @@ def parse_xml(path: Path | str, kind: str, **options: bool) -> etree._Element:
     `etree.XMLSyntaxError`). Only internal entities are expanded; no DTD, file or URL is loaded."""
     parser = etree.XMLParser(resolve_entities="internal", load_dtd=False, no_network=True, **options)
     return etree.fromstring(sandbox.read_bytes(path, kind), parser, base_url=str(path))
+
+
+_DECLARATION = re.compile(rb"^\s*<\?xml[^>]*\?>")
+
+
+def parse_xml_elements(path: Path | str, kind: str) -> etree._Element:
+    """Like `parse_xml`, for files that may hold several top-level elements (pluginlib
+    descriptions with one `<library>` after another): if the file is not one document, its text
+    after the XML declaration is read again inside a synthetic root element, which is returned
+    (line numbers are kept). A file with a DOCTYPE is not wrapped: its first error is raised."""
+    data = sandbox.read_bytes(path, kind)
+    parser = etree.XMLParser(resolve_entities="internal", load_dtd=False, no_network=True)
+    try:
+        return etree.fromstring(data, parser, base_url=str(path))
+    except etree.XMLSyntaxError as exc:
+        if b"<!DOCTYPE" in data or "Extra content" not in str(exc):
+            raise
+        declaration = _DECLARATION.match(data)
+        if declaration:
+            data = bytes(c if c in b"\r\n" else 32 for c in declaration.group()) + data[declaration.end():]
+        try:
+            return etree.fromstring(b"<plugin_descriptions>" + data + b"</plugin_descriptions>", parser,
+                                    base_url=str(path))
+        except etree.XMLSyntaxError:
+            raise exc from None
 
 
 def walk(folder: Path, prune: Callable[[str], bool] = lambda _name: False

@@ -14,7 +14,7 @@ from lxml import etree
 
 from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
-from archlog.extract.files import files_under, parse_xml, walk
+from archlog.extract.files import files_under, parse_xml_elements, walk
 from archlog.extract.workspace.cmake import commands
 from archlog.extract.workspace.packages import Executable, Package, pruned
 
@@ -99,7 +99,7 @@ class ExecutableFinder:
         found: dict[str, str] = {}
         for raw in package.plugin_xml:
             try:
-                root = parse_xml(Path(raw.replace("${prefix}", str(package.path))), "build")
+                root = parse_xml_elements(Path(raw.replace("${prefix}", str(package.path))), "build")
             except (sandbox.Refused, etree.XMLSyntaxError):
                 continue
             for cls in root.iter("class"):
@@ -161,7 +161,7 @@ class ExecutableFinder:
         for raw in package.plugin_xml:
             path = Path(raw.replace("${prefix}", str(package.path)))
             try:
-                root = parse_xml(path, "build")
+                root = parse_xml_elements(path, "build")
             except (sandbox.Refused, etree.XMLSyntaxError) as exc:
                 self.diagnostics.add(self.display(package.path / "package.xml"), 1, "plugin-xml",
                                      f"plugin description {raw} cannot be read: {exc}", "warning")
