@@ -157,7 +157,8 @@ class ExecutableFinder:
                         package.executables[path.name] = Executable(package.name, path.name, lang, [path], c.line)
 
     def _nodelets(self, package: Package) -> None:
-        """Nodelet plugins declared in the plugin XML files that package.xml exports."""
+        """Nodelet plugins declared in the plugin XML files that package.xml exports (every class of
+        every `<library>`: one root, a `<class_libraries>` wrapper, or several top-level ones)."""
         for raw in package.plugin_xml:
             path = Path(raw.replace("${prefix}", str(package.path)))
             try:
