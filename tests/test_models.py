@@ -170,6 +170,28 @@ def test_spawned_controllers_are_instances_of_their_type_models(tmp_path: Path) 
         ("controller-type", True)]
 
 
+def test_spawner_given_a_yaml_file_loads_it_and_spawns_its_controllers(tmp_path: Path) -> None:
+    launch = workspace(tmp_path, """<launch>
+  <group ns="base">
+    <node pkg="controller_manager" type="spawner" name="spawner"
+          args="--shutdown-timeout 1 $(find demo)/config/controllers.yaml $(find demo)/config/missing.yaml"/>
+  </group>
+</launch>""")
+    (launch.parent / "config").mkdir()
+    (launch.parent / "config" / "controllers.yaml").write_text(
+        "joint_state_controller: {type: joint_state_controller/JointStateController, publish_rate: 50}\n"
+        "mobile_base_controller: {type: diff_drive_controller/DiffDriveController, left_wheel: l}\n"
+        "gains: {p: 1.0}\nrate: 10\n")
+    result = analyse([tmp_path], [str(launch)], {}, [])
+    assert sorted(n for n, *_ in result.store.rows("node")) == [
+        "/base/joint_state_controller", "/base/mobile_base_controller", "/base/spawner"]
+    assert [t for _p, _n, t, _ty in result.store.rows("subscriber")] == ["/base/mobile_base_controller/cmd_vel"]
+    params = {name: value for name, value, _elem in result.store.rows("param")}
+    assert (params["/base/mobile_base_controller/left_wheel"], params["/base/gains/p"], params["/base/rate"]) == (
+        "l", "1.0", "10")
+    assert [d.code for d in result.diagnostics.items] == ["not-a-file"]
+
+
 def test_ros2_model_ports_carry_qos(tmp_path: Path) -> None:
     model = tmp_path / "lidar.yaml"
     model.write_text("package: lidar\nexecutable: driver\npublishers:\n"
