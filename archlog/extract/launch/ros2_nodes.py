@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable
+from contextlib import suppress
 from dataclasses import replace
 from pathlib import Path
 
@@ -341,10 +342,8 @@ def _rewrite(entries: list[tuple[str, str, object, Element]], rewritten: Rewritt
         except Unresolved as exc:
             return Unknown(str(exc), elem.file, elem.line)
         if rewritten.convert_types:
-            try:
+            with suppress(ValueError):
                 return float(value) if "." in value else int(value)
-            except ValueError:
-                pass
         return {"true": True, "false": False}.get(value.lower(), value)
 
     root = perform(rewritten.root_key, ctx) if rewritten.root_key is not None else ""

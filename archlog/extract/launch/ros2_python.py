@@ -177,9 +177,8 @@ class _Interpreter(Values):
                 continue
             self.guards.append(Condition("guard", text(guard)))
             try:
-                self.block(body)
-            except _Stop:
-                pass
+                with suppress(_Stop):
+                    self.block(body)
             finally:
                 self.guards.pop()
 

@@ -5,6 +5,7 @@ cannot be followed is an `Unread` value."""
 from __future__ import annotations
 
 import ast
+from abc import ABC, abstractmethod
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -55,7 +56,7 @@ class Scope:
         return scope
 
 
-class Values(Evaluator):
+class Values(Evaluator, ABC):
     """The state of one Python launch file being read (its scopes, guards and lines) and the
     values of its expressions."""
 
@@ -115,9 +116,9 @@ class Values(Evaluator):
             return list(value)
         return value if isinstance(value, Unread) else Unread(f"iterating over {why(value)}", self.line)
 
+    @abstractmethod
     def call(self, function: object, args: list[object], kwargs: dict[str, object], line: int) -> object:
         """A call of what the file holds (the statement reader calls functions)."""
-        raise NotImplementedError
 
     def value(self, node: ast.expr) -> object:
         """An expression's value, or Unread where the evaluator cannot follow it (or refuses to build
