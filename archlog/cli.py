@@ -1,4 +1,4 @@
-"""The `archlog` command line: check, facts, query, repl, test-rules."""
+"""The `archlog` command line: check, facts, query, repl, graph, behavior, test-rules, rule, observe, diff."""
 
 from __future__ import annotations
 
@@ -6,6 +6,7 @@ import csv
 import json
 import os
 import sys
+from contextlib import nullcontext
 from pathlib import Path
 
 import click
@@ -14,7 +15,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn
 from rich.table import Table
 from rich.text import Text
 
-from archlog import __version__, sandbox
+from archlog import __version__, cli_choices, sandbox
 from archlog.analysis import Analysis, analyse
 from archlog.config import Config, find_config, load_config, workspace_config
 from archlog.diagnostics import SEVERITIES
@@ -22,11 +23,12 @@ from archlog.errors import ConfigError
 from archlog.queries.session import QueryError, Result, Session
 from archlog.reports.codequality import to_codequality
 from archlog.reports.json_report import to_json
+from archlog.reports.paths import Rebase, source_root
 from archlog.reports.report import Report, coverage
 from archlog.reports.sarif import to_sarif
 from archlog.reports.suppress import apply_suppressions, read_baseline
 from archlog.reports.suppress import write_baseline as write_baseline_file
-from archlog.reports.text import print_text
+from archlog.reports.text import print_concise, print_text
 from archlog.rules.engine import render
 from archlog.rules.ruleset import RuleError, RuleSet, load_rules
 
@@ -56,7 +58,7 @@ def _env_pairs(values: tuple[str, ...]) -> dict[str, str]:
 
 def _system_options(func):
     options = [
-        click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path)),
+        click.argument("paths", nargs=-1, type=click.Path(path_type=Path)),
         click.option("--launch", "launches", multiple=True, metavar="FILE_OR_PKG/FILE",
                      help="Launch file of the configuration (repeatable; together they form one system)."),
         click.option("--arg", "args", multiple=True, metavar="NAME:=VALUE", help="Launch argument (repeatable)."),
@@ -75,7 +77,7 @@ def _system_options(func):
     ]
     for option in reversed(options):
         func = option(func)
-    return func
+    return cli_choices.options(func)
 
 
 def _load(paths, launches, args, models, rule_paths, config_path, profile, threshold, env,
@@ -88,10 +90,14 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
     if threshold is not None:
         config.near_miss_threshold = threshold
     ruleset = load_rules([*config.rule_paths, *rule_paths])
+    choices = cli_choices.given()
+    config = cli_choices.select(config, choices, ruleset.rules)
+    paths, launches, args, models = cli_choices.inputs(config, choices, list(paths), list(launches),
+                                                       _arg_pairs(args), list(models))
     given = {**config.env, **_env_pairs(env)}
     stderr = Console(stderr=True)
     if quiet or not stderr.is_terminal:
-        return analyse(list(paths), list(launches), _arg_pairs(args), list(models), config.near_miss_threshold,
+        return analyse(paths, launches, args, models, config.near_miss_threshold,
                        env=given, limits=config.limits), ruleset, config
     with Progress(SpinnerColumn(), TextColumn("reading nodes"), BarColumn(), MofNCompleteColumn(),
                   TimeElapsedColumn(), console=stderr, transient=True) as bar:
@@ -100,7 +106,7 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
         def advance(done: int, total: int) -> None:
             bar.update(task, completed=done, total=total if total > 0 else None)
 
-        analysis = analyse(list(paths), list(launches), _arg_pairs(args), list(models), config.near_miss_threshold,
+        analysis = analyse(paths, launches, args, models, config.near_miss_threshold,
                            advance, env=given, limits=config.limits)
     return analysis, ruleset, config
 
@@ -113,8 +119,12 @@ def main() -> None:
 
 @main.command()
 @_system_options
-@click.option("--format", "fmt", type=click.Choice(["text", "json", "sarif", "codequality"]), default="text",
-              show_default=True, help="codequality: GitLab's Code Quality report.")
+@click.option("--format", "fmt", type=click.Choice(["text", "concise", "json", "sarif", "codequality"]),
+              default="text", show_default=True,
+              help="concise: one `path:line:col: ID message` line per finding; codequality: GitLab's Code Quality.")
+@click.option("--source-root", "source_root_dir", type=click.Path(exists=True, file_okay=False, path_type=Path),
+              help="Report paths relative to this folder [default: the git work tree holding the first PATH, "
+                   "else the current folder].")
 @click.option("--output", type=click.Path(path_type=Path), help="Write the report here instead of stdout.")
 @click.option("--fail-on", type=click.Choice(FAIL_ON), default="error", show_default=True,
               help="Exit 1 when a finding of this severity or worse exists (suppressed ones do not count).")
@@ -125,8 +135,8 @@ def main() -> None:
 @click.option("--fail-on-incomplete", is_flag=True,
               help="Also exit 1 when a node is only partially recovered or opaque (no model or source).")
 @click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
-def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, output,
-          fail_on, baseline, write_baseline, fail_on_incomplete, quiet) -> None:
+def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
+          source_root_dir, output, fail_on, baseline, write_baseline, fail_on_incomplete, quiet) -> None:
     """Check a ROS system configuration and report findings."""
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env, quiet or fmt != "text" and output is None)
@@ -145,7 +155,11 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
         write_baseline_file(findings, write_baseline)
     report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused), config.adjust(ruleset.rules),
                     root, Report.node_origins(analysis.store), coverage(analysis.store))
-    if fmt == "text" and output:
+    report = Rebase(analysis.workspace.roots, source_root(root, source_root_dir)).report(report)
+    if fmt == "concise":
+        with output.open("w", encoding="utf-8") if output else nullcontext(sys.stdout) as stream:
+            print_concise(report, stream)
+    elif fmt == "text" and output:
         with output.open("w", encoding="utf-8") as fh, sandbox.active(analysis.policy):
             print_text(report, Console(file=fh, no_color=True, soft_wrap=True), quiet)
     elif fmt == "text":
@@ -332,6 +346,27 @@ def test_rules(folders, update) -> None:
     from archlog.queries.rule_tests import run_rule_tests
 
     sys.exit(0 if run_rule_tests(list(folders), update, Console(soft_wrap=True)) else 1)
+
+
+@main.command("rule")
+@click.argument("rule_id", metavar="[ID]", required=False)
+@click.option("--rules", "rule_paths", multiple=True, type=click.Path(exists=True, path_type=Path),
+              help="Extra rule file or folder of .lp files (repeatable), as for check.")
+@click.option("--config", "config_path", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="archlog.toml or pyproject.toml whose `rules` to include (default: found here or above).")
+def rule_command(rule_id, rule_paths, config_path) -> None:
+    """Explain a rule (id, id prefix or name): description, an example finding, how to fix it.
+    Without ID, list every rule."""
+    from archlog.reports.rule_help import listing, lookup
+
+    config = load_config(config_path or find_config([]), None)
+    if config_path is None and config.source is not None:
+        config = workspace_config(config)
+    rules = load_rules([*config.rule_paths, *rule_paths]).rules
+    try:
+        click.echo(lookup(rules, rule_id) if rule_id else listing(rules), nl=False)
+    except LookupError as exc:
+        raise click.UsageError(str(exc.args[0])) from None
 
 
 def print_result(result: Result, fmt: str, console: Console) -> None:

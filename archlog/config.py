@@ -18,6 +18,14 @@
                                       # machine is read but ROS_DISTRO, ROS_VERSION, ROS_PYTHON_VERSION
     [budget]                          # expansion limits per unit of input (archlog.budget.LIMITS)
     elements = 500000                 # keys: elements, characters, steps, alternatives, depth
+    operators = ["rviz2", "teleop2"]  # operator tools outside the launch files that feed topics
+                                      # (archlog/models/operators/; docs/models.md)
+    [systems.nav]                     # `archlog check --system nav`: a named system configuration
+    paths = ["src"]                   # relative to this file; PATH arguments are added
+    launch = ["nav_bringup/launch/nav.launch"]
+    args = {use_sim = "false"}        # launch arguments (--arg wins)
+    models = ["models/lidar.yaml"]
+    operators = ["rviz"]
 
 Built-in profiles: `ci` (precision: only high- and medium-precision rules, threshold 0.4) and
 `audit` (recall: every rule, threshold 0.6); a configuration file may redefine them.
@@ -40,7 +48,19 @@ BUILTIN_PROFILES = {
     "audit": {"near-miss-threshold": 0.6},
 }
 KEYS = {"rules", "select", "ignore", "severity", "near-miss-threshold", "precision", "profiles", "suppress", "env",
-        "budget"}
+        "budget", "operators", "systems"}
+SYSTEM_KEYS = {"paths", "launch", "args", "models", "operators"}
+OPERATORS = Path(__file__).resolve().parent / "models" / "operators"
+
+
+@dataclass
+class System:
+    """A named system configuration of archlog.toml: what `--system NAME` puts on the command line."""
+
+    paths: list[Path] = field(default_factory=list)
+    launch: list[str] = field(default_factory=list)
+    args: dict[str, str] = field(default_factory=dict)
+    models: list[Path] = field(default_factory=list)
 
 
 @dataclass
@@ -54,6 +74,8 @@ class Config:
     suppress: list[dict] = field(default_factory=list)
     env: dict[str, str] = field(default_factory=dict)
     limits: dict[str, int] = field(default_factory=dict)
+    operators: list[Path] = field(default_factory=list)  # the model files of the operator tools named
+    systems: dict[str, System] = field(default_factory=dict)
     source: Path | None = None
 
     def applies(self, rule: Rule) -> bool:
@@ -61,14 +83,14 @@ class Config:
         keys = {rule.id, rule.name, *rule.tags}
         def matches(patterns: list[str]) -> bool:
             return any(p in keys or rule.id.startswith(p) for p in patterns)
-        select = [p for p in self.select if not _is_code(p)]
+        select = [p for p in self.select if not is_code(p)]
         return (not select or matches(select)) and not matches(self.ignore) and \
             (not self.precision or rule.precision in self.precision)
 
     def diagnostics(self, items: list[Diagnostic]) -> list[Diagnostic]:
         """The diagnostics shown: `select` and `ignore` take diagnostic codes or code prefixes
         (`launch-`) as they take rule ids, and `[severity]` overrides a code's severity."""
-        select = [p for p in self.select if _is_code(p)]
+        select = [p for p in self.select if is_code(p)]
         def matches(code: str, patterns: list[str]) -> bool:
             return any(code == p or (p.endswith("-") and code.startswith(p)) for p in patterns)
         return [replace(d, severity=self.severity.get(d.code, d.severity)) for d in items
@@ -79,7 +101,7 @@ class Config:
         return [replace(r, severity=self.severity.get(r.id, r.severity)) for r in rules if self.applies(r)]
 
 
-def _is_code(pattern: str) -> bool:
+def is_code(pattern: str) -> bool:
     """Whether a select/ignore pattern names a diagnostic code (or a prefix of codes), not a rule."""
     return any(code == pattern or (pattern.endswith("-") and code.startswith(pattern)) for code in CODES)
 
@@ -117,7 +139,10 @@ def load_config(path: Path | None, profile: str | None) -> Config:
         select=list(data.get("select", [])), ignore=list(data.get("ignore", [])),
         severity=dict(data.get("severity", {})), precision=list(data.get("precision", [])),
         near_miss_threshold=float(data.get("near-miss-threshold", 0.5)), suppress=list(data.get("suppress", [])),
-        env=_env(data.get("env", {}), path), limits=_budget(data.get("budget", {}), path), source=path,
+        env=_env(data.get("env", {}), path), limits=_budget(data.get("budget", {}), path),
+        operators=_operators(data.get("operators", []), path, "operators"),
+        systems={name: _system(name, table, base, path) for name, table in _table(data, "systems", path).items()},
+        source=path,
     )
     for rule_id, level in config.severity.items():
         if level not in SEVERITIES:
@@ -138,6 +163,55 @@ def _env(table: object, path: Path | None) -> dict[str, str]:
         if not isinstance(value, str):
             raise ConfigError(f"{path}: [env] {name} must be a string")
     return dict(table)
+
+
+def _table(data: dict, key: str, path: Path | None) -> dict:
+    table = data.get(key, {})
+    if not isinstance(table, dict):
+        raise ConfigError(f"{path}: [{key}] must be a table")
+    return table
+
+
+def _strings(value: object, path: Path | None, where: str) -> list[str]:
+    if not isinstance(value, list) or not all(isinstance(v, str) and v for v in value):
+        raise ConfigError(f"{path}: {where} must be a list of strings such as [\"a\", \"b\"]")
+    return list(value)
+
+
+def operator_tools() -> list[str]:
+    """The operator tools archlog ships a model of (archlog/models/operators/NAME.yaml)."""
+    return sorted(p.stem for p in OPERATORS.glob("*.yaml"))
+
+
+def _operators(value: object, path: Path | None, where: str) -> list[Path]:
+    """`operators = ["rviz2", ...]`: the shipped models of these operator tools."""
+    names = _strings(value, path, where)
+    for name in names:
+        if name not in operator_tools():
+            raise ConfigError(f"{path}: {where}: unknown operator tool '{name}' "
+                              f"(known: {', '.join(operator_tools())}; or write a model, docs/models.md)")
+    return [OPERATORS / f"{name}.yaml" for name in names]
+
+
+def _system(name: str, table: object, base: Path, path: Path | None) -> System:
+    """[systems.NAME]: paths and models relative to the configuration's folder."""
+    where = f"[systems.{name}]"
+    if not isinstance(table, dict):
+        raise ConfigError(f"{path}: {where} must be a table")
+    unknown = set(table) - SYSTEM_KEYS
+    if unknown:
+        raise ConfigError(f"{path}: {where}: unknown key(s) {', '.join(sorted(unknown))} "
+                          f"(known: {', '.join(sorted(SYSTEM_KEYS))})")
+    args = table.get("args", {})
+    if not isinstance(args, dict) or not all(isinstance(v, str) for v in args.values()):
+        raise ConfigError(f"{path}: {where} args must be a table of NAME = \"value\"")
+    paths = [base / p for p in _strings(table.get("paths", []), path, f"{where} paths")]
+    models = [base / p for p in _strings(table.get("models", []), path, f"{where} models")]
+    for given in [*paths, *models]:
+        if not given.exists():
+            raise ConfigError(f"{path}: {where}: {given} does not exist")
+    return System(paths, _strings(table.get("launch", []), path, f"{where} launch"), dict(args),
+                  models + _operators(table.get("operators", []), path, f"{where} operators"))
 
 
 def _budget(table: object, path: Path | None) -> dict[str, int]:
@@ -162,6 +236,11 @@ def workspace_config(config: Config) -> Config:
         if not rule_path.resolve().is_relative_to(home):
             raise ConfigError(f"{config.source}: rule path {rule_path} is outside {home}; a configuration found "
                               "in the workspace may only use rule files under its own folder (or pass --config)")
+    for name, system in config.systems.items():
+        for given in [*system.paths, *system.models]:
+            if not given.resolve().is_relative_to(home) and given.parent != OPERATORS:
+                raise ConfigError(f"{config.source}: [systems.{name}] names {given}, outside {home}; a configuration "
+                                  "found in the workspace may only name files under its own folder (or pass --config)")
     return replace(config, limits={kind: min(value, LIMITS[kind]) for kind, value in config.limits.items()})
 
 

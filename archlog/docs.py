@@ -12,6 +12,7 @@ from pathlib import Path
 
 from archlog.diagnostics import CODES
 from archlog.facts import schema
+from archlog.reports.rule_help import example, fixtures
 from archlog.rules.ruleset import load_rules
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
@@ -49,17 +50,14 @@ def rules_markdown() -> str:
     lines.append("")
     for r in rules:
         lines += [f"## {r.id}", "", f"**{r.name}** ({r.severity}, precision {r.precision}; tags: {', '.join(r.tags)})",
-                  "", r.summary, "", r.description, "", "**How to fix**", "", r.help, "",
+                  "", r.summary, "", r.description, ""]
+        if example(r):
+            lines += ["**Example finding** (from its fixtures)", "", f"    {example(r)}", ""]
+        lines += ["**How to fix**", "", r.help, "",
                   f"Source: `archlog/rules/builtin/{Path(r.file).name}`; fixtures: "
-                  + ", ".join(f"`tests/{case.name}/`" for case in _fixtures(r)), ""]
+                  + ", ".join(f"`tests/{case.name}/`" for case in fixtures(r)), "",
+                  f"`archlog rule {r.id}` prints this section.", ""]
     return "\n".join(lines)
-
-
-def _fixtures(rule) -> list[Path]:
-    """The rule's fixture folders: tests/<stem> and tests/<stem>__<suffix> next to its file."""
-    path = Path(rule.file)
-    return sorted(p for p in (path.parent / "tests").glob(f"{path.stem}*")
-                  if p.is_dir() and p.name.partition("__")[0] == path.stem)
 
 
 def diagnostics_markdown() -> str:

@@ -6,6 +6,7 @@ import json
 
 from archlog import __version__
 from archlog.reports.report import Report
+from archlog.reports.rule_help import hint, url
 from archlog.rules.engine import Location
 
 FORMAT_VERSION = 1
@@ -22,6 +23,8 @@ def to_json(report: Report) -> str:
             "name": f.rule.name,
             "severity": f.severity,
             "message": f.message,
+            "help": hint(f.rule),
+            "url": url(f.rule),
             "locations": [_location(f.location, "primary")] + [_location(r, "related") for r in f.related],
             "subjects": f.subjects,
             "fingerprint": f.fingerprint,
@@ -38,6 +41,7 @@ def to_json(report: Report) -> str:
     document = {
         "format": FORMAT_VERSION,
         "tool": {"name": "archlog", "version": __version__},
+        "root": str(report.root.resolve()),
         "findings": findings,
         "diagnostics": diagnostics,
         "summary": report.counts(),

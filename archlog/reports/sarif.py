@@ -7,11 +7,11 @@ from pathlib import Path
 
 from archlog import __version__
 from archlog.reports.report import Report
-from archlog.rules.engine import Location
+from archlog.reports.rule_help import INFO_URI, url
+from archlog.rules.engine import Finding, Location
 
 LEVELS = {"error": "error", "warning": "warning", "note": "note"}
 SECURITY = {"error": "error", "warning": "warning", "note": "recommendation"}
-INFO_URI = "https://github.com/archlog/archlog"
 
 
 def _physical(loc: Location, root: Path) -> dict:
@@ -26,6 +26,27 @@ def _physical(loc: Location, root: Path) -> dict:
     return physical
 
 
+def _escape(text: str) -> str:
+    """Message text with literal brackets escaped, so that only archlog's links are links."""
+    return text.replace("[", "\\[").replace("]", "\\]")
+
+
+def _related(f: Finding, report: Report) -> list[tuple[Location, str]]:
+    """The finding's other sides, then the launch elements and includes of the nodes it names."""
+    related = [(r, "the other side") for r in f.related]
+    for node in f.subjects.get("nodes", []):
+        related += report.origins.get(node, [])
+    return [(loc, text) for loc, text in related if loc.file]
+
+
+def _linked(message: str, related: list[tuple[Location, str]]) -> str:
+    """The message with a link to each related location (GitHub shows only linked ones)."""
+    if not related:
+        return _escape(message)
+    links = ", ".join(f"[{_escape(text)}]({i})" for i, (_loc, text) in enumerate(related, 1))
+    return f"{_escape(message)} (see {links})"
+
+
 def to_sarif(report: Report) -> str:
     rules = report.rules
     index = {r.id: i for i, r in enumerate(rules)}
@@ -36,7 +57,7 @@ def to_sarif(report: Report) -> str:
             "shortDescription": {"text": r.summary},
             "fullDescription": {"text": r.description or r.summary},
             "help": {"text": r.help or r.summary, "markdown": r.help or r.summary},
-            "helpUri": f"{INFO_URI}/blob/main/docs/rules.md#{r.id.lower()}",
+            **({"helpUri": url(r)} if url(r) else {}),
             "defaultConfiguration": {"level": LEVELS[r.severity]},
             "properties": {"tags": r.tags, "precision": r.precision, "problem.severity": SECURITY[r.severity]},
         }
@@ -44,23 +65,21 @@ def to_sarif(report: Report) -> str:
     ]
     results = []
     for f in report.findings:
+        related = _related(f, report)
         result = {
             "ruleId": f.rule.id,
             "ruleIndex": index[f.rule.id],
             "level": LEVELS[f.severity],
-            "message": {"text": f.message},
+            "message": {"text": _linked(f.message, related)},
             "locations": [{"physicalLocation": _physical(f.location, report.root)}],
             "partialFingerprints": {"archlogFingerprint/v1": f.fingerprint},
         }
         if f.suppression:
             result["suppressions"] = [{"kind": f.suppression[0], "justification": f.suppression[1]}]
-        related = [(r, "the other side") for r in f.related]
-        for node in f.subjects.get("nodes", []):
-            related += report.origins.get(node, [])
         if related:
             result["relatedLocations"] = [
                 {"id": i, "physicalLocation": _physical(loc, report.root), "message": {"text": text}}
-                for i, (loc, text) in enumerate(related, 1) if loc.file
+                for i, (loc, text) in enumerate(related, 1)
             ]
         results.append(result)
     notifications = [

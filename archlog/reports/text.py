@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import os
 from itertools import groupby
+from typing import TextIO
 
 from rich.console import Console
 from rich.markup import escape
 
 from archlog.reports.report import Report
+from archlog.reports.rule_help import hint
 
 STYLE = {"error": "bold red", "warning": "yellow", "note": "cyan"}
 
@@ -27,6 +30,8 @@ def print_text(report: Report, console: Console, quiet: bool = False) -> None:
             for rel in f.related:
                 console.print(f"    [dim]other side:[/] {escape(rel.file)}:{rel.line}")
                 _source(report, console, rel.file, rel.line, rel.column)
+            if hint(f.rule):
+                console.print(f"    [dim]fix:[/] {escape(hint(f.rule))}", highlight=False)
         if not quiet:
             console.print()
     if report.diagnostics and not quiet:
@@ -67,3 +72,19 @@ def _source(report: Report, console: Console, file: str, line: int, column: int)
     console.print(f"    [dim]{line:>4} |[/] {escape(text)}", highlight=False)
     if column > 0:
         console.print(f"    [dim]     |[/] {' ' * (column - 1)}[bold]^[/]", highlight=False)
+
+
+def print_concise(report: Report, out: TextIO) -> None:
+    """One `path:line:col: ID message` line per finding, then per diagnostic (code for id), with
+    paths relative to the current folder so that editors and terminals open them."""
+    def where(file: str, line: int, column: int) -> str:
+        path = report.root / file if file else None
+        shown = os.path.relpath(path) if path is not None else "."
+        return f"{shown}:{max(line, 1)}:{max(column, 1)}"
+
+    for f in report.findings:
+        if f.suppression is None:
+            loc = f.location
+            out.write(f"{where(loc.file, loc.line, loc.column)}: {f.rule.id} {f.message}\n")
+    for d in report.diagnostics:
+        out.write(f"{where(d.file, d.line, d.column)}: {d.code} {d.message}\n")

@@ -27,7 +27,7 @@ from archlog.diagnostics import SEVERITIES
 
 BUILTIN = Path(__file__).resolve().parent / "builtin"
 REQUIRED = ("id", "name", "severity", "finding", "location", "message", "summary")
-OPTIONAL = ("related", "description", "help", "tags", "precision", "lists")
+OPTIONAL = ("related", "description", "help", "tags", "precision", "lists", "url")
 KEYS = REQUIRED + OPTIONAL  # a closed set: any other key is an error (docs/writing-rules.md documents each)
 PRECISIONS = ("high", "medium", "low")
 _HEAD = re.compile(r"^\s*(\w+)\s*\(([^()]*)\)\s*$")
@@ -55,6 +55,7 @@ class Rule:
     related: list[str]
     description: str = ""
     help: str = ""
+    url: str = ""  # a page about the rule (SARIF helpUri, JSON `url`); shipped rules link docs/rules.md
     tags: list[str] = field(default_factory=list)
     precision: str = "high"
     file: str = ""
@@ -159,7 +160,7 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
     missing = [k for k in REQUIRED if k not in meta]
     if missing:
         raise RuleError(file, line, f"metadata lacks {', '.join(missing)}")
-    for key in ("id", "name", "summary", "message", "description", "help", "precision"):
+    for key in ("id", "name", "summary", "message", "description", "help", "precision", "url"):
         if key in meta and not isinstance(meta[key], (str, int, float)):
             raise fail(key, f"`{key}` must be a single value")
     for key in ("related", "tags"):
@@ -195,6 +196,6 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
         id=str(meta["id"]), name=str(meta["name"]), severity=meta["severity"], summary=str(meta["summary"]),
         message=str(meta["message"]), predicate=head.group(1), columns=columns, location=meta["location"],
         related=list(related), description=str(meta.get("description", "")).strip(),
-        help=str(meta.get("help", "")).strip(), tags=list(meta.get("tags") or []),
+        help=str(meta.get("help", "")).strip(), url=str(meta.get("url", "")).strip(), tags=list(meta.get("tags") or []),
         precision=precision, file=file, line=line, lists=lists, lines=lines,
     )
