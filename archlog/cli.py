@@ -75,9 +75,10 @@ def _system_options(func):
         click.option("--near-miss-threshold", type=click.FloatRange(0, 5),
                      help="Normalised name distance below which two names are a near miss [default: 0.5]."),
     ]
+    func = cli_choices.options(func)
     for option in reversed(options):
         func = option(func)
-    return cli_choices.options(func)
+    return func
 
 
 def _load(paths, launches, args, models, rule_paths, config_path, profile, threshold, env,

@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from archlog.analysis import analyse
+from archlog.config import load_config
 from archlog.rules.engine import Engine, Finding, render
 from archlog.rules.ruleset import load_rules
 
@@ -27,8 +28,12 @@ def load_case(variant: Path) -> dict:
 
 
 def run_case(variant: Path) -> tuple[object, list[Finding]]:
+    """The case's findings; the operator tools of its archlog.toml, if any, are part of the system."""
     case = load_case(variant)
-    analysis = analyse([variant], case["launch"], case.get("args", {}), [variant / m for m in case.get("models", [])])
+    config = variant / "archlog.toml"
+    operators = load_config(config, None).operators if config.is_file() else []
+    analysis = analyse([variant], case["launch"], case.get("args", {}),
+                       [variant / m for m in case.get("models", [])] + operators)
     _ctl, findings = Engine(load_rules([])).run(analysis.store)
     return analysis, findings
 

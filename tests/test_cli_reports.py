@@ -146,6 +146,8 @@ def test_sarif_names_the_launch_include_chain_of_each_node(sarif_schema: dict) -
     jsonschema.validate(sarif, sarif_schema)
     related = [(r["message"]["text"], r["physicalLocation"]["artifactLocation"]["uri"])
                for r in sarif["runs"][0]["results"][0]["relatedLocations"]]
-    # AL601 at proximity_guard, declared in guard.launch, which robot.launch includes
-    assert ("node /proximity_guard is declared here", "src/safety_monitor/launch/guard.launch") in related
-    assert ("included from here (level 1)", "src/safety_monitor/launch/robot.launch") in related
+    # AL601 at proximity_guard, declared in guard.launch, which robot.launch includes; paths are
+    # relative to the repository holding the corpus (the git work tree of the first PATH)
+    where = variant.relative_to(ROOT).as_posix()
+    assert ("node /proximity_guard is declared here", f"{where}/src/safety_monitor/launch/guard.launch") in related
+    assert ("included from here (level 1)", f"{where}/src/safety_monitor/launch/robot.launch") in related

@@ -20,9 +20,11 @@ JSON_SCHEMA = json.loads((ROOT / "archlog" / "reports" / "findings.schema.json")
 
 
 def check(variant: Path, *args: str | Path) -> subprocess.CompletedProcess:
+    """`archlog check` with paths relative to the variant, as case.json gives them."""
     case = json.loads((variant / "case.json").read_text())
     launches = [w for spec in case["launch"] for w in ("--launch", spec)]
-    return subprocess.run([sys.executable, "-m", "archlog", "check", str(variant), *launches, *map(str, args)],
+    return subprocess.run([sys.executable, "-m", "archlog", "check", str(variant), *launches, "--source-root",
+                           str(variant), *map(str, args)],
                           capture_output=True, text=True, cwd=ROOT, timeout=300)
 
 
