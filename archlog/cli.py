@@ -225,11 +225,13 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
 @main.command()
 @_system_options
 @click.option("--format", "fmt", type=click.Choice(["dot", "svg", "html"]), default="html", show_default=True)
-@click.option("--focus", help="Keep what is near this node, topic or service (its resolved name).")
-@click.option("--depth", type=click.IntRange(0, 20), default=2, show_default=True, help="Edges around --focus.")
+@click.option("--focus", help="Keep what is near this node, topic, service, action or parameter (its resolved name).")
+@click.option("--depth", type=click.IntRange(0, 20), default=2, show_default=True,
+              help="Edges around --focus (near-miss partners of what is kept are kept too).")
+@click.option("--parameters", is_flag=True, help="dot, svg: draw parameters too (the HTML page toggles them).")
 @click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write here instead of stdout.")
 def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus,
-          depth, output) -> None:
+          depth, parameters, output) -> None:
     """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
     from archlog.reports import graph as views
 
@@ -241,11 +243,8 @@ def graph(paths, launches, args, models, rule_paths, config_path, profile, near_
             drawn = views.focus(drawn, focus, depth)
         except ValueError as exc:
             raise click.UsageError(str(exc)) from None
-    dot = views.to_dot(drawn)
     try:
-        text = dot if fmt == "dot" else views.to_svg(dot)
-        if fmt == "html":
-            text = views.to_html(drawn, text, f"archlog: {' '.join(map(str, paths))}")
+        text = views.draw(drawn, fmt, f"archlog: {' '.join(map(str, analysis.workspace.roots))}", parameters)
     except RuntimeError as exc:
         raise click.ClickException(str(exc)) from None
     if output:

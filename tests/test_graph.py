@@ -26,7 +26,7 @@ def archlog(*args: str) -> subprocess.CompletedProcess:
 
 
 def test_dot_has_namespaces_findings_and_near_misses() -> None:
-    dot = archlog(*CASE, "--format", "dot").stdout
+    dot = archlog(*CASE, "--format", "dot", "--parameters").stdout
     assert 'subgraph cluster_0 { label="/rover"' in dot
     assert '"t:/rover/base_waypoint" [label="/rover/base_waypoint", shape=ellipse, color="#d62728"' in dot
     assert '"t:/rover/base_waypoint" -> "t:/rover/base_waypoints" [style=dashed' in dot
@@ -40,6 +40,28 @@ def test_focus_keeps_the_neighbourhood() -> None:
               if "shape=" in line and "shape=note" not in line}
     assert labels == {"/rover/odom", "/rover/sim", "/rover/pure_pursuit"}
     assert archlog(*CASE, "--focus", "/nowhere").returncode == 2
+
+
+def test_parameters_are_left_out_unless_asked_for() -> None:
+    assert "shape=note" not in archlog(*CASE, "--format", "dot").stdout
+    assert "shape=note" in archlog(*CASE, "--format", "dot", "--parameters").stdout
+
+
+def test_focus_misspelled_gets_a_did_you_mean() -> None:
+    result = archlog(*CASE, "--format", "dot", "--focus", "/rover/base_waypoit")
+    assert result.returncode == 2
+    assert "no node, topic, service, action or parameter named /rover/base_waypoit; did you mean " \
+           "/rover/base_waypoint or /rover/base_waypoints" in result.stderr
+
+
+def test_depth_one_keeps_the_near_miss_partner() -> None:
+    """The subscriber's topic is one edge away; its near-miss partner two, and kept all the same."""
+    dot = archlog(*CASE, "--format", "dot", "--focus", "/rover/pure_pursuit", "--depth", "1").stdout
+    labels = {line.split('label="')[1].split('"')[0] for line in dot.splitlines() if "shape=" in line}
+    assert labels == {"/rover/pure_pursuit", "/rover/base_waypoint", "/rover/base_waypoints", "/rover/cmd_vel",
+                      "/rover/odom"}
+    assert '"t:/rover/base_waypoint" -> "t:/rover/base_waypoints" [style=dashed' in dot
+    assert '"n:/rover/waypoint_loader" [' not in dot  # the partner's publisher is one edge further
 
 
 @needs
@@ -68,4 +90,14 @@ def test_html_page_in_chromium_as_a_person_uses_it(tmp_path: Path) -> None:
     assert seen["panel"].startswith("topic /rover/base_waypoint")
     assert "src/waypoint_nav/src/pure_pursuit.cpp:45" in seen["panel"] and "AL102" in seen["panel"]
     assert seen["zoomed"]
+    assert seen["legend"].split() == ["node", "topic", "service", "action", "parameter", "error", "warning", "note",
+                                      "→", "publishes,", "serves", "⇢", "client,", "near", "miss?", "…", "parameter",
+                                      "read"]
+    assert seen["parametersHidden"] == 0 and seen["parametersShown"] >= 1  # hidden until toggled
+    [finding] = seen["findings"]
+    assert finding.startswith("AL102 /rover/pure_pursuit subscribes to /rover/base_waypoint")
+    assert seen["focused"] == ["n:/rover/pure_pursuit", "n:/rover/waypoint_loader", "t:/rover/base_waypoint",
+                               "t:/rover/base_waypoints"]
+    assert seen["dimmed"] >= 2 and seen["refocused"]
+    assert seen["findingPanel"].startswith("AL102 error") and "pure_pursuit.cpp:45" in seen["findingPanel"]
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 10_000

@@ -3,13 +3,17 @@
 Elements are node instances, topics, services, actions and the parameters nodes read (with
 where the configuration sets them); namespaces are clusters; elements a
 finding names are coloured by severity, and a near miss is drawn as a dashed edge between the
-two names. `focus` keeps what is within N edges of one element.
+two names. `focus` keeps what is within N edges of one element, and the near-miss partner of
+everything it keeps. Parameters are left out of DOT and SVG unless asked for; the HTML page holds
+both layouts and toggles between them, with a legend and a list of the findings.
 """
 
 from __future__ import annotations
 
+import difflib
 import html
 import json
+import re
 import shutil
 import subprocess
 from dataclasses import dataclass, field
@@ -24,6 +28,7 @@ from archlog.rules.engine import Finding, render
 KINDS = {"n": "node", "t": "topic", "s": "service", "a": "action", "p": "parameter"}
 SHAPES = {"n": "box", "t": "ellipse", "s": "diamond", "a": "hexagon", "p": "note"}
 COLOURS = {"error": "#d62728", "warning": "#ff7f0e", "note": "#1f77b4"}
+NEAR_MISS = "near miss?"
 PORTS = {  # relation -> (element kind, edge direction: node->element or element->node, style)
     "publisher": ("t", "out", "solid"), "subscriber": ("t", "in", "solid"),
     "service_server": ("s", "in", "solid"), "service_client": ("s", "out", "dashed"),
@@ -34,6 +39,8 @@ PORTS = {  # relation -> (element kind, edge direction: node->element or element
 @dataclass
 class Graph:
     graph: nx.MultiDiGraph = field(default_factory=nx.MultiDiGraph)
+    # each unsuppressed finding: rule, severity, message, where (file:line) and the elements it names
+    findings: list[dict] = field(default_factory=list)
 
     def element(self, ident: str, label: str, where: str | None = None) -> None:
         if ident not in self.graph:
@@ -65,31 +72,53 @@ def build(store: FactStore, findings: list[Finding]) -> Graph:
     for finding in findings:
         if finding.suppression is not None:
             continue
+        named = []
         for kind, key in (("n", "nodes"), ("t", "topics"), ("s", "services"), ("a", "actions"), ("p", "parameters")):
             for name in finding.subjects.get(key, []):
                 ident = f"{kind}:{name}"
                 if ident in g.graph:
+                    named.append(ident)
                     data = g.graph.nodes[ident]
                     data["findings"].append(f"{finding.rule.id} {finding.message}")
                     if data["severity"] is None or finding.severity == "error":
                         data["severity"] = finding.severity
+        loc = finding.location
+        g.findings.append({"rule": finding.rule.id, "severity": finding.severity, "message": finding.message,
+                           "where": f"{loc.file}:{loc.line}" if loc.file else "", "elements": named})
         if finding.rule.id == "AL102":
             a, b = f"t:{finding.values['topic']}", f"t:{finding.values['other_topic']}"
             if a in g.graph and b in g.graph:
-                g.graph.add_edge(a, b, style="dashed", label="near miss?", colour=COLOURS[finding.severity])
+                g.graph.add_edge(a, b, style="dashed", label=NEAR_MISS, colour=COLOURS[finding.severity])
     return g
 
 
 def focus(g: Graph, element: str, depth: int) -> Graph:
-    """What is within `depth` edges of a node or topic (given by resolved name)."""
+    """What is within `depth` edges of an element (given by resolved name), with the near-miss
+    partner of each topic kept; a ValueError names the nearest names when none is `element`."""
     matches = [n for n, d in g.graph.nodes(data=True) if d["label"] == element]
     if not matches:
-        raise ValueError(f"no node, topic, service or action named {element}")
+        labels = sorted({d["label"] for _n, d in g.graph.nodes(data=True)})
+        near = difflib.get_close_matches(element, labels, n=3, cutoff=0.6)
+        raise ValueError(f"no node, topic, service, action or parameter named {element}"
+                         + (f"; did you mean {' or '.join(near)}?" if near else ""))
     keep: set[str] = set()
     undirected = nx.Graph(g.graph)
     for start in matches:
         keep |= set(nx.single_source_shortest_path_length(undirected, start, cutoff=depth))
-    return Graph(g.graph.subgraph(keep).copy())
+    keep |= {b for a, b, d in g.graph.edges(data=True) if a in keep and _near_miss(d)}
+    keep |= {a for a, b, d in g.graph.edges(data=True) if b in keep and _near_miss(d)}
+    kept = Graph(g.graph.subgraph(keep).copy())
+    kept.findings = [f for f in g.findings if set(f["elements"]) & keep]
+    return kept
+
+
+def _near_miss(edge: dict) -> bool:
+    return edge["label"] == NEAR_MISS
+
+
+def without_parameters(g: Graph) -> Graph:
+    """The graph without parameter elements."""
+    return Graph(g.graph.subgraph([n for n in g.graph if not n.startswith("p:")]).copy(), g.findings)
 
 
 def to_dot(g: Graph) -> str:
@@ -128,12 +157,45 @@ def to_svg(dot: str) -> str:
     return result.stdout[result.stdout.find("<svg"):]
 
 
-def to_html(g: Graph, svg: str, title: str) -> str:
+def draw(g: Graph, fmt: str, title: str, parameters: bool = False) -> str:
+    """The graph as `dot`, `svg` (both with parameters only when asked) or `html` (both layouts)."""
+    shown = g if parameters else without_parameters(g)
+    if fmt == "dot":
+        return to_dot(shown)
+    if fmt == "svg":
+        return to_svg(to_dot(shown))
+    return to_html(g, to_svg(to_dot(without_parameters(g))), to_svg(to_dot(g)), title)
+
+
+def to_html(g: Graph, svg: str, svg_with_parameters: str, title: str) -> str:
+    """One offline page: the layout without parameters, the one with them (toggled), a legend and
+    the findings list."""
     elements = {ident: {"label": d["label"], "kind": d["kind"], "places": d["places"], "findings": d["findings"]}
                 for ident, d in g.graph.nodes(data=True)}
+    parts = {"TITLE": html.escape(title), "LEGEND": legend(), "SVG": svg, "SVG_WITH_PARAMETERS": svg_with_parameters,
+             "ELEMENTS": _script_json(elements), "FINDINGS": _script_json(g.findings)}
     template = (Path(__file__).with_name("graph.html")).read_text(encoding="utf-8")
-    return (template.replace("__TITLE__", html.escape(title)).replace("__SVG__", svg)
-            .replace("__ELEMENTS__", json.dumps(elements).replace("</", "<\\/")))
+    return re.sub(r"__([A-Z_]+)__", lambda m: parts[m.group(1)], template)  # one pass: no part is read again
+
+
+def legend() -> str:
+    """The legend of the HTML page: each shape's kind, each colour's severity, the edge styles."""
+    icons = {
+        "box": '<rect x="2" y="3" width="20" height="12"/>', "ellipse": '<ellipse cx="12" cy="9" rx="10" ry="6"/>',
+        "diamond": '<polygon points="12,2 22,9 12,16 2,9"/>', "hexagon": '<polygon points="6,3 18,3 22,9 18,15 6,15 2,9"/>',
+        "note": '<polygon points="2,3 17,3 22,8 22,15 2,15"/>',
+    }
+    items = [f'<span class="key"><svg width="24" height="18" fill="none" stroke="#444">{icons[SHAPES[k]]}</svg>'
+             f"{kind}</span>" for k, kind in KINDS.items()]
+    items += [f'<span class="key"><span class="swatch" style="border-color:{colour}"></span>{severity}</span>'
+              for severity, colour in COLOURS.items()]
+    items += ['<span class="key">&#8594; publishes, serves</span>', '<span class="key">&#8674; client, near miss?</span>',
+              '<span class="key">&#8230; parameter read</span>']
+    return "".join(items)
+
+
+def _script_json(value: object) -> str:
+    return json.dumps(value).replace("</", "<\\/")
 
 
 def _where(store: FactStore, ident: Cell, what: str) -> str:

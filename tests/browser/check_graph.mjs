@@ -1,5 +1,6 @@
-// Open archlog's HTML graph in Debian's Chromium, type a search, click an element, take a
-// screenshot, and print what a person would see as JSON.
+// Open archlog's HTML graph in Debian's Chromium, type a search, click an element, zoom, toggle
+// the parameters, click the first finding of the list, take a screenshot, and print what a person
+// would see as JSON.
 // Usage: node check_graph.mjs PAGE.html SCREENSHOT.png SEARCH ELEMENT_ID
 import { chromium } from "playwright-core";
 
@@ -23,8 +24,22 @@ try {
   await tab.mouse.move(500, 400);
   await tab.mouse.wheel(0, -400);
   const after = await tab.locator("#view svg").getAttribute("viewBox");
+  const legend = await tab.locator("#legend").innerText();
+  const parametersHidden = await tab.locator('g.node[id^="p:"]').count();
+  await tab.locator("#parameters").check();
+  const parametersShown = await tab.locator('g.node[id^="p:"]').count();
+  await tab.locator("#parameters").uncheck();
+  const findings = await tab.locator("#findings li").allInnerTexts();
+  const unfocused = await tab.locator("#view svg").getAttribute("viewBox");
+  await tab.locator("#findings li").first().click();
+  const focused = await tab.locator("g.node.match").evaluateAll(gs => gs.map(g => g.id).sort());
+  const dimmed = await tab.locator("g.node.dim").count();
+  const focusBox = await tab.locator("#view svg").getAttribute("viewBox");
+  const findingPanel = await tab.locator("#panel").innerText();
   await tab.screenshot({ path: screenshot });
-  console.log(JSON.stringify({ elements, matches, count, panel, zoomed: before !== after }));
+  console.log(JSON.stringify({ elements, matches, count, panel, zoomed: before !== after, legend, parametersHidden,
+                               parametersShown, findings, focused, dimmed, refocused: focusBox !== unfocused,
+                               findingPanel }));
 } finally {
   await browser.close();
 }
