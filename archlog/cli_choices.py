@@ -33,13 +33,12 @@ class Choices:
 
 
 def _store(name: str) -> Callable:
-    def callback(ctx: click.Context, _param: click.Parameter, value: object) -> None:
+    def callback(ctx: click.Context, _param: click.Parameter, value: str | tuple[str, ...] | None) -> None:
         choices = ctx.meta.setdefault(KEY, Choices())
-        if name == "system":
+        if isinstance(value, str) or value is None:
             choices.system = value
         elif value:
-            patterns = [p.strip() for v in value for p in str(v).split(",") if p.strip()]  # type: ignore[attr-defined]
-            setattr(choices, name, patterns)
+            setattr(choices, name, [p.strip() for v in value for p in v.split(",") if p.strip()])
     return callback
 
 

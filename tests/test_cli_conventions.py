@@ -142,3 +142,21 @@ def _options() -> list[str]:
 def test_docs_describe_every_option(option: str) -> None:
     docs = "\n".join(p.read_text() for p in [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))])
     assert re.search(rf"`[^`\n]*{re.escape(option)}\b", docs), f"no page of docs/ or README.md describes {option}"
+
+
+def test_models_page_examples_follow_the_schema_and_name_every_key() -> None:
+    import jsonschema
+    import yaml
+
+    page = (ROOT / "docs" / "models.md").read_text()
+    schema = json.loads((ROOT / "archlog" / "models" / "model.schema.json").read_text())
+    examples = re.findall(r"```yaml\n(.*?)```", page, re.S)
+    assert len(examples) >= 4
+    for example in examples:
+        jsonschema.validate(yaml.safe_load(example), schema)
+    keys = {key for definition in schema["$defs"].values() for key in definition.get("properties", {})}
+    keys |= {key for option in schema["$defs"]["qos"]["oneOf"] for key in option.get("properties", {})}
+    assert keys >= {"instance", "incomplete", "each", "liveliness_lease_duration"}
+    assert [key for key in sorted(keys) if f"`{key}`" not in page and f"{key}:" not in page] == []
+    for tool in sorted(p.stem for p in (ROOT / "archlog" / "models" / "operators").glob("*.yaml")):
+        assert f"| `{tool}` |" in page
