@@ -11,9 +11,8 @@ from pathlib import Path
 
 import pytest
 from conftest import CORPUS, ROOT, load_case
+from support.multitool import MULTITOOL, multitool_problems
 
-MULTITOOL = ROOT / "tests" / "sarif-multitool" / "node_modules" / "@microsoft" / "sarif-multitool-linux" / \
-    "Sarif.Multitool"
 pytestmark = pytest.mark.skipif(not MULTITOOL.is_file() and not os.environ.get("CI"),
                                 reason="run `npm ci` in tests/sarif-multitool (bash .ci/run does)")
 VARIANTS = [CORPUS / "topic_typo" / "buggy", CORPUS / "misplaced_remap" / "buggy", CORPUS / "wrong_remap" / "clean",
@@ -25,16 +24,6 @@ def sarif_for(variant: Path, out: Path) -> Path:
     subprocess.run([sys.executable, "-m", "archlog", "check", str(variant), *launches, "--format", "sarif",
                     "--output", str(out), "--fail-on", "never"], cwd=ROOT, check=True, timeout=300)
     return out
-
-
-def multitool_problems(sarif: Path, tmp_path: Path) -> list[tuple[str, str, str]]:
-    result = tmp_path / f"{sarif.stem}.validation.sarif"
-    env = dict(os.environ, DOTNET_SYSTEM_GLOBALIZATION_INVARIANT="1")
-    subprocess.run([str(MULTITOOL), "validate", "--rule-kind", "Gh", "--log", "ForceOverwrite", "-o", str(result),
-                    str(sarif)], env=env, capture_output=True, text=True, timeout=300, check=True)
-    runs = json.loads(result.read_text())["runs"]
-    return [(r.get("level", "warning"), r["ruleId"], json.dumps(r["message"])[:200])
-            for run in runs for r in run.get("results", [])]
 
 
 @pytest.mark.parametrize("variant", VARIANTS, ids=lambda p: f"{p.parent.name}/{p.name}")
