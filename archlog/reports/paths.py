@@ -51,7 +51,8 @@ class Rebase:
     def absolute(self, file: str) -> Path:
         if not file or os.path.isabs(file):
             return Path(file)
-        for base in self.bases:  # the facts name a file relative to the first root holding it
+        # the facts name a file relative to the first root holding it, or as given on the command line
+        for base in [*self.bases, Path.cwd()]:
             if os.path.lexists(base / file):
                 return base / file
         return self.bases[0] / file if self.bases else Path(file)
