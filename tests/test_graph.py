@@ -45,6 +45,10 @@ def test_focus_keeps_the_neighbourhood() -> None:
 def test_parameters_are_left_out_unless_asked_for() -> None:
     assert "shape=note" not in archlog(*CASE, "--format", "dot").stdout
     assert "shape=note" in archlog(*CASE, "--format", "dot", "--parameters").stdout
+    param = next(line for line in archlog(*CASE, "--format", "dot", "--parameters").stdout.splitlines()
+                 if "shape=note" in line).split('label="')[1].split('"')[0]
+    focused = archlog(*CASE, "--format", "dot", "--focus", param, "--depth", "1").stdout
+    assert f'"p:{param}" [label="{param}", shape=note' in focused  # a focused parameter is drawn
 
 
 def test_focus_misspelled_gets_a_did_you_mean() -> None:

@@ -41,6 +41,7 @@ class Graph:
     graph: nx.MultiDiGraph = field(default_factory=nx.MultiDiGraph)
     # each unsuppressed finding: rule, severity, message, where (file:line) and the elements it names
     findings: list[dict] = field(default_factory=list)
+    focused: set[str] = field(default_factory=set)  # the elements --focus named: drawn even if parameters are not
 
     def element(self, ident: str, label: str, where: str | None = None) -> None:
         if ident not in self.graph:
@@ -109,6 +110,7 @@ def focus(g: Graph, element: str, depth: int) -> Graph:
     keep |= {a for a, b, d in g.graph.edges(data=True) if b in keep and _near_miss(d)}
     kept = Graph(g.graph.subgraph(keep).copy())
     kept.findings = [f for f in g.findings if set(f["elements"]) & keep]
+    kept.focused = set(matches)
     return kept
 
 
@@ -117,8 +119,9 @@ def _near_miss(edge: dict) -> bool:
 
 
 def without_parameters(g: Graph) -> Graph:
-    """The graph without parameter elements."""
-    return Graph(g.graph.subgraph([n for n in g.graph if not n.startswith("p:")]).copy(), g.findings)
+    """The graph without parameter elements (but the one focused on)."""
+    return Graph(g.graph.subgraph([n for n in g.graph if not n.startswith("p:") or n in g.focused]).copy(),
+                 g.findings, g.focused)
 
 
 def to_dot(g: Graph) -> str:
