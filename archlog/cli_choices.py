@@ -91,4 +91,4 @@ def inputs(config: Config, choices: Choices, paths: list[Path], launches: list[s
         args, models = {**system.args, **args}, [*system.models, *models]
     if not paths:
         raise click.UsageError("give PATH... or --system NAME")
-    return paths, launches, args, models
+    return paths, launches, args, list(dict.fromkeys(models))  # an operator named twice is one instance

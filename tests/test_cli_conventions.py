@@ -104,6 +104,21 @@ def test_named_system_runs_from_archlog_toml(tmp_path: Path) -> None:
     assert bad.returncode == 2 and "[systems.nav]: unknown key(s) launchs" in bad.stderr
 
 
+def test_named_system_args_models_and_the_command_line(tmp_path: Path) -> None:
+    shutil.copytree(CORPUS / "include_missing_remap" / "buggy", tmp_path / "ws")
+    (tmp_path / "archlog.toml").write_text(
+        '[systems.guard]\npaths = ["ws"]\n'
+        'launch = ["laser_bringup/launch/laser.launch", "safety_monitor/launch/guard.launch"]\n'
+        'args = {scan_topic = "base_scan"}\n')
+    assert rules_found("--system", "guard", cwd=tmp_path) == []
+    assert rules_found("--system", "guard", "--arg", "scan_topic:=scan", cwd=tmp_path) == ["AL601"]  # --arg wins
+    (tmp_path / "scan.yaml").write_text("instance: /replay\npublishers:\n  - {name: /scan, type: sensor_msgs/LaserScan}\n")
+    (tmp_path / "archlog.toml").write_text(
+        'operators = ["rviz"]\n[systems.guard]\npaths = ["ws"]\nlaunch = ["safety_monitor/launch/guard.launch"]\n'
+        'models = ["scan.yaml"]\noperators = ["rviz"]\n')
+    assert rules_found("--system", "guard", cwd=tmp_path) == []  # the model feeds /scan; rviz is one instance
+
+
 def test_named_system_of_a_workspace_config_stays_in_its_folder(tmp_path: Path) -> None:
     shutil.copytree(BUGGY, tmp_path / "robot" / "ws")
     (tmp_path / "robot" / "archlog.toml").write_text('[systems.nav]\npaths = ["../elsewhere"]\n')
