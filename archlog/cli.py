@@ -23,12 +23,11 @@ from archlog.errors import ConfigError
 from archlog.queries.session import QueryError, Result, Session
 from archlog.reports.codequality import to_codequality
 from archlog.reports.json_report import to_json
-from archlog.reports.paths import Rebase, source_root
 from archlog.reports.report import Report, coverage
 from archlog.reports.sarif import to_sarif
 from archlog.reports.suppress import apply_suppressions, read_baseline
 from archlog.reports.suppress import write_baseline as write_baseline_file
-from archlog.reports.text import print_concise, print_text
+from archlog.reports.text import print_text
 from archlog.rules.engine import render
 from archlog.rules.ruleset import RuleError, RuleSet, load_rules
 
@@ -139,6 +138,9 @@ def main() -> None:
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
           source_root_dir, output, fail_on, baseline, write_baseline, fail_on_incomplete, quiet) -> None:
     """Check a ROS system configuration and report findings."""
+    from archlog.reports.paths import Rebase, source_root
+    from archlog.reports.text import print_concise
+
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env, quiet or fmt != "text" and output is None)
     root = analysis.workspace.roots[0]
