@@ -161,3 +161,19 @@ def test_link_text_brackets_are_escaped() -> None:
 
     assert _linked("reads [0] of x", [(Location("a.py", 1), "the other side")]) == \
         "reads \\[0\\] of x (see [the other side](1))"
+
+
+def test_rebase_finds_each_file_under_the_root_that_holds_it(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from archlog.reports.paths import Rebase, source_root
+
+    for folder in ("ws_a/src", "ws_b/src", "tools"):
+        (tmp_path / folder).mkdir(parents=True)
+    (tmp_path / "ws_a" / "src" / "a.py").write_text("")
+    (tmp_path / "ws_b" / "src" / "b.py").write_text("")
+    (tmp_path / "tools" / "model.yaml").write_text("")
+    monkeypatch.chdir(tmp_path / "tools")
+    rebase = Rebase([tmp_path / "ws_a", tmp_path / "ws_b"], tmp_path)
+    assert [rebase("src/a.py"), rebase("src/b.py"), rebase("model.yaml"), rebase("/opt/x.launch"), rebase("")] == \
+        ["ws_a/src/a.py", "ws_b/src/b.py", "tools/model.yaml", "/opt/x.launch", ""]
+    assert source_root(tmp_path / "ws_a") == tmp_path / "ws_a"  # no git, outside the current folder
+    assert source_root(Path("."), tmp_path) == tmp_path
