@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import csv
 import json
 import os
 import sys
@@ -12,14 +11,14 @@ import click
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
-from rich.text import Text
 
 from archlog import __version__, sandbox
 from archlog.analysis import Analysis, analyse
 from archlog.config import Config, find_config, load_config, workspace_config
 from archlog.diagnostics import SEVERITIES
 from archlog.errors import ConfigError
-from archlog.queries.session import QueryError, Result, Session
+from archlog.queries.session import QueryError, Session
+from archlog.queries.table import print_result
 from archlog.reports.codequality import to_codequality
 from archlog.reports.json_report import to_json
 from archlog.reports.report import Report, coverage
@@ -27,7 +26,6 @@ from archlog.reports.sarif import to_sarif
 from archlog.reports.suppress import apply_suppressions, read_baseline
 from archlog.reports.suppress import write_baseline as write_baseline_file
 from archlog.reports.text import print_text
-from archlog.rules.engine import render
 from archlog.rules.ruleset import RuleError, RuleSet, load_rules
 
 FAIL_ON = (*SEVERITIES, "never")
@@ -193,7 +191,7 @@ def query(paths, launches, args, models, rule_paths, config_path, profile, near_
         result = Session(analysis.store, ruleset, config).query(goal)
     except QueryError as exc:
         raise click.UsageError(str(exc)) from None
-    print_result(result, fmt, Console(soft_wrap=True))
+    print_result(result, fmt, sys.stdout)
 
 
 @main.command()
@@ -332,21 +330,6 @@ def test_rules(folders, update) -> None:
     from archlog.queries.rule_tests import run_rule_tests
 
     sys.exit(0 if run_rule_tests(list(folders), update, Console(soft_wrap=True)) else 1)
-
-
-def print_result(result: Result, fmt: str, console: Console) -> None:
-    """A query result as a table, JSON or CSV."""
-    if fmt == "json":
-        console.print_json(json.dumps([dict(zip(result.columns, map(render, row))) for row in result.rows]))
-    elif fmt == "csv":
-        writer = csv.writer(sys.stdout)
-        writer.writerow(result.columns)
-        writer.writerows([list(map(render, row)) for row in result.rows])
-    else:
-        table = Table(*result.columns, title=f"{len(result.rows)} result{'s' if len(result.rows) != 1 else ''}")
-        for row in result.rows:
-            table.add_row(*(Text(render(cell)) for cell in row))
-        console.print(table)
 
 
 def run() -> None:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 import time
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 
 import clingo
@@ -15,37 +16,70 @@ from archlog.facts.schema import BY_NAME
 from archlog.facts.store import Cell, FactStore
 from archlog.rules.engine import Engine, Finding, Signature, _parse, _safety
 from archlog.rules.ruleset import Program, RuleError, RuleSet, parse_rule_file
+from archlog.values import order
 
 
 class QueryError(Exception):
     """A query or an on-the-fly rule that clingo rejects, or that names an unknown relation."""
 
 
-@dataclass
 class Result:
-    columns: list[str]
-    rows: list[tuple[Cell, ...]]
-    seconds: float = 0.0
+    """The bindings of a query's variables, converted as they are read: the first rows can be
+    shown before the last are converted. Iterating again replays the rows read so far."""
+
+    def __init__(self, columns: list[str], source: Iterable[tuple[Cell, ...]], seconds: float = 0.0) -> None:
+        self.columns, self.seconds = columns, seconds  # seconds: until the first row could be read
+        self._source: Iterator[tuple[Cell, ...]] = iter(source)
+        self._read: list[tuple[Cell, ...]] = []
+
+    def __iter__(self) -> Iterator[tuple[Cell, ...]]:
+        index = 0
+        while index < len(self._read) or self._more():
+            yield self._read[index]
+            index += 1
+
+    def _more(self) -> bool:
+        row = next(self._source, None)
+        if row is not None:
+            self._read.append(row)
+        return row is not None
+
+    @property
+    def rows(self) -> list[tuple[Cell, ...]]:
+        """Every row, in the order clingo grounded them."""
+        return self.read_all()
+
+    def read_all(self) -> list[tuple[Cell, ...]]:
+        while self._more():
+            pass
+        return self._read
+
+    def sorted_rows(self) -> list[tuple[Cell, ...]]:
+        return sorted(self.rows, key=lambda row: tuple(map(order, row)))
 
 
 @dataclass
 class Explanation:
-    """Why an atom holds: the rule that derived it and the atoms of that rule's body."""
+    """Why an atom holds: the rule that derived it and the literals of that rule's body, or that it
+    is a fact. `kind` is fact, derived (by `rule`), absent (a `not` condition: no such atom) or
+    condition (a comparison or aggregate that held)."""
 
     atom: str
+    kind: str = "fact"
     rule: str | None = None
     location: tuple[str, int, int] | None = None
     children: list[Explanation] = field(default_factory=list)
 
     def as_dict(self) -> dict:
-        return {"atom": self.atom, "rule": self.rule,
+        return {"atom": self.atom, "kind": self.kind, "rule": self.rule,
                 "location": None if self.location is None else
                 {"file": self.location[0], "line": self.location[1], "column": self.location[2]},
                 "because": [c.as_dict() for c in self.children]}
 
     def lines(self, indent: str = "") -> list[str]:
         where = f"  [{self.location[0]}:{self.location[1]}]" if self.location else ""
-        how = f"  (by {self.rule})" if self.rule else "  (fact)"
+        how = {"fact": "  (fact)", "absent": "  (none exists)", "condition": "  (holds)",
+               "derived": f"  (by {self.rule})" if self.rule else "  (derived; reasons not shown)"}[self.kind]
         out = [f"{indent}{self.atom}{how}{where}"]
         for child in self.children:
             out += child.lines(indent + "  ")
@@ -63,6 +97,13 @@ class Session:
         self.parts = 0
         self.extra: list[Program] = []
         self._known_cache: set[Signature] | None = None
+        self._open: Result | None = None  # the last query's result, read lazily from the grounded atoms
+
+    def _finish_open(self) -> None:
+        """Read the rest of the last result before grounding more (which invalidates its atoms)."""
+        if self._open is not None:
+            self._open.read_all()
+            self._open = None
 
     # -- findings -------------------------------------------------------------------------
     def findings(self) -> list[Finding]:
@@ -96,8 +137,9 @@ class Session:
         text = f"{head}({', '.join(variables)}) :- {body}." if variables else f"{head} :- {body}."
         self._add(Program(text, "<query>", 1))
         atoms = self.ctl.symbolic_atoms.by_signature(head, len(variables))
-        rows = sorted(tuple(self.store.from_term(a) for a in atom.symbol.arguments) for atom in atoms)
-        return Result(variables, rows, time.perf_counter() - start)
+        self._open = Result(variables, (tuple(map(self.store.from_term, atom.symbol.arguments)) for atom in atoms),
+                            time.perf_counter() - start)
+        return self._open
 
     def define(self, text: str, file: str = "<repl>") -> list[str]:
         """Add rules (and rule metadata headers) on the fly; returns the predicates they define."""
@@ -119,6 +161,7 @@ class Session:
             _safety(program, "".join(f"#defined {n}/{a}. " for n, a in sorted(known)) + "\n")
         except RuleError as exc:
             raise QueryError(f"{exc.message} (line {exc.line}, column {exc.column})") from None
+        self._finish_open()
         self.parts += 1
         part = f"p{self.parts}"
         self.ctl.add(part, [], program.text)
@@ -134,9 +177,11 @@ class Session:
 
     # -- explanations ---------------------------------------------------------------------
     def explain(self, atom: clingo.Symbol, depth: int = 4) -> Explanation:
-        """The rule that derives `atom` and, recursively, the atoms it used (facts at the leaves)."""
-        node = Explanation(str(atom), location=self._location(atom))
-        if atom.name in BY_NAME or depth == 0:
+        """The rule that derives `atom` and, recursively, what its body used (facts at the leaves)."""
+        if atom.name in BY_NAME:
+            return Explanation(self.show(atom), location=self._location(atom))
+        node = Explanation(self.show(atom), "derived", location=self._location(atom))
+        if depth == 0:
             return node
         for program in self.ruleset.programs + self.extra:
             for rule in _rules(program):
@@ -149,21 +194,33 @@ class Session:
                 body = self._instantiate(rule, atom)
                 if body is not None:
                     node.rule = f"{program.file}:{program.first_line + rule.location.begin.line - 1}"
-                    node.children = [self.explain(b, depth - 1) for b in body]
+                    node.children = [self.explain(b, depth - 1) if isinstance(b, clingo.Symbol) else b for b in body]
                     return node
         return node
 
-    def _instantiate(self, rule: clingo.ast.AST, atom: clingo.Symbol) -> list[clingo.Symbol] | None:
-        """The positive body atoms of one grounding of `rule` whose head is `atom`, if any."""
-        literals = [_name_anonymous(str(lit.atom), i) for i, lit in enumerate(rule.body)
-                    if lit.ast_type == clingo.ast.ASTType.Literal and lit.sign == clingo.ast.Sign.NoSign
-                    and lit.atom.ast_type == clingo.ast.ASTType.SymbolicAtom]
-        body_text = ", ".join(_name_anonymous(str(lit), i) for i, lit in enumerate(rule.body))
-        bindings = ", ".join(f"{arg} = {value}" for arg, value in zip(rule.head.atom.symbol.arguments, atom.arguments))
-        variables = _variables(body_text)
+    def show(self, symbol: clingo.Symbol) -> str:
+        """A term as archlog writes values: strings quoted, an unknown as `?(expr)`."""
+        if symbol.type == clingo.SymbolType.Function and symbol.arguments:
+            if symbol.name == "unknown" and len(symbol.arguments) == 1:
+                return str(self.store.from_term(symbol))
+            return f"{symbol.name}({', '.join(map(self.show, symbol.arguments))})"
+        return str(symbol)
+
+    def _instantiate(self, rule: clingo.ast.AST, atom: clingo.Symbol) -> list[clingo.Symbol | Explanation] | None:
+        """One grounding of `rule` whose head is `atom`: its positive body atoms, and its other
+        literals (`not` conditions, comparisons, aggregates) as text with the values filled in."""
+        positive, literals, variables = [], [], _variables(str(rule.head))
+        for index, literal in enumerate(rule.body):
+            if _is_positive_atom(literal):
+                text = _name_anonymous(str(literal.atom), index)
+                positive.append(text)
+                variables += [v for v in _variables(text) if v not in variables]
+            literals.append(text if _is_positive_atom(literal) else str(literal))
+        bindings = [f"{arg} = {value}" for arg, value in zip(rule.head.atom.symbol.arguments, atom.arguments)]
         self.parts += 1
         head = f"__why{self.parts}"
-        text = f"{head}({', '.join(variables)}) :- {body_text}{', ' if bindings else ''}{bindings}."
+        text = f"{head}({', '.join(variables)}) :- {', '.join(literals + bindings)}."
+        self._finish_open()
         try:
             self.ctl.add(f"w{self.parts}", [], text)
             self.ctl.ground([(f"w{self.parts}", [])])
@@ -173,7 +230,17 @@ class Session:
         if solution is None:
             return None
         values = dict(zip(variables, solution.symbol.arguments))
-        return [clingo.parse_term(_substitute(text, values)) for text in literals]
+        shown = {name: self.show(value) for name, value in values.items()}
+        body: list[clingo.Symbol | Explanation] = []
+        for literal in rule.body:
+            if _is_positive_atom(literal):
+                body.append(clingo.parse_term(_substitute(positive.pop(0), values)))
+            else:
+                kind = "absent" if literal.ast_type == clingo.ast.ASTType.Literal and \
+                    literal.sign != clingo.ast.Sign.NoSign and \
+                    literal.atom.ast_type == clingo.ast.ASTType.SymbolicAtom else "condition"
+                body.append(Explanation(_substitute(str(literal), shown), kind))
+        return body
 
     def _location(self, atom: clingo.Symbol) -> tuple[str, int, int] | None:
         for arg in atom.arguments:
@@ -186,6 +253,11 @@ def _rules(program: Program) -> list[clingo.ast.AST]:
     found: list[clingo.ast.AST] = []
     clingo.ast.parse_string(program.text, lambda s: found.append(s) if s.ast_type == clingo.ast.ASTType.Rule else None)
     return found
+
+
+def _is_positive_atom(literal: clingo.ast.AST) -> bool:
+    return literal.ast_type == clingo.ast.ASTType.Literal and literal.sign == clingo.ast.Sign.NoSign and \
+        literal.atom.ast_type == clingo.ast.ASTType.SymbolicAtom
 
 
 def _variables(body: str) -> list[str]:
@@ -221,7 +293,7 @@ def _name_anonymous(text: str, literal: int) -> str:
                                                        lambda _m: f"Anon{literal}x{next(count)}", piece))
 
 
-def _substitute(text: str, values: dict[str, clingo.Symbol]) -> str:
+def _substitute(text: str, values: Mapping[str, object]) -> str:
     """Replace variables in a rendered atom by their values, leaving string literals alone."""
     return _outside_strings(text, lambda piece: re.sub(r"\b([A-Z]\w*)\b",
                                                        lambda m: str(values.get(m.group(1), m.group(0))), piece))

@@ -55,7 +55,8 @@ class Finding:
 
 
 def render(value: Cell) -> str:
-    return f"?({value.expr})" if isinstance(value, Unknown) else str(value)
+    """A cell as text; an unknown is written `?(expr)`."""
+    return str(value)
 
 
 class Engine:
