@@ -202,9 +202,10 @@ class Repl:
 
 
 def complete_input(lines: list[str]) -> bool:
-    """Whether the text typed so far is a whole input (balanced, not ending in ',' or ':-')."""
+    """Whether the text typed so far is a whole input: a :command, or a goal or rule with balanced
+    parentheses that does not end in ',' or ':-'."""
     text = "\n".join(lines).strip()
-    return text.count("(") <= text.count(")") and not text.endswith((",", ":-", ";"))
+    return text.startswith(":") or text.count("(") <= text.count(")") and not text.endswith((",", ":-", ";"))
 
 
 def run_repl(session: Session, analysis: Analysis) -> None:
