@@ -132,11 +132,16 @@ class Session:
         start = time.perf_counter()
         body = goal.strip().rstrip(".").strip()
         variables = _variables(body)
-        self.parts += 1
-        head = f"__q{self.parts}"
-        text = f"{head}({', '.join(variables)}) :- {body}." if variables else f"{head} :- {body}."
-        self._add(Program(text, "<query>", 1))
-        atoms = self.ctl.symbolic_atoms.by_signature(head, len(variables))
+        whole = _whole_relation(body)
+        if whole is not None and whole in self._known():  # one relation, all columns: read it as it is
+            self._finish_open()
+            atoms = self.ctl.symbolic_atoms.by_signature(*whole)
+        else:
+            self.parts += 1
+            head = f"__q{self.parts}"
+            text = f"{head}({', '.join(variables)}) :- {body}." if variables else f"{head} :- {body}."
+            self._add(Program(text, "<query>", 1))
+            atoms = self.ctl.symbolic_atoms.by_signature(head, len(variables))
         self._open = Result(variables, (tuple(map(self.store.from_term, atom.symbol.arguments)) for atom in atoms),
                             time.perf_counter() - start)
         return self._open
@@ -167,7 +172,7 @@ class Session:
         self.ctl.add(part, [], program.text)
         self.ctl.ground([(part, [])])
         self.extra.append(program)
-        self._known_cache = None
+        self._known_cache = self._known() | set(heads)
 
     def _known(self) -> set[Signature]:
         if self._known_cache is None:
@@ -258,6 +263,20 @@ def _rules(program: Program) -> list[clingo.ast.AST]:
 def _is_positive_atom(literal: clingo.ast.AST) -> bool:
     return literal.ast_type == clingo.ast.ASTType.Literal and literal.sign == clingo.ast.Sign.NoSign and \
         literal.atom.ast_type == clingo.ast.ASTType.SymbolicAtom
+
+
+def _whole_relation(body: str) -> Signature | None:
+    """The relation of a goal that is a single atom with a distinct named variable in every column."""
+    rules: list[clingo.ast.AST] = []
+    clingo.ast.parse_string(f"__v :- {body}.", lambda s: rules.append(s) if s.ast_type == clingo.ast.ASTType.Rule
+                            else None, logger=lambda _code, _message: None)
+    if len(rules) != 1 or len(rules[0].body) != 1 or not _is_positive_atom(rules[0].body[0]):
+        return None
+    symbol = rules[0].body[0].atom.symbol
+    if symbol.ast_type != clingo.ast.ASTType.Function or symbol.external:
+        return None
+    names = [a.name for a in symbol.arguments if a.ast_type == clingo.ast.ASTType.Variable and a.name[0] != "_"]
+    return (symbol.name, len(names)) if len(names) == len(set(names)) == len(symbol.arguments) else None
 
 
 def _variables(body: str) -> list[str]:

@@ -12,7 +12,6 @@ import clingo.ast
 from archlog.facts.schema import RELATIONS
 from archlog.facts.store import Cell, FactStore
 from archlog.rules.ruleset import Program, Rule, RuleError, RuleSet
-from archlog.values import Unknown
 
 SUBJECT_KINDS = {"node": "nodes", "topic": "topics", "service": "services", "action": "actions",
                  "param": "parameters", "type": "types"}
