@@ -14,7 +14,8 @@ import clingo.ast
 from archlog.config import Config
 from archlog.facts.schema import BY_NAME
 from archlog.facts.store import Cell, FactStore
-from archlog.rules.engine import Engine, Finding, Signature, _parse, _safety
+from archlog.rules.engine import Engine, Finding, Signature, _parse, _safety, rules_of, unknown_function, unknown_relation
+from archlog.rules.functions import FUNCTIONS, NAMES
 from archlog.rules.ruleset import Program, RuleError, RuleSet, parse_rule_file
 from archlog.values import order
 
@@ -158,11 +159,14 @@ class Session:
     def _add(self, program: Program) -> None:
         """Check one new program (syntax, relations, safety) and ground it on top of the rest."""
         try:
-            heads, body = _parse(program)
-            known = self._known() | set(heads)
-            missing = [f"{n}/{a}" for (n, a), _pos in body if (n, a) not in known]
+            parsed = _parse(program)
+            known = self._known() | set(parsed.heads)
+            missing = [sig for sig, _pos in parsed.body if sig not in known]
             if missing:
-                raise QueryError(f"unknown relation {missing[0]} (see :relations)")
+                raise QueryError(unknown_relation(*missing[0], known))
+            for name, _pos in parsed.functions:
+                if name not in NAMES:
+                    raise QueryError(unknown_function(name))
             _safety(program, "".join(f"#defined {n}/{a}. " for n, a in sorted(known)) + "\n")
         except RuleError as exc:
             raise QueryError(f"{exc.message} (line {exc.line}, column {exc.column})") from None
@@ -170,9 +174,9 @@ class Session:
         self.parts += 1
         part = f"p{self.parts}"
         self.ctl.add(part, [], program.text)
-        self.ctl.ground([(part, [])])
+        self.ctl.ground([(part, [])], context=FUNCTIONS)
         self.extra.append(program)
-        self._known_cache = self._known() | set(heads)
+        self._known_cache = self._known() | set(parsed.heads)
 
     def _known(self) -> set[Signature]:
         if self._known_cache is None:
@@ -189,7 +193,7 @@ class Session:
         if depth == 0:
             return node
         for program in self.ruleset.programs + self.extra:
-            for rule in _rules(program):
+            for rule in rules_of(program):
                 if rule.head.ast_type != clingo.ast.ASTType.Literal:
                     continue
                 head = rule.head.atom.symbol
@@ -228,7 +232,7 @@ class Session:
         self._finish_open()
         try:
             self.ctl.add(f"w{self.parts}", [], text)
-            self.ctl.ground([(f"w{self.parts}", [])])
+            self.ctl.ground([(f"w{self.parts}", [])], context=FUNCTIONS)
         except RuntimeError:
             return None
         solution = next(iter(self.ctl.symbolic_atoms.by_signature(head, len(variables))), None)
@@ -252,12 +256,6 @@ class Session:
             if arg.type == clingo.SymbolType.String and (found := self.store.location(arg.string)):
                 return found
         return None
-
-
-def _rules(program: Program) -> list[clingo.ast.AST]:
-    found: list[clingo.ast.AST] = []
-    clingo.ast.parse_string(program.text, lambda s: found.append(s) if s.ast_type == clingo.ast.ASTType.Rule else None)
-    return found
 
 
 def _is_positive_atom(literal: clingo.ast.AST) -> bool:
