@@ -35,11 +35,11 @@ Commands:
   :rules                 rules with severity and whether they are enabled
   :enable ID | :disable ID
   :findings              findings of the enabled rules, numbered
-  :explain N | ATOM      why finding N (or a derived tuple) holds; add --json for JSON
+  :explain N | ATOM      why finding N (or an atom, e.g. subscribed("/scan")) holds; add --json for JSON
   :load FILE             load a rule file
   :time                  show query timing on/off
   :export FILE           write the last result (.csv or .json)
-  :help | :quit"""
+  :help | :quit          (Ctrl-C cancels the line or stops a listing; Ctrl-D ends the session)"""
 
 
 class Repl:

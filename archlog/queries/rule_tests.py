@@ -20,6 +20,7 @@ from rich.markup import escape
 
 from archlog.analysis import analyse
 from archlog.facts.compose import add_near_names
+from archlog.facts.namespaces import ADDED, add_namespaces
 from archlog.facts.schema import BY_NAME
 from archlog.facts.store import Cell, FactStore
 from archlog.queries.session import Session
@@ -117,6 +118,8 @@ def load_facts(path: Path) -> FactStore:
                 raise FixtureError(path, line, f"{relation} row {number}: expected {len(columns)} strings or integers "
                                    f"({', '.join(c.name for c in columns)}), got {json.dumps(row)}")
             store.add(relation, *(_cell(c, path) for c in row))
+    if not set(ADDED) & set(data):
+        add_namespaces(store)
     if "near_name" not in data:
         add_near_names(store, 0.5)
     return store
