@@ -295,8 +295,7 @@ _UNSAFE = re.compile(r"<(?:block|string)>:(\d+):(\d+)(?:-\d+(?::\d+)?)?: note: '
 
 def _error(program: Program, messages: list[str], line_offset: int = 0) -> RuleError:
     """clingo's complaint in archlog's words, at the rule file's line and column."""
-    unsafe = [_UNSAFE.search(m) for m in messages]
-    notes = [m for m in unsafe if m]
+    notes = [note for m in messages for note in _UNSAFE.finditer(m)]
     if notes:
         line, column = int(notes[0].group(1)), int(notes[0].group(2))
         variables = ", ".join(dict.fromkeys(m.group(3) for m in notes))
