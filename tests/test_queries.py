@@ -177,3 +177,12 @@ def test_test_rules_reports_bad_fixtures_and_runs_only_the_given_rules(tmp_path:
     only = archlog("test-rules", tmp_path, "--only", "--update")
     assert "(1 finding)" in only.stdout
     assert (cases / "mine" / "findings.expected").read_text() == "MY1 a.py:3 /t: /t is published once\n"
+
+
+def test_a_rule_defined_in_a_session_names_a_located_column() -> None:
+    session = Session(store_with_unknowns(), load_rules([]))
+    header = ('%! id: MY2\n%! name: n\n%! severity: note\n%! summary: s\n%! finding: reads(node, port)\n'
+              '%! location: {}\n%! message: "{{node}}"\n')
+    with pytest.raises(QueryError, match=r"location column 'node' holds a name, .*\(line 6\)"):
+        session.define(header.format("node") + "reads(N, P) :- param_read(P, N, _, _).\n")
+    assert session.define(header.format("port").replace("MY2", "MY3") + "reads(N, P) :- param_read(P, N, _, _).\n")

@@ -14,7 +14,18 @@ import clingo.ast
 from archlog.config import Config
 from archlog.facts.schema import BY_NAME
 from archlog.facts.store import Cell, FactStore
-from archlog.rules.engine import Engine, Finding, Signature, _parse, _safety, rules_of, unknown_function, unknown_relation
+from archlog.rules.engine import (
+    Engine,
+    Finding,
+    Signature,
+    _parse,
+    _safety,
+    check_locations,
+    column_types,
+    rules_of,
+    unknown_function,
+    unknown_relation,
+)
 from archlog.rules.functions import FUNCTIONS, NAMES
 from archlog.rules.ruleset import Program, RuleError, RuleSet, parse_rule_file
 from archlog.values import order
@@ -152,6 +163,12 @@ class Session:
         rules, programs = parse_rule_file(text, file)
         for program in programs:
             self._add(program)
+        types = column_types([rule for p in self.ruleset.programs + self.extra for rule in rules_of(p)])
+        for rule in rules:
+            try:
+                check_locations(rule, types.get((rule.predicate, len(rule.columns)), []))
+            except RuleError as exc:
+                raise QueryError(f"{exc.message} (line {exc.line})") from None
         self.ruleset.rules += rules
         self.ruleset.programs += programs
         return sorted({name for p in programs for name, _a in _parse(p)[0]})

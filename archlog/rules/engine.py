@@ -151,7 +151,7 @@ def check(ruleset: RuleSet) -> str:
             raise RuleError(rule.file, rule.lines.get("finding", rule.line), f"no rule derives the finding "
                             f"{rule.predicate}/{len(rule.columns)} (hint: the `finding:` header must name the head of "
                             "a rule below it, with as many columns)")
-        _check_locations(rule, types.get((rule.predicate, len(rule.columns)), []))
+        check_locations(rule, types.get((rule.predicate, len(rule.columns)), []))
     return declared
 
 
@@ -215,7 +215,7 @@ def _variable_types(body: list[clingo.ast.AST], types: dict[Signature, list[str 
     return found
 
 
-def _check_locations(rule: Rule, types: list[str | None]) -> None:
+def check_locations(rule: Rule, types: list[str | None]) -> None:
     """A finding's location (and related) columns must hold elements with a location: ids."""
     ids = [c for c, t in zip(rule.columns, types) if t == "id"]
     for key, columns in (("location", [rule.location]), ("related", rule.related)):
