@@ -235,20 +235,19 @@ class Session:
     def _instantiate(self, rule: clingo.ast.AST, atom: clingo.Symbol) -> list[clingo.Symbol | Explanation] | None:
         """One grounding of `rule` whose head is `atom`: its positive body atoms, and its other
         literals (`not` conditions, comparisons, aggregates) as text with the values filled in."""
-        positive, literals, variables = [], [], _variables(str(rule.head))
-        for index, literal in enumerate(rule.body):
+        literals = [_name_anonymous(str(lit.atom), i) if _is_positive_atom(lit) else str(lit)
+                    for i, lit in enumerate(rule.body)]
+        variables = _variables(str(rule.head))
+        for literal, text in zip(rule.body, literals):
             if _is_positive_atom(literal):
-                text = _name_anonymous(str(literal.atom), index)
-                positive.append(text)
                 variables += [v for v in _variables(text) if v not in variables]
-            literals.append(text if _is_positive_atom(literal) else str(literal))
         bindings = [f"{arg} = {value}" for arg, value in zip(rule.head.atom.symbol.arguments, atom.arguments)]
         self.parts += 1
         head = f"__why{self.parts}"
-        text = f"{head}({', '.join(variables)}) :- {', '.join(literals + bindings)}."
+        program = f"{head}({', '.join(variables)}) :- {', '.join(literals + bindings)}."
         self._finish_open()
         try:
-            self.ctl.add(f"w{self.parts}", [], text)
+            self.ctl.add(f"w{self.parts}", [], program)
             self.ctl.ground([(f"w{self.parts}", [])], context=FUNCTIONS)
         except RuntimeError:
             return None
@@ -258,14 +257,13 @@ class Session:
         values = dict(zip(variables, solution.symbol.arguments))
         shown = {name: self.show(value) for name, value in values.items()}
         body: list[clingo.Symbol | Explanation] = []
-        for literal in rule.body:
+        for literal, text in zip(rule.body, literals):
             if _is_positive_atom(literal):
-                body.append(clingo.parse_term(_substitute(positive.pop(0), values)))
+                body.append(clingo.parse_term(_substitute(text, values)))
             else:
-                kind = "absent" if literal.ast_type == clingo.ast.ASTType.Literal and \
-                    literal.sign != clingo.ast.Sign.NoSign and \
-                    literal.atom.ast_type == clingo.ast.ASTType.SymbolicAtom else "condition"
-                body.append(Explanation(_substitute(str(literal), shown), kind))
+                absent = literal.ast_type == clingo.ast.ASTType.Literal and \
+                    literal.atom.ast_type == clingo.ast.ASTType.SymbolicAtom
+                body.append(Explanation(_substitute(text, shown), "absent" if absent else "condition"))
         return body
 
     def _location(self, atom: clingo.Symbol) -> tuple[str, int, int] | None:
