@@ -18,7 +18,6 @@ from archlog.config import Config, find_config, load_config, workspace_config
 from archlog.diagnostics import SEVERITIES
 from archlog.errors import ConfigError
 from archlog.queries.session import QueryError, Session
-from archlog.queries.table import print_result
 from archlog.reports.codequality import to_codequality
 from archlog.reports.json_report import to_json
 from archlog.reports.report import Report, coverage
@@ -185,6 +184,8 @@ def query(paths, launches, args, models, rule_paths, config_path, profile, near_
           fmt) -> None:
     """Print every binding of the variables of GOAL (the last argument: a conjunction of literals such
     as 'publisher(P, N, T, _), not subscribed(T)') over the facts and derived relations."""
+    from archlog.queries.table import print_result
+
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env)
     try:

@@ -80,10 +80,11 @@ def test_functions_on_names() -> None:
     assert value('@prefix("/a", 3)') == [] and value('@prefix(3, 1)') == []  # out of range, not a name
     assert value('@starts_with("/robot1/scan", "/robot")') == ["1"] and value('@ends_with("/a/scan", "x")') == ["0"]
     assert value('@lower("/Robot")') == ["/robot"] and value("@parent(unknown(1))") == []
-    with pytest.raises(QueryError, match="unknown function @segment .*did you mean @segments"):
-        session.query('X = @segment("/a")')
-    with pytest.raises(QueryError, match="did you mean publisher/4"):
-        session.query("publishr(P, N, T, Ty)")
+    misspelled = {'X = @segment("/a")': "unknown function @segment .*did you mean @segments",
+                  "publishr(P, N, T, Ty)": "unknown relation publishr/4 .*did you mean publisher/4"}
+    for goal, message in misspelled.items():
+        with pytest.raises(QueryError, match=message):
+            session.query(goal)
 
 
 def test_namespace_relations() -> None:

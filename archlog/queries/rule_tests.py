@@ -58,7 +58,7 @@ def run_rule_tests(folders: list[Path], update: bool, console: Console, only: bo
             got = describe(found)
             expected_file = case / EXPECTED
             expected = expected_file.read_text() if expected_file.is_file() else ""
-            if update and got != expected:
+            if update and (got != expected or not expected_file.is_file()):
                 expected_file.write_text(got)
                 written += 1
                 console.print(f"wrote {escape(str(expected_file))} ({plural(len(found), 'finding')})", highlight=False)
