@@ -7,6 +7,7 @@ import re
 import time
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import clingo
 import clingo.ast
@@ -27,7 +28,7 @@ from archlog.rules.engine import (
     unknown_relation,
 )
 from archlog.rules.functions import FUNCTIONS, NAMES
-from archlog.rules.ruleset import Program, RuleError, RuleSet, parse_rule_file
+from archlog.rules.ruleset import BUILTIN, Program, RuleError, RuleSet, parse_rule_file
 from archlog.values import order
 
 
@@ -219,7 +220,7 @@ class Session:
                     continue
                 body = self._instantiate(rule, atom)
                 if body is not None:
-                    node.rule = f"{program.file}:{program.first_line + rule.location.begin.line - 1}"
+                    node.rule = f"{_shown(program.file)}:{program.first_line + rule.location.begin.line - 1}"
                     node.children = [self.explain(b, depth - 1) if isinstance(b, clingo.Symbol) else b for b in body]
                     return node
         return node
@@ -271,6 +272,12 @@ class Session:
             if arg.type == clingo.SymbolType.String and (found := self.store.location(arg.string)):
                 return found
         return None
+
+
+def _shown(file: str) -> str:
+    """A shipped rule file relative to the folder holding the archlog package; others as given."""
+    path = Path(file)
+    return path.relative_to(BUILTIN.parents[2]).as_posix() if path.is_relative_to(BUILTIN) else file
 
 
 def _is_positive_atom(literal: clingo.ast.AST) -> bool:
