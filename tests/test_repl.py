@@ -97,5 +97,7 @@ def test_explain_parses_atoms_and_shows_not_conditions(repl: pexpect.spawn) -> N
     text = screen(repl)
     assert 'not published("/rover/base_waypoint")  (none exists)' in text
     assert re.search(r'dangling_sub\(.*\)  \(by .*prelude\.lp:\d+\)', text)  # derived, not labelled a fact
+    repl.sendline(':explain subscribed("/nowhere")')
+    repl.expect(r'subscribed\("/nowhere"\)  \(does not hold\)')
     repl.sendline(":explain subscribed(")
     repl.expect("explain a finding number or an atom")

@@ -74,8 +74,8 @@ class Result:
 @dataclass
 class Explanation:
     """Why an atom holds: the rule that derived it and the literals of that rule's body, or that it
-    is a fact. `kind` is fact, derived (by `rule`), absent (a `not` condition: no such atom) or
-    condition (a comparison or aggregate that held)."""
+    is a fact. `kind` is fact, derived (by `rule`), absent (a `not` condition: no such atom),
+    condition (a comparison or aggregate that held) or false (the atom does not hold)."""
 
     atom: str
     kind: str = "fact"
@@ -91,7 +91,7 @@ class Explanation:
 
     def lines(self, indent: str = "") -> list[str]:
         where = f"  [{self.location[0]}:{self.location[1]}]" if self.location else ""
-        how = {"fact": "  (fact)", "absent": "  (none exists)", "condition": "  (holds)",
+        how = {"fact": "  (fact)", "absent": "  (none exists)", "condition": "  (holds)", "false": "  (does not hold)",
                "derived": f"  (by {self.rule})" if self.rule else "  (derived; reasons not shown)"}[self.kind]
         out = [f"{indent}{self.atom}{how}{where}"]
         for child in self.children:
@@ -205,6 +205,8 @@ class Session:
     # -- explanations ---------------------------------------------------------------------
     def explain(self, atom: clingo.Symbol, depth: int = 4) -> Explanation:
         """The rule that derives `atom` and, recursively, what its body used (facts at the leaves)."""
+        if self.ctl.symbolic_atoms[atom] is None:
+            return Explanation(self.show(atom), "false")
         if atom.name in BY_NAME:
             return Explanation(self.show(atom), location=self._location(atom))
         node = Explanation(self.show(atom), "derived", location=self._location(atom))
