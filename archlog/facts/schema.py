@@ -132,7 +132,8 @@ RELATIONS: tuple[Relation, ...] = (
          ("id", "id", "port or element id"), ("file", "str", "file, relative to the first indexed path when inside it"),
          ("line", "int", "1-based line"), ("column", "int", "1-based column, 0 when unknown")),
     _rel("provenance", "unknown_value", "A value static analysis could not know, and where it was met.",
-         ("value", "id", "the unknown term unknown(N) used in other relations"), ("expr", "str", "the expression"),
+         ("value", "id", "the unknown value: the term unknown(N) other relations use in rules, written "
+          "?(expr) in output"), ("expr", "str", "the expression"),
          ("file", "str", "file"), ("line", "int", "line")),
     _rel("derived", "near_name",
          "Two names used in the system whose segment distance is below the near-miss threshold.",
