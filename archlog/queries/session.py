@@ -266,8 +266,16 @@ class Session:
             else:
                 absent = literal.ast_type == clingo.ast.ASTType.Literal and \
                     literal.atom.ast_type == clingo.ast.ASTType.SymbolicAtom
-                body.append(Explanation(_substitute(text, shown), "absent" if absent else "condition"))
+                shown_text = self._absent(literal, values) if absent else None
+                body.append(Explanation(shown_text or _substitute(text, shown), "absent" if absent else "condition"))
         return body
+
+    def _absent(self, literal: clingo.ast.AST, values: dict[str, clingo.Symbol]) -> str | None:
+        """`not ATOM` written as atoms are, when the atom has no `_` left (else None)."""
+        try:
+            return "not " + self.show(clingo.parse_term(_substitute(str(literal.atom), values), lambda _c, _m: None))
+        except RuntimeError:
+            return None
 
     def _location(self, atom: clingo.Symbol) -> tuple[str, int, int] | None:
         for arg in atom.arguments:
