@@ -10,7 +10,10 @@ from archlog import budget
 
 @dataclass(frozen=True)
 class Unknown:
-    """A value static analysis cannot know; records the expression and where it was met."""
+    """A value static analysis cannot know; records the expression and where it was met.
+
+    Written `?(expr)` wherever archlog prints or writes a value (tables, CSV, JSON, messages,
+    explanations); in rules it is the term `unknown(N)` that `unknown_value` describes."""
 
     expr: str
     file: str
@@ -18,6 +21,13 @@ class Unknown:
 
     def __str__(self) -> str:
         return f"?({self.expr})"
+
+
+def order(cell: str | int | Unknown) -> tuple[int, str | int, str, int]:
+    """A sort key for any cell: numbers, then strings, then unknowns (by expression, file, line)."""
+    if isinstance(cell, Unknown):
+        return (2, cell.expr, cell.file, cell.line)
+    return (0, cell, "", 0) if isinstance(cell, int) else (1, cell, "", 0)
 
 
 class FullNodeName(str):

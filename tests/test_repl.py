@@ -66,3 +66,38 @@ def test_queries_commands_and_explanations(repl: pexpect.spawn, tmp_path: Path) 
     repl.expect("0 findings")
     repl.sendline("nope(X)")
     repl.expect("unknown relation nope/1")
+
+
+def test_ctrl_c_cancels_the_line_or_the_query_and_keeps_the_session(repl: pexpect.spawn) -> None:
+    repl.sendline("fan_in(T, C) :- subscribed(T), C = #count { N : publisher(_, N, T, _) }.")
+    repl.expect("defined: fan_in")
+    repl.send("subscriber(_, N,")  # a partial line, then Ctrl-C
+    repl.sendintr()
+    repl.expect("interrupted")
+    repl.sendline("subscriber(_, N, T, _),")  # a partial input over two lines, then Ctrl-C
+    repl.expect(r"\.\.\.>")
+    repl.sendintr()
+    repl.expect("interrupted")
+    repl.sendline("location(A, _, _, _), location(B, _, _, _), location(C, _, _, _), location(D, _, _, _)")
+    repl.expect(r"p\d{5}")
+    repl.sendintr()
+    repl.expect("interrupted")
+    repl.sendline("fan_in(T, C)")  # the rule defined before survives, and so does the grounded state
+    repl.expect(r"(\d+) results?")
+    assert "/rover/base_waypoint" in screen(repl) and "/rover/odom" in screen(repl)
+
+
+def test_explain_parses_atoms_and_shows_not_conditions(repl: pexpect.spawn) -> None:
+    repl.sendline(':explain subscribed("/rover/odom")')
+    repl.expect(r"subscriber\(.*\(fact\)")
+    text = screen(repl)
+    assert 'subscribed("/rover/odom")  (by ' in text and "prelude.lp" in text
+    repl.sendline(':explain dangling_sub("p00014", "/rover/pure_pursuit", "/rover/base_waypoint", "nav_msgs/Path")')
+    repl.expect(r"optional_input.*\(none exists\)")
+    text = screen(repl)
+    assert 'not published("/rover/base_waypoint")  (none exists)' in text
+    assert re.search(r'dangling_sub\(.*\)  \(by .*prelude\.lp:\d+\)', text)  # derived, not labelled a fact
+    repl.sendline(':explain subscribed("/nowhere")')
+    repl.expect(r'subscribed\("/nowhere"\)  \(does not hold\)')
+    repl.sendline(":explain subscribed(")
+    repl.expect("explain a finding number or an atom")

@@ -68,10 +68,10 @@ def test_helper_relations_stay_in_their_rule_file() -> None:
     defined: dict[tuple[str, int], set[str]] = {}
     used: dict[tuple[str, int], set[str]] = {}
     for program in ruleset.programs:
-        heads, body = _parse(program)
-        for sig in heads:
+        parsed = _parse(program)
+        for sig in parsed.heads:
             defined.setdefault(sig, set()).add(Path(program.file).name)
-        for sig, _pos in body:
+        for sig, _pos in parsed.body:
             used.setdefault(sig, set()).add(Path(program.file).name)
     shared = {sig: sorted(used.get(sig, set()) - files) for sig, files in defined.items()
               if "prelude.lp" not in files and sig not in findings and used.get(sig, set()) - files}

@@ -85,4 +85,4 @@ def test_query_command_formats_and_errors() -> None:
     as_csv = archlog("query", BUGGY, *LAUNCH, "queue_size(P, S)", "--format", "csv").stdout
     assert as_csv.startswith("P,S\n") and "unbounded" in as_csv
     bad = archlog("query", BUGGY, *LAUNCH, "publisher(P, N, T)")
-    assert bad.returncode == 2 and "unknown relation publisher/3" in bad.stderr
+    assert bad.returncode == 2 and "publisher takes 4 columns, not 3" in bad.stderr

@@ -10,6 +10,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary, Port, Site
 from archlog.facts.behavior import Sites, add_behavior
+from archlog.facts.namespaces import add_namespaces
 from archlog.facts.similarity import near_pairs, too_long
 from archlog.facts.store import FactStore
 from archlog.system.link import System
@@ -55,6 +56,7 @@ def compose(system: System, diagnostics: DiagnosticSink, near_threshold: float =
             store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config)
     _unknown_port_names(store, diagnostics)
+    add_namespaces(store)
     add_near_names(store, near_threshold, diagnostics)
     return store
 

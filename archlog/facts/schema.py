@@ -2,7 +2,8 @@
 
 Column types: `id` (a port or element id such as "p3" or "e7"), `name` (a resolved ROS graph
 name), `type` (a message type "pkg/Name"), `str`, `int`. Any `name`, `type` or `str` column may
-hold an unknown value instead: a term `unknown(N)` described by the `unknown_value` relation.
+hold an unknown value instead: a term `unknown(N)` described by the `unknown_value` relation, and
+written `?(expr)` wherever archlog prints or writes values.
 """
 
 from __future__ import annotations
@@ -69,6 +70,15 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("configuration", "param", "A parameter value set by the configuration.",
          ("param", "name", "resolved parameter name"), ("value", "str", "value as text"),
          ("elem", "id", "the element that sets it")),
+    _rel("configuration", "node_namespace", "The namespace a node instance lives in.",
+         _NODE, ("ns", "name", "its namespace: /robot1 for /robot1/driver, / for /driver")),
+    _rel("configuration", "name_namespace", "The namespace part of every resolved name the facts use (nodes, "
+         "topics, services, actions, parameters, remaps).",
+         ("name", "name", "a resolved name"), ("ns", "name", "its namespace: /a/b for /a/b/c, / for /c")),
+    _rel("configuration", "param_scope", "Whose parameter a parameter name is: a node's private parameter (~name) "
+         "or a global one (any other namespace).",
+         ("param", "name", "a parameter set or used"),
+         ("scope", "name", "the node whose private namespace holds it (the innermost one), or \"global\"")),
     _rel("ports", "publisher", "A node instance publishes a topic.",
          _PORT, _NODE, ("topic", "name", "resolved, remapped topic"), ("type", "type", "message type")),
     _rel("ports", "subscriber", "A node instance subscribes to a topic.",
@@ -122,7 +132,8 @@ RELATIONS: tuple[Relation, ...] = (
          ("id", "id", "port or element id"), ("file", "str", "file, relative to the first indexed path when inside it"),
          ("line", "int", "1-based line"), ("column", "int", "1-based column, 0 when unknown")),
     _rel("provenance", "unknown_value", "A value static analysis could not know, and where it was met.",
-         ("value", "id", "the unknown term unknown(N) used in other relations"), ("expr", "str", "the expression"),
+         ("value", "id", "the unknown value: the term unknown(N) other relations use in rules, written "
+          "?(expr) in output"), ("expr", "str", "the expression"),
          ("file", "str", "file"), ("line", "int", "line")),
     _rel("derived", "near_name",
          "Two names used in the system whose segment distance is below the near-miss threshold.",

@@ -76,11 +76,10 @@ class FactStore:
             return clingo.Number(cell)
         return clingo.String(cell)
 
-    def plain(self, cell: Cell) -> str | int | dict:
-        """A JSON-friendly form: unknowns become {"unknown": expr, "file", "line"}."""
-        if isinstance(cell, Unknown):
-            return {"unknown": cell.expr, "file": cell.file, "line": cell.line}
-        return cell
+    @staticmethod
+    def plain(cell: Cell) -> str | int:
+        """A CSV- and JSON-friendly form: an unknown is written `?(expr)` (`unknown_value` has its place)."""
+        return str(cell) if isinstance(cell, Unknown) else cell
 
     def symbols(self) -> list[clingo.Symbol]:
         return [
@@ -102,7 +101,7 @@ class FactStore:
                     writer = csv.writer(fh)
                     writer.writerow(header)
                     for row in rows:
-                        writer.writerow([f"?{self._unknowns[c]}" if isinstance(c, Unknown) else c for c in row])
+                        writer.writerow(map(self.plain, row))
             else:
                 data = [dict(zip(header, map(self.plain, row))) for row in rows]
                 path.write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")

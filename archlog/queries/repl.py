@@ -6,6 +6,7 @@ import csv
 import json
 import os
 import shlex
+import time
 from pathlib import Path
 
 import clingo
@@ -15,12 +16,12 @@ from prompt_toolkit.history import FileHistory
 from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
-from rich.text import Text
 
 from archlog.analysis import Analysis
 from archlog.extract.cpp.cache import cache_dir
 from archlog.facts.schema import BY_NAME, DERIVED_BY_NAME
 from archlog.queries.session import QueryError, Result, Session
+from archlog.queries.table import plural, write_table
 from archlog.rules.engine import Finding, render
 from archlog.rules.ruleset import RuleError
 
@@ -34,11 +35,11 @@ Commands:
   :rules                 rules with severity and whether they are enabled
   :enable ID | :disable ID
   :findings              findings of the enabled rules, numbered
-  :explain N | ATOM      why finding N (or a derived tuple) holds; add --json for JSON
+  :explain N | ATOM      why finding N (or an atom, e.g. subscribed("/scan")) holds; add --json for JSON
   :load FILE             load a rule file
   :time                  show query timing on/off
   :export FILE           write the last result (.csv or .json)
-  :help | :quit"""
+  :help | :quit          (Ctrl-C cancels the line or stops a listing; Ctrl-D ends the session)"""
 
 
 class Repl:
@@ -76,8 +77,12 @@ class Repl:
         return True
 
     def command(self, text: str) -> bool:
-        words = shlex.split(text)
-        name, args = words[0], words[1:]
+        name, _, rest = text.partition(" ")
+        try:  # an atom to explain keeps its quotes
+            args = rest.split() if name == ":explain" else shlex.split(rest)
+        except ValueError as exc:
+            self.console.print(f"[red]error:[/] {escape(str(exc))}")
+            return True
         if name in (":quit", ":q", ":exit"):
             return False
         handler = getattr(self, "cmd_" + name[1:], None)
@@ -139,13 +144,13 @@ class Repl:
                 self.console.print(f"no finding {target} (:findings lists them)")
                 return
             finding = self.numbered[index]
-            terms = [self.session.store.term(v) for v in finding.values.values()]
+            terms = [self.session.store.term(finding.values[column]) for column in finding.rule.columns]
             atom = clingo.Function(finding.rule.predicate, terms)
         else:
             try:
                 atom = clingo.parse_term(target.rstrip("."))
             except RuntimeError:
-                self.console.print("explain a finding number or an atom such as dangling_sub(\"p00003\", ...)")
+                self.console.print('explain a finding number or an atom such as subscribed("/scan")', markup=False)
                 return
         tree = self.session.explain(atom)
         if as_json:
@@ -180,22 +185,27 @@ class Repl:
         self.console.print(f"wrote {len(rows)} rows to {path}")
 
     def show(self, result: Result) -> None:
+        """Rows as they are read, a page at a time (Ctrl-C stops the listing, not the session)."""
         self.last = result
-        table = Table(*result.columns) if result.columns else None
-        for row in result.rows:
-            if table is not None:
-                table.add_row(*(Text(render(cell)) for cell in row))
-        if table is not None and result.rows:
-            self.console.print(table)
-        summary = f"{len(result.rows)} result{'s' if len(result.rows) != 1 else ''}" if result.columns else \
-            ("true" if result.rows else "false")
-        self.console.print(summary + (f" in {result.seconds * 1000:.1f} ms" if self.timing else ""))
+        start = time.perf_counter()
+        if result.columns:
+            try:
+                summary = plural(write_table(result.columns, result, self.console.file))
+            except KeyboardInterrupt:
+                self.console.print("interrupted")
+                return
+        else:
+            summary = "true" if result.rows else "false"
+        took = result.seconds + time.perf_counter() - start
+        self.console.print(summary + (f" in {took * 1000:.1f} ms (grounded in {result.seconds * 1000:.1f} ms)"
+                                      if self.timing else ""))
 
 
 def complete_input(lines: list[str]) -> bool:
-    """Whether the text typed so far is a whole input (balanced, not ending in ',' or ':-')."""
+    """Whether the text typed so far is a whole input: a :command, or a goal or rule with balanced
+    parentheses that does not end in ',' or ':-'."""
     text = "\n".join(lines).strip()
-    return text.count("(") <= text.count(")") and not text.endswith((",", ":-", ";"))
+    return text.startswith(":") or text.count("(") <= text.count(")") and not text.endswith((",", ":-", ";"))
 
 
 def run_repl(session: Session, analysis: Analysis) -> None:
@@ -214,7 +224,9 @@ def run_repl(session: Session, analysis: Analysis) -> None:
                 lines.append(prompt.prompt("archlog> " if not lines else "     ...> "))
                 if complete_input(lines):
                     break
-        except (EOFError, KeyboardInterrupt):
-            break
-        if not repl.handle("\n".join(lines)):
+            if not repl.handle("\n".join(lines)):
+                break
+        except KeyboardInterrupt:  # Ctrl-C cancels the line being typed or the running input
+            console.print("interrupted (Ctrl-D or :quit ends the session)")
+        except EOFError:
             break

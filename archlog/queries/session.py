@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import re
 import time
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import clingo
 import clingo.ast
@@ -13,39 +15,84 @@ import clingo.ast
 from archlog.config import Config
 from archlog.facts.schema import BY_NAME
 from archlog.facts.store import Cell, FactStore
-from archlog.rules.engine import Engine, Finding, Signature, _parse, _safety
-from archlog.rules.ruleset import Program, RuleError, RuleSet, parse_rule_file
+from archlog.rules.engine import (
+    Engine,
+    Finding,
+    Signature,
+    _parse,
+    _safety,
+    check_locations,
+    column_types,
+    rules_of,
+    unknown_function,
+    unknown_relation,
+)
+from archlog.rules.functions import FUNCTIONS, NAMES
+from archlog.rules.ruleset import BUILTIN, Program, RuleError, RuleSet, parse_rule_file
+from archlog.values import order
 
 
 class QueryError(Exception):
     """A query or an on-the-fly rule that clingo rejects, or that names an unknown relation."""
 
 
-@dataclass
 class Result:
-    columns: list[str]
-    rows: list[tuple[Cell, ...]]
-    seconds: float = 0.0
+    """The bindings of a query's variables, converted as they are read: the first rows can be
+    shown before the last are converted. Iterating again replays the rows read so far."""
+
+    def __init__(self, columns: list[str], source: Iterable[tuple[Cell, ...]], seconds: float = 0.0) -> None:
+        self.columns, self.seconds = columns, seconds  # seconds: until the first row could be read
+        self._source: Iterator[tuple[Cell, ...]] = iter(source)
+        self._read: list[tuple[Cell, ...]] = []
+
+    def __iter__(self) -> Iterator[tuple[Cell, ...]]:
+        index = 0
+        while index < len(self._read) or self._more():
+            yield self._read[index]
+            index += 1
+
+    def _more(self) -> bool:
+        row = next(self._source, None)
+        if row is not None:
+            self._read.append(row)
+        return row is not None
+
+    @property
+    def rows(self) -> list[tuple[Cell, ...]]:
+        """Every row, in the order clingo grounded them."""
+        return self.read_all()
+
+    def read_all(self) -> list[tuple[Cell, ...]]:
+        while self._more():
+            pass
+        return self._read
+
+    def sorted_rows(self) -> list[tuple[Cell, ...]]:
+        return sorted(self.rows, key=lambda row: tuple(map(order, row)))
 
 
 @dataclass
 class Explanation:
-    """Why an atom holds: the rule that derived it and the atoms of that rule's body."""
+    """Why an atom holds: the rule that derived it and the literals of that rule's body, or that it
+    is a fact. `kind` is fact, derived (by `rule`), absent (a `not` condition: no such atom),
+    condition (a comparison or aggregate that held) or false (the atom does not hold)."""
 
     atom: str
+    kind: str = "fact"
     rule: str | None = None
     location: tuple[str, int, int] | None = None
     children: list[Explanation] = field(default_factory=list)
 
     def as_dict(self) -> dict:
-        return {"atom": self.atom, "rule": self.rule,
+        return {"atom": self.atom, "kind": self.kind, "rule": self.rule,
                 "location": None if self.location is None else
                 {"file": self.location[0], "line": self.location[1], "column": self.location[2]},
                 "because": [c.as_dict() for c in self.children]}
 
     def lines(self, indent: str = "") -> list[str]:
         where = f"  [{self.location[0]}:{self.location[1]}]" if self.location else ""
-        how = f"  (by {self.rule})" if self.rule else "  (fact)"
+        how = {"fact": "  (fact)", "absent": "  (none exists)", "condition": "  (holds)", "false": "  (does not hold)",
+               "derived": f"  (by {self.rule})" if self.rule else "  (derived; reasons not shown)"}[self.kind]
         out = [f"{indent}{self.atom}{how}{where}"]
         for child in self.children:
             out += child.lines(indent + "  ")
@@ -63,6 +110,13 @@ class Session:
         self.parts = 0
         self.extra: list[Program] = []
         self._known_cache: set[Signature] | None = None
+        self._open: Result | None = None  # the last query's result, read lazily from the grounded atoms
+
+    def _finish_open(self) -> None:
+        """Read the rest of the last result before grounding more (which invalidates its atoms)."""
+        if self._open is not None:
+            self._open.read_all()
+            self._open = None
 
     # -- findings -------------------------------------------------------------------------
     def findings(self) -> list[Finding]:
@@ -91,19 +145,31 @@ class Session:
         start = time.perf_counter()
         body = goal.strip().rstrip(".").strip()
         variables = _variables(body)
-        self.parts += 1
-        head = f"__q{self.parts}"
-        text = f"{head}({', '.join(variables)}) :- {body}." if variables else f"{head} :- {body}."
-        self._add(Program(text, "<query>", 1))
-        atoms = self.ctl.symbolic_atoms.by_signature(head, len(variables))
-        rows = sorted(tuple(self.store.from_term(a) for a in atom.symbol.arguments) for atom in atoms)
-        return Result(variables, rows, time.perf_counter() - start)
+        whole = _whole_relation(body)
+        if whole is not None and whole in self._known():  # one relation, all columns: read it as it is
+            self._finish_open()
+            atoms = self.ctl.symbolic_atoms.by_signature(*whole)
+        else:
+            self.parts += 1
+            head = f"__q{self.parts}"
+            text = f"{head}({', '.join(variables)}) :- {body}." if variables else f"{head} :- {body}."
+            self._add(Program(text, "<query>", 1))
+            atoms = self.ctl.symbolic_atoms.by_signature(head, len(variables))
+        self._open = Result(variables, (tuple(map(self.store.from_term, atom.symbol.arguments)) for atom in atoms),
+                            time.perf_counter() - start)
+        return self._open
 
     def define(self, text: str, file: str = "<repl>") -> list[str]:
         """Add rules (and rule metadata headers) on the fly; returns the predicates they define."""
         rules, programs = parse_rule_file(text, file)
         for program in programs:
             self._add(program)
+        types = column_types([rule for p in self.ruleset.programs + self.extra for rule in rules_of(p)])
+        for rule in rules:
+            try:
+                check_locations(rule, types.get((rule.predicate, len(rule.columns)), []))
+            except RuleError as exc:
+                raise QueryError(f"{exc.message} (line {exc.line})") from None
         self.ruleset.rules += rules
         self.ruleset.programs += programs
         return sorted({name for p in programs for name, _a in _parse(p)[0]})
@@ -111,20 +177,24 @@ class Session:
     def _add(self, program: Program) -> None:
         """Check one new program (syntax, relations, safety) and ground it on top of the rest."""
         try:
-            heads, body = _parse(program)
-            known = self._known() | set(heads)
-            missing = [f"{n}/{a}" for (n, a), _pos in body if (n, a) not in known]
+            parsed = _parse(program)
+            known = self._known() | set(parsed.heads)
+            missing = [sig for sig, _pos in parsed.body if sig not in known]
             if missing:
-                raise QueryError(f"unknown relation {missing[0]} (see :relations)")
+                raise QueryError(unknown_relation(*missing[0], known))
+            for name, _pos in parsed.functions:
+                if name not in NAMES:
+                    raise QueryError(unknown_function(name))
             _safety(program, "".join(f"#defined {n}/{a}. " for n, a in sorted(known)) + "\n")
         except RuleError as exc:
             raise QueryError(f"{exc.message} (line {exc.line}, column {exc.column})") from None
+        self._finish_open()
         self.parts += 1
         part = f"p{self.parts}"
         self.ctl.add(part, [], program.text)
-        self.ctl.ground([(part, [])])
+        self.ctl.ground([(part, [])], context=FUNCTIONS)
         self.extra.append(program)
-        self._known_cache = None
+        self._known_cache = self._known() | set(parsed.heads)
 
     def _known(self) -> set[Signature]:
         if self._known_cache is None:
@@ -134,12 +204,16 @@ class Session:
 
     # -- explanations ---------------------------------------------------------------------
     def explain(self, atom: clingo.Symbol, depth: int = 4) -> Explanation:
-        """The rule that derives `atom` and, recursively, the atoms it used (facts at the leaves)."""
-        node = Explanation(str(atom), location=self._location(atom))
-        if atom.name in BY_NAME or depth == 0:
+        """The rule that derives `atom` and, recursively, what its body used (facts at the leaves)."""
+        if self.ctl.symbolic_atoms[atom] is None:
+            return Explanation(self.show(atom), "false")
+        if atom.name in BY_NAME:
+            return Explanation(self.show(atom), location=self._location(atom))
+        node = Explanation(self.show(atom), "derived", location=self._location(atom))
+        if depth == 0:
             return node
         for program in self.ruleset.programs + self.extra:
-            for rule in _rules(program):
+            for rule in rules_of(program):
                 if rule.head.ast_type != clingo.ast.ASTType.Literal:
                     continue
                 head = rule.head.atom.symbol
@@ -148,32 +222,60 @@ class Session:
                     continue
                 body = self._instantiate(rule, atom)
                 if body is not None:
-                    node.rule = f"{program.file}:{program.first_line + rule.location.begin.line - 1}"
-                    node.children = [self.explain(b, depth - 1) for b in body]
+                    node.rule = f"{_shown(program.file)}:{program.first_line + rule.location.begin.line - 1}"
+                    node.children = [self.explain(b, depth - 1) if isinstance(b, clingo.Symbol) else b for b in body]
                     return node
         return node
 
-    def _instantiate(self, rule: clingo.ast.AST, atom: clingo.Symbol) -> list[clingo.Symbol] | None:
-        """The positive body atoms of one grounding of `rule` whose head is `atom`, if any."""
-        literals = [_name_anonymous(str(lit.atom), i) for i, lit in enumerate(rule.body)
-                    if lit.ast_type == clingo.ast.ASTType.Literal and lit.sign == clingo.ast.Sign.NoSign
-                    and lit.atom.ast_type == clingo.ast.ASTType.SymbolicAtom]
-        body_text = ", ".join(_name_anonymous(str(lit), i) for i, lit in enumerate(rule.body))
-        bindings = ", ".join(f"{arg} = {value}" for arg, value in zip(rule.head.atom.symbol.arguments, atom.arguments))
-        variables = _variables(body_text)
+    def show(self, symbol: clingo.Symbol) -> str:
+        """A term as archlog writes values: strings quoted, an unknown as `?(expr)`."""
+        if symbol.type == clingo.SymbolType.Function and symbol.arguments:
+            if symbol.name == "unknown" and len(symbol.arguments) == 1:
+                return str(self.store.from_term(symbol))
+            return f"{symbol.name}({', '.join(map(self.show, symbol.arguments))})"
+        return str(symbol)
+
+    def _instantiate(self, rule: clingo.ast.AST, atom: clingo.Symbol) -> list[clingo.Symbol | Explanation] | None:
+        """One grounding of `rule` whose head is `atom`: its positive body atoms, and its other
+        literals (`not` conditions, comparisons, aggregates) as text with the values filled in."""
+        literals = [_name_anonymous(str(lit.atom), i) if _is_positive_atom(lit) else str(lit)
+                    for i, lit in enumerate(rule.body)]
+        variables = _variables(str(rule.head))
+        for literal, text in zip(rule.body, literals):
+            if _is_positive_atom(literal):
+                variables += [v for v in _variables(text) if v not in variables]
+        bindings = [f"{arg} = {value}" for arg, value in zip(rule.head.atom.symbol.arguments, atom.arguments)]
         self.parts += 1
         head = f"__why{self.parts}"
-        text = f"{head}({', '.join(variables)}) :- {body_text}{', ' if bindings else ''}{bindings}."
+        program = f"{head}({', '.join(variables)}) :- {', '.join(literals + bindings)}."
+        self._finish_open()
         try:
-            self.ctl.add(f"w{self.parts}", [], text)
-            self.ctl.ground([(f"w{self.parts}", [])])
+            self.ctl.add(f"w{self.parts}", [], program)
+            self.ctl.ground([(f"w{self.parts}", [])], context=FUNCTIONS)
         except RuntimeError:
             return None
         solution = next(iter(self.ctl.symbolic_atoms.by_signature(head, len(variables))), None)
         if solution is None:
             return None
         values = dict(zip(variables, solution.symbol.arguments))
-        return [clingo.parse_term(_substitute(text, values)) for text in literals]
+        shown = {name: self.show(value) for name, value in values.items()}
+        body: list[clingo.Symbol | Explanation] = []
+        for literal, text in zip(rule.body, literals):
+            if _is_positive_atom(literal):
+                body.append(clingo.parse_term(_substitute(text, values)))
+            else:
+                absent = literal.ast_type == clingo.ast.ASTType.Literal and \
+                    literal.atom.ast_type == clingo.ast.ASTType.SymbolicAtom
+                shown_text = self._absent(literal, values) if absent else None
+                body.append(Explanation(shown_text or _substitute(text, shown), "absent" if absent else "condition"))
+        return body
+
+    def _absent(self, literal: clingo.ast.AST, values: dict[str, clingo.Symbol]) -> str | None:
+        """`not ATOM` written as atoms are, when the atom has no `_` left (else None)."""
+        try:
+            return "not " + self.show(clingo.parse_term(_substitute(str(literal.atom), values), lambda _c, _m: None))
+        except RuntimeError:
+            return None
 
     def _location(self, atom: clingo.Symbol) -> tuple[str, int, int] | None:
         for arg in atom.arguments:
@@ -182,10 +284,29 @@ class Session:
         return None
 
 
-def _rules(program: Program) -> list[clingo.ast.AST]:
-    found: list[clingo.ast.AST] = []
-    clingo.ast.parse_string(program.text, lambda s: found.append(s) if s.ast_type == clingo.ast.ASTType.Rule else None)
-    return found
+def _shown(file: str) -> str:
+    """A shipped rule file relative to the folder holding the archlog package; others as given."""
+    path = Path(file)
+    return path.relative_to(BUILTIN.parents[2]).as_posix() if path.is_relative_to(BUILTIN) else file
+
+
+def _is_positive_atom(literal: clingo.ast.AST) -> bool:
+    return literal.ast_type == clingo.ast.ASTType.Literal and literal.sign == clingo.ast.Sign.NoSign and \
+        literal.atom.ast_type == clingo.ast.ASTType.SymbolicAtom
+
+
+def _whole_relation(body: str) -> Signature | None:
+    """The relation of a goal that is a single atom with a distinct named variable in every column."""
+    rules: list[clingo.ast.AST] = []
+    clingo.ast.parse_string(f"__v :- {body}.", lambda s: rules.append(s) if s.ast_type == clingo.ast.ASTType.Rule
+                            else None, logger=lambda _code, _message: None)
+    if len(rules) != 1 or len(rules[0].body) != 1 or not _is_positive_atom(rules[0].body[0]):
+        return None
+    symbol = rules[0].body[0].atom.symbol
+    if symbol.ast_type != clingo.ast.ASTType.Function or symbol.external:
+        return None
+    names = [a.name for a in symbol.arguments if a.ast_type == clingo.ast.ASTType.Variable and a.name[0] != "_"]
+    return (symbol.name, len(names)) if len(names) == len(set(names)) == len(symbol.arguments) else None
 
 
 def _variables(body: str) -> list[str]:
@@ -221,7 +342,7 @@ def _name_anonymous(text: str, literal: int) -> str:
                                                        lambda _m: f"Anon{literal}x{next(count)}", piece))
 
 
-def _substitute(text: str, values: dict[str, clingo.Symbol]) -> str:
+def _substitute(text: str, values: Mapping[str, object]) -> str:
     """Replace variables in a rendered atom by their values, leaving string literals alone."""
     return _outside_strings(text, lambda piece: re.sub(r"\b([A-Z]\w*)\b",
                                                        lambda m: str(values.get(m.group(1), m.group(0))), piece))

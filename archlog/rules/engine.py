@@ -2,17 +2,19 @@
 
 from __future__ import annotations
 
+import difflib
 import hashlib
 import re
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import clingo
 import clingo.ast
 
 from archlog.facts.schema import RELATIONS
 from archlog.facts.store import Cell, FactStore
+from archlog.rules.functions import FUNCTIONS, NAMES
 from archlog.rules.ruleset import Program, Rule, RuleError, RuleSet
-from archlog.values import Unknown
 
 SUBJECT_KINDS = {"node": "nodes", "topic": "topics", "service": "services", "action": "actions",
                  "param": "parameters", "type": "types"}
@@ -24,6 +26,7 @@ _HINTS = {
     "syntax error": "check parentheses and commas, and end each rule with a period",
 }
 Position = tuple[int, int]
+_FACT_SIGNATURES = {(r.name, r.arity) for r in RELATIONS}
 
 
 @dataclass(frozen=True)
@@ -55,7 +58,8 @@ class Finding:
 
 
 def render(value: Cell) -> str:
-    return f"?({value.expr})" if isinstance(value, Unknown) else str(value)
+    """A cell as text; an unknown is written `?(expr)`."""
+    return str(value)
 
 
 class Engine:
@@ -75,7 +79,7 @@ class Engine:
         with ctl.backend() as backend:
             for symbol in store.symbols():
                 backend.add_rule([backend.add_atom(symbol)])
-        ctl.ground([("base", [])])
+        ctl.ground([("base", [])], context=FUNCTIONS)
         for atom in ctl.symbolic_atoms:
             if not atom.is_fact:
                 name = atom.symbol.name
@@ -117,70 +121,160 @@ def _finding(rule: Rule, values: dict[str, Cell], store: FactStore) -> Finding:
 
 # -- checking rule programs ---------------------------------------------------------------
 def check(ruleset: RuleSet) -> str:
-    """Reject syntax errors, unknown relations, wrong arities, unsafe variables and findings
-    that no rule derives, each at its rule file:line:column. Returns the `#defined` preamble."""
+    """Reject syntax errors, unknown relations and @functions, wrong arities, unsafe variables,
+    findings that no rule derives and location columns that hold no element, each at its rule
+    file:line:column. Returns the `#defined` preamble."""
     parsed = [(program, _parse(program)) for program in ruleset.programs]
     facts = {r.name: r.arity for r in RELATIONS}
-    heads = {sig for _p, (h, _b) in parsed for sig in h}
-    for program, (program_heads, _body) in parsed:
-        for (name, arity), pos in program_heads.items():
+    heads = {sig for _p, found in parsed for sig in found.heads}
+    for program, found in parsed:
+        for (name, arity), pos in found.heads.items():
             if name in facts and facts[name] != arity:
                 raise RuleError(program.file, program.first_line + pos[0] - 1,
                                 f"{name} is a fact relation with {facts[name]} columns (hint: rules may not add "
                                 "facts; derive a relation of your own)", pos[1])
     known = set(facts.items()) | heads
-    names = {name for name, _a in known}
-    for program, (_heads, body) in parsed:
-        for (name, arity), pos in body:
-            if (name, arity) in known:
-                continue
-            line = program.first_line + pos[0] - 1
-            if name in names:
-                arities = sorted(a for n, a in known if n == name)
-                raise RuleError(program.file, line, f"{name} takes {arities[0]} columns, not {arity} (hint: use _ "
-                                "for the columns you do not need)", pos[1])
-            raise RuleError(program.file, line, f"unknown relation {name}/{arity} (hint: docs/facts.md lists the "
-                            "relations; a typo?)", pos[1])
+    for program, found in parsed:
+        for (name, arity), pos in found.body:
+            if (name, arity) not in known:
+                raise RuleError(program.file, program.first_line + pos[0] - 1, unknown_relation(name, arity, known),
+                                pos[1])
+        for name, pos in found.functions:
+            if name not in NAMES:
+                raise RuleError(program.file, program.first_line + pos[0] - 1, unknown_function(name), pos[1])
     declared = "".join(f"#defined {n}/{a}. " for n, a in sorted(known)) + "\n"
     for program in ruleset.programs:
         _safety(program, declared)
+    types = column_types([rule for program in ruleset.programs for rule in rules_of(program)])
     for rule in ruleset.rules:
         if (rule.predicate, len(rule.columns)) not in heads:
             raise RuleError(rule.file, rule.lines.get("finding", rule.line), f"no rule derives the finding "
                             f"{rule.predicate}/{len(rule.columns)} (hint: the `finding:` header must name the head of "
                             "a rule below it, with as many columns)")
+        check_locations(rule, types.get((rule.predicate, len(rule.columns)), []))
     return declared
 
 
-def _parse(program: Program) -> tuple[dict[Signature, Position], list[tuple[Signature, Position]]]:
-    heads: dict[Signature, Position] = {}
-    body: list[tuple[Signature, Position]] = []
+def unknown_relation(name: str, arity: int, known: set[Signature]) -> str:
+    """Why a relation cannot be used, with the nearest known spelling."""
+    arities = sorted(a for n, a in known if n == name)
+    if arities:
+        return f"{name} takes {arities[0]} columns, not {arity} (hint: use _ for the columns you do not need)"
+    close = difflib.get_close_matches(name, sorted({n for n, _a in known if not n.startswith("__")}), 1, 0.7)
+    suggestion = f"did you mean {close[0]}/{min(a for n, a in known if n == close[0])}?" if close else \
+        "docs/facts.md lists the relations"
+    return f"unknown relation {name}/{arity} (hint: {suggestion})"
+
+
+def unknown_function(name: str) -> str:
+    close = difflib.get_close_matches(name, NAMES, 1, 0.6)
+    return f"unknown function @{name} (hint: {f'did you mean @{close[0]}? ' if close else ''}the functions rules may " \
+        f"call are {', '.join('@' + n for n in NAMES)}; docs/writing-rules.md describes them)"
+
+
+def column_types(rules: list[clingo.ast.AST]) -> dict[Signature, list[str | None]]:
+    """The column types (`id`, `name`, ...) of every relation, derived ones inferred from the fact
+    columns their rules' head variables come from; None where the rules disagree or tell nothing."""
+    types: dict[Signature, list[str | None]] = {(r.name, r.arity): [c.type for c in r.columns] for r in RELATIONS}
+    seen: dict[Signature, list[set[str]]] = {}
+    changed = True
+    while changed:
+        changed = False
+        for rule in rules:
+            if rule.head.ast_type != clingo.ast.ASTType.Literal or \
+                    rule.head.atom.ast_type != clingo.ast.ASTType.SymbolicAtom or \
+                    rule.head.atom.symbol.ast_type != clingo.ast.ASTType.Function:
+                continue
+            head = rule.head.atom.symbol
+            sig = (head.name, len(head.arguments))
+            if sig in _FACT_SIGNATURES:
+                continue
+            bound = _variable_types(rule.body, types)
+            slots = seen.setdefault(sig, [set() for _ in head.arguments])
+            for slot, arg in zip(slots, head.arguments):
+                new = bound.get(arg.name, set()) if arg.ast_type == clingo.ast.ASTType.Variable else set()
+                if not new <= slot:
+                    slot |= new
+                    changed = True
+            types[sig] = [next(iter(slot)) if len(slot) == 1 else None for slot in slots]
+    return types
+
+
+def _variable_types(body: list[clingo.ast.AST], types: dict[Signature, list[str | None]]) -> dict[str, set[str]]:
+    """The types a rule body's positive atoms give its variables (a variable in a column of type t)."""
+    found: dict[str, set[str]] = {}
+    for literal in body:
+        if literal.ast_type != clingo.ast.ASTType.Literal or literal.sign != clingo.ast.Sign.NoSign or \
+                literal.atom.ast_type != clingo.ast.ASTType.SymbolicAtom or \
+                literal.atom.symbol.ast_type != clingo.ast.ASTType.Function:
+            continue
+        symbol = literal.atom.symbol
+        for arg, type_ in zip(symbol.arguments, types.get((symbol.name, len(symbol.arguments)), [])):
+            if arg.ast_type == clingo.ast.ASTType.Variable and type_ is not None:
+                found.setdefault(arg.name, set()).add(type_)
+    return found
+
+
+def check_locations(rule: Rule, types: list[str | None]) -> None:
+    """A finding's location (and related) columns must hold elements with a location: ids."""
+    ids = [c for c, t in zip(rule.columns, types) if t == "id"]
+    for key, columns in (("location", [rule.location]), ("related", rule.related)):
+        for column in columns:
+            type_ = types[rule.columns.index(column)] if types else None
+            if type_ is not None and type_ != "id":
+                hint = f"a column such as {', '.join(ids)}" if ids else "add a port or element id column"
+                raise RuleError(rule.file, rule.lines.get(key, rule.line), f"{key} column '{column}' holds a "
+                                f"{type_}, which has no file and line (hint: name a column that holds a port or "
+                                f"element id: {hint})")
+
+
+class Parsed(NamedTuple):
+    """What a program uses: the relations its rules define and use, and the @functions it calls."""
+
+    heads: dict[Signature, Position]
+    body: list[tuple[Signature, Position]]
+    functions: list[tuple[str, Position]]
+
+
+def _parse(program: Program) -> Parsed:
+    parsed = Parsed({}, [], [])
     messages: list[str] = []
 
     def visit(statement: clingo.ast.AST) -> None:
         if statement.ast_type == clingo.ast.ASTType.Rule:
-            for sig, pos in _atoms(statement.head):
-                heads.setdefault(sig, pos)
+            for sig, pos in _atoms(statement.head, parsed.functions):
+                parsed.heads.setdefault(sig, pos)
             for literal in statement.body:
-                body.extend(_atoms(literal))
+                parsed.body.extend(_atoms(literal, parsed.functions))
 
     try:
         clingo.ast.parse_string(program.text, visit, logger=lambda _c, m: messages.append(m))
     except RuntimeError:
         raise _error(program, messages) from None
-    return heads, body
+    return parsed
 
 
-def _atoms(node: clingo.ast.AST) -> list[tuple[Signature, Position]]:
+def rules_of(program: Program) -> list[clingo.ast.AST]:
+    """The rules of a program (already checked), as clingo ASTs."""
+    found: list[clingo.ast.AST] = []
+    clingo.ast.parse_string(program.text, lambda s: found.append(s) if s.ast_type == clingo.ast.ASTType.Rule else None)
+    return found
+
+
+def _atoms(node: clingo.ast.AST, functions: list[tuple[str, Position]]) -> list[tuple[Signature, Position]]:
+    """The atoms under a node; the @functions it calls are added to `functions`."""
     found = []
     if node.ast_type == clingo.ast.ASTType.SymbolicAtom and node.symbol.ast_type == clingo.ast.ASTType.Function:
         begin = node.symbol.location.begin
         found.append(((node.symbol.name, len(node.symbol.arguments)), (begin.line, begin.column)))
+    elif node.ast_type == clingo.ast.ASTType.Function and node.external:
+        begin = node.location.begin
+        functions.append((node.name, (begin.line, begin.column)))
     for key in node.child_keys:
         child = getattr(node, key)
         for item in child if isinstance(child, (list, clingo.ast.ASTSequence)) else [child]:
             if isinstance(item, clingo.ast.AST):
-                found.extend(_atoms(item))
+                found.extend(_atoms(item, functions))
     return found
 
 
@@ -189,17 +283,32 @@ def _safety(program: Program, declared: str) -> None:
     ctl = clingo.Control(["--warn=none"], logger=lambda _c, m: messages.append(m))
     ctl.add("base", [], declared + program.text)
     try:
-        ctl.ground([("base", [])])
+        ctl.ground([("base", [])], context=FUNCTIONS)
     except RuntimeError:
         raise _error(program, messages, line_offset=-1) from None
 
 
+_INTERNALS = ((re.compile(r"\[#inc_base\];|#inc_base;?"), ""), (re.compile(r"#Anon\d+|#p\b"), "_"),
+              (re.compile(r"#p_(\w+)"), r"\1"), (re.compile(r"#b\((\w+)\)"), r"\1"))
+_UNSAFE = re.compile(r"<(?:block|string)>:(\d+):(\d+)(?:-\d+(?::\d+)?)?: note: '(\w+)' is unsafe")
+
+
 def _error(program: Program, messages: list[str], line_offset: int = 0) -> RuleError:
-    text = " ".join(m.strip().replace("\n", " ") for m in messages) or "rule program rejected"
+    """clingo's complaint in archlog's words, at the rule file's line and column."""
+    notes = [note for m in messages for note in _UNSAFE.finditer(m)]
+    if notes:
+        line, column = int(notes[0].group(1)), int(notes[0].group(2))
+        variables = ", ".join(dict.fromkeys(m.group(3) for m in notes))
+        detail = f"unsafe variable{'s' if ',' in variables else ''} {variables} (hint: {_HINTS['unsafe']})"
+        return RuleError(program.file, program.first_line + line - 1 + line_offset, detail, column)
+    text = " ".join(m.strip().replace("\n", " ") for m in messages[:1]) or "rule program rejected"
     match = _SPAN.search(text)
-    if not match:
-        return RuleError(program.file, program.first_line, text)
-    line = program.first_line + int(match.group(1)) - 1 + line_offset
-    detail = _SPAN.sub("", text)
+    detail = _SPAN.sub("", text).removeprefix("error: ")
+    for pattern, replacement in _INTERNALS:
+        detail = pattern.sub(replacement, detail)
     hint = next((h for needle, h in _HINTS.items() if needle in detail), "")
-    return RuleError(program.file, line, detail + (f" (hint: {hint})" if hint else ""), int(match.group(2)))
+    detail += f" (hint: {hint})" if hint else ""
+    if not match:
+        return RuleError(program.file, program.first_line, detail)
+    line = program.first_line + int(match.group(1)) - 1 + line_offset
+    return RuleError(program.file, line, detail, int(match.group(2)))

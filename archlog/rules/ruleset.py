@@ -132,15 +132,25 @@ def parse_rule_file(text: str, file: str) -> tuple[list[Rule], list[Program]]:
     return rules, programs
 
 
+def _yaml_error(exc: yaml.MarkedYAMLError, file: str, line: int) -> RuleError:
+    """One line at the header line YAML points at (the problem, and where what it concerns began)."""
+    mark = exc.problem_mark or exc.context_mark
+    context = exc.context_mark
+    where = f" ({exc.context} on line {line + context.line})" if exc.context and context and \
+        (mark is None or context.line != mark.line) else ""
+    what = f"{exc.problem or exc.context or 'not valid'}{where}"
+    return RuleError(file, line + (mark.line if mark else 0), f"metadata is not valid YAML: {what}",
+                     (mark.column if mark else 0) + len("%! ") + 1)
+
+
 def _rule(header: list[str], file: str, line: int) -> Rule:
     """One rule's metadata; every error is reported at the file line of the key it concerns."""
     loader = yaml.SafeLoader("\n".join(header))
     try:
         node = loader.get_single_node()
         meta = loader.construct_document(node) if node is not None else {}
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        raise RuleError(file, line + (mark.line if mark else 0), f"metadata is not valid YAML: {exc}") from None
+    except yaml.MarkedYAMLError as exc:
+        raise _yaml_error(exc, file, line) from None
     finally:
         loader.dispose()
     if not isinstance(meta, dict) or not isinstance(node, yaml.MappingNode):
