@@ -10,7 +10,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary, Port, Site
 from archlog.facts.behavior import Sites, add_behavior
-from archlog.facts.similarity import near_pairs, too_long
+from archlog.facts.similarity import near_names, too_long
 from archlog.facts.store import FactStore
 from archlog.system.link import System
 from archlog.system.node_models import UNSET
@@ -72,18 +72,24 @@ def _unknown_port_names(store: FactStore, diagnostics: DiagnosticSink) -> None:
 
 
 def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSink | None = None) -> None:
-    """near_name facts for the names the ports use (both directions); a name too long to compare
-    is noted (once, at its first port) when `diagnostics` is given."""
+    """near_name facts (both directions) for the names that only one side uses (published and not
+    subscribed, served and not called, or the reverse): the ends a near miss may explain, each with
+    every name the ports use. A name too long to compare is noted (once, at its first port) when
+    `diagnostics` is given."""
     first_port: dict[str, str] = {}
-    for row in (row for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)):
-        first_port.setdefault(str(row[2]), str(row[0]))
+    sides: dict[str, set[str]] = {rel: set() for rel in NAMED_PORTS}
+    for rel in NAMED_PORTS:
+        for row in store.rows(rel):
+            if isinstance(row[2], str):
+                first_port.setdefault(row[2], str(row[0]))
+                sides[rel].add(row[2])
     for name, port in first_port.items():
         if diagnostics is not None and (why := too_long(name)) is not None:
             file, line, _column = store.location(port) or ("", 0, 0)
             diagnostics.add(file, line, "name-too-long", f"name {name[:60]}... has {why}; no near miss is looked for",
                             "note")
-    used = set(first_port)
-    for a, b, score in near_pairs(used, threshold):
+    one_sided = set().union(*(sides[a] ^ sides[b] for a, b in zip(NAMED_PORTS[::2], NAMED_PORTS[1::2])))
+    for a, b, score in near_names(one_sided, first_port, threshold):
         store.add("near_name", a, b, round(score * 1000))
         store.add("near_name", b, a, round(score * 1000))
 

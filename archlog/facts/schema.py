@@ -125,7 +125,8 @@ RELATIONS: tuple[Relation, ...] = (
          ("value", "id", "the unknown term unknown(N) used in other relations"), ("expr", "str", "the expression"),
          ("file", "str", "file"), ("line", "int", "line")),
     _rel("derived", "near_name",
-         "Two names used in the system whose segment distance is below the near-miss threshold.",
+         "Two names used in the system, one of them used by one side only (published and not subscribed, served "
+         "and not called, or the reverse), whose segment distance is below the near-miss threshold.",
          ("a", "name", "a name"), ("b", "name", "another name"),
          ("distance", "int", "segment-aware Damerau-Levenshtein distance, in thousandths")),
 )
