@@ -10,7 +10,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary, Port, Site
 from archlog.facts.behavior import Sites, add_behavior
-from archlog.facts.similarity import near_names, too_long
+from archlog.facts.similarity import namespace_steps, near_names, too_long
 from archlog.facts.store import FactStore
 from archlog.system.link import System
 from archlog.system.node_models import UNSET
@@ -92,6 +92,8 @@ def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSi
     for a, b, score in near_names(one_sided, first_port, threshold):
         store.add("near_name", a, b, round(score * 1000))
         store.add("near_name", b, a, round(score * 1000))
+        store.add("near_scope", a, b, namespace_steps(a, b))
+        store.add("near_scope", b, a, namespace_steps(b, a))
 
 
 def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig) -> None:

@@ -24,6 +24,7 @@ from collections import defaultdict
 from collections.abc import Iterable
 
 import numpy as np
+from rapidfuzz import process
 from rapidfuzz.distance import DamerauLevenshtein
 
 _SPLIT = re.compile(r"[/_]")
@@ -31,7 +32,8 @@ _NUMBER = re.compile(r"\d+")
 INDEL = 1.5
 MAX_SEGMENTS = 64
 MAX_CHARACTERS = 1024
-_MAX_KEYS = 512  # a name with more deletion keys than this is compared with every name of its group
+_MAX_KEYS = 512  # a name with more variants than this is measured against every name of its group
+_MAX_WORD_EDITS = 4  # word replacements up to this character distance are enumerated; longer names are measured
 
 
 def segments(name: str) -> list[str]:
@@ -55,6 +57,14 @@ def distance(a: str, b: str) -> float:
     return float(_Measure([a, b]).distances(np.array([0]), np.array([1]))[0])
 
 
+def namespace_steps(a: str, b: str) -> int:
+    """How many namespace levels above a's namespace the nearest namespace of a and b is (0 when
+    they share their namespace): /robot_1/front/scan and /robot_1/rear/scan are 1 apart."""
+    mine, theirs = a.split("/")[:-1], b.split("/")[:-1]
+    shared = next((k for k, (x, y) in enumerate(zip(mine, theirs)) if x != y), min(len(mine), len(theirs)))
+    return len(mine) - shared
+
+
 def near_pairs(names: Iterable[str], threshold: float = 0.5) -> list[tuple[str, str, float]]:
     """Every unordered pair of distinct names whose distance is below `threshold` (names that are
     `too_long()` are left out)."""
@@ -66,21 +76,28 @@ def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 
     """Every unordered pair (a, b), a < b, of a name of `queries` and another name of `queries` or
     `names` whose distance is below `threshold`, sorted; names that are `too_long()` are left out.
 
-    Candidates come from deletion neighbourhoods: a near pair is at most k segment edits apart
-    (k follows from the threshold and the two lengths, as every edit costs at least 1), so deleting
-    at most k segments from each name makes them equal. Each query's neighbourhood is indexed,
-    every name's is looked up, and only the pairs that meet are measured, all at once. Names are
-    grouped by their numbers first (names whose numbers differ are never near), so copies of one
-    name under many numbered namespaces are never candidates of one another.
+    Candidates meet on keys. An alignment of a query q with a name n substitutes, deletes and
+    transposes segments of q and inserts segments of n; its cost is below the budget B that the
+    threshold gives their lengths. So q's variants (each segment kept, deleted, swapped with its
+    neighbour, or replaced by a word within that budget's character distance) include one equal
+    to a variant of n with some of its segments deleted, and each side spends less than B on its
+    variant. Only names that meet are measured, all at once. Names are grouped by their numbers
+    first (names whose numbers differ are never near): copies of one name under many numbered
+    namespaces never meet. A name with too many variants is measured against its whole group.
     """
     asked = {q for q in queries if too_long(q) is None}
     measure = _Measure(sorted(asked | {n for n in names if too_long(n) is None}))
     groups: dict[tuple[str, ...], list[int]] = defaultdict(list)
     for index, name in enumerate(measure.names):
         groups[tuple(_NUMBER.findall(name))].append(index)
+    budgets = {length: _budgets(length, threshold) for length in set(measure.lengths.tolist())}
+    words = _Words(measure.words, max((budgets[int(measure.lengths[i])][0] for i in range(len(measure.names))
+                                       if measure.names[i] in asked), default=0.0))
     pairs: set[tuple[int, int]] = set()
     for members in groups.values():
-        pairs |= _candidates(measure, members, [i for i in members if measure.names[i] in asked], threshold)
+        found = [i for i in members if measure.names[i] in asked]
+        if found:
+            pairs |= _candidates(measure, members, found, budgets, words)
     if not pairs:
         return []
     i, j = (np.array(column) for column in zip(*sorted(pairs)))
@@ -89,21 +106,41 @@ def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 
     return [(measure.names[a], measure.names[b], float(d)) for a, b, d in zip(i[keep], j[keep], scores[keep])]
 
 
-def _candidates(measure: _Measure, members: list[int], asked: list[int], threshold: float) -> set[tuple[int, int]]:
-    """Pairs (i < j) of a name of `asked` and another of `members` that share a deletion key."""
-    if not asked:
-        return set()
+class _Wide(Exception):
+    """A name with more variants than are worth indexing."""
+
+
+class _Words:
+    """The words (segments) within a character distance below `budget` of each word."""
+
+    def __init__(self, words: list[str], budget: float) -> None:
+        self.budget = min(budget, _MAX_WORD_EDITS + 1)
+        self.near: dict[int, list[tuple[int, float]]] = defaultdict(list)
+        cutoff = max(0, math.ceil(self.budget) - 1)
+        for start in range(0, len(words) if cutoff else 0, 1024):
+            block = process.cdist(words[start:start + 1024], words, scorer=DamerauLevenshtein.distance,
+                                  score_cutoff=cutoff, dtype=np.int32, workers=-1)
+            for a, b in zip(*np.nonzero(block <= cutoff)):
+                if start + a != b:
+                    self.near[int(start + a)].append((int(b), float(block[a, b])))
+
+
+def _candidates(measure: _Measure, members: list[int], asked: list[int], budgets: dict[int, tuple[float, float]],
+                words: _Words) -> set[tuple[int, int]]:
+    """Pairs (i < j) of a name of `asked` and another of `members` whose variants meet."""
     index: dict[str, list[int]] = defaultdict(list)
-    wide = []
+    pairs: set[tuple[int, int]] = set()
     for i in asked:
-        keys = _neighbourhood(measure.encoded[i], threshold)
-        if keys is None:
-            wide.append(i)
-        for key in keys or ():
+        try:
+            variants = _variants(measure.codes[i, : measure.lengths[i]].tolist(), budgets[int(measure.lengths[i])][0],
+                                 words)
+        except _Wide:
+            pairs |= {(min(i, j), max(i, j)) for j in members if i != j}
+            continue
+        for key in variants:
             index[key].append(i)
-    pairs = {(min(i, j), max(i, j)) for i in wide for j in members if i != j}
     for j in members:
-        keys = _neighbourhood(measure.encoded[j], threshold)
+        keys = _deletions(measure.encoded[j], budgets[int(measure.lengths[j])][1])
         if keys is None:
             pairs |= {(min(i, j), max(i, j)) for i in asked if i != j}
             continue
@@ -114,34 +151,63 @@ def _candidates(measure: _Measure, members: list[int], asked: list[int], thresho
     return pairs
 
 
-def _neighbourhood(encoded: str, threshold: float) -> set[str] | None:
-    """The name (one character per segment) with up to k of its segments deleted, k the most edits
-    a near name can be away; None when that set would be too large to be worth indexing."""
-    edits = _max_edits(len(encoded), threshold)
-    if edits is None or sum(math.comb(len(encoded), r) for r in range(edits + 1)) > _MAX_KEYS:
+def _variants(codes: list[int], budget: float, words: _Words) -> set[str]:
+    """A query's variants (one character per segment) of cost below `budget`: segments kept,
+    deleted (1.5), swapped with a different neighbour (1), or replaced by a near word."""
+    if budget > words.budget:
+        raise _Wide
+    found: set[str] = set()
+    steps = [0]
+
+    def walk(at: int, spent: float, prefix: str) -> None:
+        steps[0] += 1
+        if steps[0] > 16 * _MAX_KEYS:
+            raise _Wide
+        if at == len(codes):
+            found.add(prefix)
+            return
+        here = codes[at]
+        walk(at + 1, spent, prefix + chr(0x100 + here))
+        if spent + INDEL < budget:
+            walk(at + 1, spent + INDEL, prefix)
+        for other, cost in words.near.get(here, ()):
+            if spent + cost < budget:
+                walk(at + 1, spent + cost, prefix + chr(0x100 + other))
+        if at + 1 < len(codes) and codes[at + 1] != here and spent + 1 < budget:
+            walk(at + 2, spent + 1, prefix + chr(0x100 + codes[at + 1]) + chr(0x100 + here))
+
+    walk(0, 0.0, "")
+    return found
+
+
+def _deletions(encoded: str, budget: float) -> set[str] | None:
+    """The name (one character per segment) with segments deleted at 1.5 each, below `budget`;
+    None when that set would be too large to be worth indexing."""
+    most = max(0, math.ceil(budget / INDEL) - 1)
+    if sum(math.comb(len(encoded), r) for r in range(min(most, len(encoded)) + 1)) > _MAX_KEYS:
         return None
     level, keys = {encoded}, {encoded}
-    for _ in range(edits):
+    for _ in range(min(most, len(encoded))):
         level = {key[:p] + key[p + 1:] for key in level for p in range(len(key))}
         keys |= level
     return keys
 
 
-def _max_edits(length: int, threshold: float) -> int | None:
-    """The most segment edits between a name of `length` segments and any name it is near: with d
-    the difference in length, the cost is at least 1.5 d + (edits - d), below threshold times the
-    mean length. None when no bound exists (a threshold of 3 or more)."""
+def _budgets(length: int, threshold: float) -> tuple[float, float]:
+    """For a name of `length` segments: the most a query may spend on its own edits, and the most
+    a name may spend on deletions, in an alignment cheaper than the threshold allows. The cost of
+    two names of lengths l and m is below threshold * (l + m) / 2 and at least 1.5 |l - m|."""
     if threshold >= 2 * INDEL:
-        return None
-    most = 0
+        return math.inf, math.inf
+    query = deleted = 0.0
     other = 1
-    while INDEL * max(0, other - length) < threshold * (length + other) / 2:
-        gap = abs(other - length)
-        budget = threshold * (length + other) / 2 - (INDEL - 1) * gap
-        if INDEL * gap < threshold * (length + other) / 2:
-            most = max(most, math.ceil(budget + 1e-9) - 1)
+    while INDEL * (other - length) < threshold * (length + other) / 2:
+        limit = threshold * (length + other) / 2
+        if INDEL * abs(other - length) < limit:
+            query = max(query, limit - INDEL * max(0, other - length))
+            deleted = max(deleted, limit)
         other += 1
-    return most
+    return query, deleted
 
 
 class _Measure:
@@ -176,11 +242,11 @@ class _Measure:
         """The character distance of every segment of `left` to every one of `right` (broadcast),
         measured once per distinct pair of words."""
         a, b = np.broadcast_arrays(left, right)
-        flat = np.stack([a.ravel(), b.ravel()], axis=1)
-        distinct, inverse = np.unique(flat, axis=0, return_inverse=True)
+        flat = a.ravel() * len(self.words) + b.ravel()
+        distinct, inverse = np.unique(flat, return_inverse=True)
         costs = np.array([0.0 if x == y else DamerauLevenshtein.distance(self.words[x], self.words[y])
-                          for x, y in distinct.tolist()], dtype=np.float32)
-        return costs[inverse.reshape(-1)].reshape(a.shape)
+                          for x, y in zip(*np.divmod(distinct, len(self.words)))], dtype=np.float32)
+        return costs[inverse].reshape(a.shape)
 
 
 def _dl(left: np.ndarray, right: np.ndarray, sub: np.ndarray, budget: float | None) -> np.ndarray:

@@ -90,16 +90,20 @@ class Engine:
         for rule in self.ruleset.rules:
             for atom in ctl.symbolic_atoms.by_signature(rule.predicate, len(rule.columns)):
                 values = {c: store.from_term(a) for c, a in zip(rule.columns, atom.symbol.arguments)}
+                listed: list[str] = []
                 for name, (relation, column) in rule.lists.items():
                     key = atom.symbol.arguments[rule.columns.index(column)]
-                    items = {render(store.from_term(row.symbol.arguments[1]))
-                             for row in ctl.symbolic_atoms.by_signature(relation, 2) if row.symbol.arguments[0] == key}
-                    values[name] = ", ".join(sorted(items)) or "none"
-                result.append(_finding(rule, values, store))
+                    items = sorted({render(store.from_term(row.symbol.arguments[1]))
+                                    for row in ctl.symbolic_atoms.by_signature(relation, 2)
+                                    if row.symbol.arguments[0] == key})
+                    values[name] = ", ".join(items) or "none"
+                    listed += items
+                result.append(_finding(rule, values, store, listed))
         return sorted(result, key=lambda f: (f.location.file, f.location.line, f.rule.id, f.message))
 
 
-def _finding(rule: Rule, values: dict[str, Cell], store: FactStore) -> Finding:
+def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list[str]) -> Finding:
+    """A finding; listed items that are located ids (ports, elements) are related locations too."""
     def locate(column: str) -> Location:
         found = store.location(str(values[column]))
         return Location(*found) if found else Location("", 0, 0)
@@ -112,7 +116,8 @@ def _finding(rule: Rule, values: dict[str, Cell], store: FactStore) -> Finding:
             if render(value) not in bucket:
                 bucket.append(render(value))
     message = rule.message.format(**{k: render(v) for k, v in values.items()})
-    return Finding(rule, values, message, locate(rule.location), [locate(c) for c in rule.related], subjects)
+    also = [Location(*found) for item in listed if (found := store.location(item))]
+    return Finding(rule, values, message, locate(rule.location), [locate(c) for c in rule.related] + also, subjects)
 
 
 # -- checking rule programs ---------------------------------------------------------------
