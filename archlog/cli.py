@@ -7,28 +7,22 @@ import json
 import os
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
-from rich.console import Console
-from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
-from rich.table import Table
-from rich.text import Text
 
 from archlog import __version__, sandbox
-from archlog.analysis import Analysis, analyse
-from archlog.config import Config, find_config, load_config, workspace_config
 from archlog.diagnostics import SEVERITIES
 from archlog.errors import ConfigError
-from archlog.queries.session import QueryError, Result, Session
-from archlog.reports.codequality import to_codequality
-from archlog.reports.json_report import to_json
-from archlog.reports.report import Report, coverage
-from archlog.reports.sarif import to_sarif
-from archlog.reports.suppress import apply_suppressions, read_baseline
-from archlog.reports.suppress import write_baseline as write_baseline_file
-from archlog.reports.text import print_text
-from archlog.rules.engine import render
-from archlog.rules.ruleset import RuleError, RuleSet, load_rules
+from archlog.rules.ruleset import RuleError
+
+if TYPE_CHECKING:  # the heavy parts (clingo, libclang, numpy, rich) load in the commands that use them
+    from rich.console import Console
+
+    from archlog.analysis import Analysis
+    from archlog.config import Config
+    from archlog.queries.session import Result
+    from archlog.rules.ruleset import RuleSet
 
 FAIL_ON = (*SEVERITIES, "never")
 
@@ -82,6 +76,13 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
           quiet: bool = False) -> tuple[Analysis, RuleSet, Config]:
     """Configuration, rules (checked before the slow part), then the analysis, with a progress bar
     on a terminal. The environment is [env] of the configuration with --env over it."""
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+    from archlog.analysis import analyse
+    from archlog.config import find_config, load_config, workspace_config
+    from archlog.rules.ruleset import load_rules
+
     config = load_config(config_path or find_config(list(paths)), profile)
     if config_path is None and config.source is not None:
         config = workspace_config(config)
@@ -128,6 +129,17 @@ def main() -> None:
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, output,
           fail_on, baseline, write_baseline, fail_on_incomplete, quiet) -> None:
     """Check a ROS system configuration and report findings."""
+    from rich.console import Console
+
+    from archlog.queries.session import Session
+    from archlog.reports.codequality import to_codequality
+    from archlog.reports.json_report import to_json
+    from archlog.reports.report import Report, coverage
+    from archlog.reports.sarif import to_sarif
+    from archlog.reports.suppress import apply_suppressions, read_baseline
+    from archlog.reports.suppress import write_baseline as write_baseline_file
+    from archlog.reports.text import print_text
+
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env, quiet or fmt != "text" and output is None)
     root = analysis.workspace.roots[0]
@@ -187,6 +199,10 @@ def query(paths, launches, args, models, rule_paths, config_path, profile, near_
           fmt) -> None:
     """Print every binding of the variables of GOAL (the last argument: a conjunction of literals such
     as 'publisher(P, N, T, _), not subscribed(T)') over the facts and derived relations."""
+    from rich.console import Console
+
+    from archlog.queries.session import QueryError, Session
+
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env)
     try:
@@ -201,6 +217,7 @@ def query(paths, launches, args, models, rule_paths, config_path, profile, near_
 def repl(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env) -> None:
     """Interactive queries over the system: extraction runs once."""
     from archlog.queries.repl import run_repl
+    from archlog.queries.session import Session
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env)
@@ -216,6 +233,7 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
 def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus,
           depth, output) -> None:
     """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
+    from archlog.queries.session import Session
     from archlog.reports import graph as views
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
@@ -280,6 +298,9 @@ def observe_command(master_uri, output, write_models, node_info) -> None:
 def diff(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, observed,
          fmt) -> None:
     """Compare the recovered architecture with an observed one (exit 1 when they differ)."""
+    from rich.console import Console
+    from rich.table import Table
+
     from archlog import observe
 
     analysis, _ruleset, _config = _load(paths, launches, args, models, rule_paths, config_path, profile,
@@ -312,6 +333,9 @@ def diff(paths, launches, args, models, rule_paths, config_path, profile, near_m
 def behavior(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env,
              fmt) -> None:
     """Print each node's behavior: state, and the triggers, guards and required inputs of its outputs."""
+    from rich.console import Console
+
+    from archlog.queries.session import Session
     from archlog.reports.behavior import behavior_model, print_behavior
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
@@ -329,6 +353,8 @@ def behavior(paths, launches, args, models, rule_paths, config_path, profile, ne
               "(each file written is named).")
 def test_rules(folders, update) -> None:
     """Run each rule's fixtures and compare with their .expected files (exit 1 on a difference)."""
+    from rich.console import Console
+
     from archlog.queries.rule_tests import run_rule_tests
 
     sys.exit(0 if run_rule_tests(list(folders), update, Console(soft_wrap=True)) else 1)
@@ -336,6 +362,11 @@ def test_rules(folders, update) -> None:
 
 def print_result(result: Result, fmt: str, console: Console) -> None:
     """A query result as a table, JSON or CSV."""
+    from rich.table import Table
+    from rich.text import Text
+
+    from archlog.rules.engine import render
+
     if fmt == "json":
         console.print_json(json.dumps([dict(zip(result.columns, map(render, row))) for row in result.rows]))
     elif fmt == "csv":
