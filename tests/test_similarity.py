@@ -27,7 +27,7 @@ def test_near_pairs_lists_each_pair_once() -> None:
     assert [(a, b) for a, b, _ in pairs] == [("/base_waypoint", "/base_waypoints")]
 
 
-WORDS = ["scan", "scan2", "robot_1", "robot_2", "cmd", "vel", "map", "odom", "odm", "image", "raw", "base"]
+WORDS = ["scan", "scan2", "robot_1", "robot_2", "1", "12", "a1", "cmd", "vel", "map", "odom", "odm", "image", "raw", "base"]
 name = st.lists(st.lists(st.sampled_from(WORDS), min_size=1, max_size=2).map("_".join), min_size=1, max_size=4) \
     .map(lambda segs: "/" + "/".join(segs))
 

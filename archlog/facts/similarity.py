@@ -9,7 +9,8 @@ much as three character edits, so /a/point and /a/line stay apart while /a/point
 /a/point_class, or /base_waypoint and /base_waypoints, are near.
 
 Numbers tell instances apart: two names whose numbers (their digit runs, in order) differ are
-never near, so /robot_3/scan is not a typo of /robot_4/scan, nor camera1 of camera2.
+never near, so /robot_3/scan is not a typo of /robot_4/scan, nor camera1 of camera2; and a segment
+that is a number is never substituted (replacing it costs a deletion and an insertion, 3).
 
 Measuring costs the product of two names' segment counts (and of two segments' lengths), so names
 past `MAX_SEGMENTS` segments or `MAX_CHARACTERS` characters (no ROS name comes near either) are not
@@ -93,11 +94,12 @@ def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 
     budgets = {length: _budgets(length, threshold) for length in set(measure.lengths.tolist())}
     words = _Words(measure.words, max((budgets[int(measure.lengths[i])][0] for i in range(len(measure.names))
                                        if measure.names[i] in asked), default=0.0))
+    variants = _Variants(words)
     pairs: set[tuple[int, int]] = set()
     for members in groups.values():
         found = [i for i in members if measure.names[i] in asked]
         if found:
-            pairs |= _candidates(measure, members, found, budgets, words)
+            pairs |= _candidates(measure, members, found, budgets, variants, threshold)
     if not pairs:
         return []
     i, j = (np.array(column) for column in zip(*sorted(pairs)))
@@ -111,52 +113,87 @@ class _Wide(Exception):
 
 
 class _Words:
-    """The words (segments) within a character distance below `budget` of each word."""
+    """The words (segments) within a character distance below `budget` of each word. Two words
+    with different numbers in both (3 and 7, robot3 and robot7) are not near: swapping one number
+    for another changes the name's numbers, and names whose numbers differ are never near. A
+    number is near no word (substituting it costs as much as deleting it and inserting the other)."""
 
     def __init__(self, words: list[str], budget: float) -> None:
         self.budget = min(budget, _MAX_WORD_EDITS + 1)
+        self.number = [word.isdigit() for word in words]
         self.near: dict[int, list[tuple[int, float]]] = defaultdict(list)
+        numbers = [_NUMBER.findall(word) for word in words]
         cutoff = max(0, math.ceil(self.budget) - 1)
         for start in range(0, len(words) if cutoff else 0, 1024):
             block = process.cdist(words[start:start + 1024], words, scorer=DamerauLevenshtein.distance,
                                   score_cutoff=cutoff, dtype=np.int32, workers=-1)
             for a, b in zip(*np.nonzero(block <= cutoff)):
-                if start + a != b:
+                mine, theirs = numbers[start + a], numbers[b]
+                if start + a != b and not (mine and theirs and mine != theirs) and not (
+                        self.number[start + a] or self.number[b]):
                     self.near[int(start + a)].append((int(b), float(block[a, b])))
 
 
 def _candidates(measure: _Measure, members: list[int], asked: list[int], budgets: dict[int, tuple[float, float]],
-                words: _Words) -> set[tuple[int, int]]:
-    """Pairs (i < j) of a name of `asked` and another of `members` whose variants meet."""
-    index: dict[str, list[int]] = defaultdict(list)
+                variants: _Variants, threshold: float) -> set[tuple[int, int]]:
+    """Pairs (i < j) of a name of `asked` and another of `members` whose variants meet at a cost
+    (both sides' edits) below what the threshold allows their lengths."""
+    index: dict[str, list[tuple[int, float]]] = defaultdict(list)
+    lengths = measure.lengths.tolist()
     pairs: set[tuple[int, int]] = set()
     for i in asked:
         try:
-            variants = _variants(measure.codes[i, : measure.lengths[i]].tolist(), budgets[int(measure.lengths[i])][0],
-                                 words)
+            found = variants.of(measure.codes[i, : measure.lengths[i]].tolist(), budgets[int(measure.lengths[i])][0])
         except _Wide:
             pairs |= {(min(i, j), max(i, j)) for j in members if i != j}
             continue
-        for key in variants:
-            index[key].append(i)
+        for key, spent in found.items():
+            index[key].append((i, spent))
     for j in members:
         keys = _deletions(measure.encoded[j], budgets[int(measure.lengths[j])][1])
         if keys is None:
             pairs |= {(min(i, j), max(i, j)) for i in asked if i != j}
             continue
-        for key in keys:
-            for i in index.get(key, ()):
-                if i != j:
+        for key, deleted in keys.items():
+            for i, spent in index.get(key, ()):
+                if i != j and spent + deleted < threshold * (lengths[i] + lengths[j]) / 2:
                     pairs.add((min(i, j), max(i, j)))
     return pairs
 
 
-def _variants(codes: list[int], budget: float, words: _Words) -> set[str]:
-    """A query's variants (one character per segment) of cost below `budget`: segments kept,
+class _Variants:
+    """Queries' variants, enumerated once per shape: the numbers of a name (which are never
+    substituted) are placeholders, so /robot_1/scan and /robot_2/scan share one enumeration."""
+
+    def __init__(self, words: _Words) -> None:
+        self.words = words
+        self.shapes: dict[tuple[tuple[int, ...], float], dict[str, float] | None] = {}
+
+    def of(self, codes: list[int], budget: float) -> dict[str, float]:
+        numbers = [code for code in codes if self.words.number[code]]
+        placeholders = iter(range(-1, -len(numbers) - 1, -1))
+        shape = tuple(next(placeholders) if self.words.number[code] else code for code in codes)
+        if (shape, budget) not in self.shapes:
+            try:
+                self.shapes[shape, budget] = _variants(list(shape), budget, self.words)
+            except _Wide:
+                self.shapes[shape, budget] = None
+        found = self.shapes[shape, budget]
+        if found is None:
+            raise _Wide
+        if not numbers:
+            return found
+        table = {k: chr(0x100 + code) for k, code in enumerate(numbers, 1)}
+        return {key.translate(table): spent for key, spent in found.items()}
+
+
+def _variants(codes: list[int], budget: float, words: _Words) -> dict[str, float]:
+    """A query's variants (one character per segment; a negative code -k is the k-th number's
+    placeholder, character k) of cost below `budget`, each with its least cost: segments kept,
     deleted (1.5), swapped with a different neighbour (1), or replaced by a near word."""
     if budget > words.budget:
         raise _Wide
-    found: set[str] = set()
+    found: dict[str, float] = {}
     steps = [0]
 
     def walk(at: int, spent: float, prefix: str) -> None:
@@ -164,32 +201,38 @@ def _variants(codes: list[int], budget: float, words: _Words) -> set[str]:
         if steps[0] > 16 * _MAX_KEYS:
             raise _Wide
         if at == len(codes):
-            found.add(prefix)
+            found[prefix] = min(spent, found.get(prefix, spent))
             return
         here = codes[at]
-        walk(at + 1, spent, prefix + chr(0x100 + here))
+        walk(at + 1, spent, prefix + _char(here))
         if spent + INDEL < budget:
             walk(at + 1, spent + INDEL, prefix)
         for other, cost in words.near.get(here, ()):
             if spent + cost < budget:
-                walk(at + 1, spent + cost, prefix + chr(0x100 + other))
+                walk(at + 1, spent + cost, prefix + _char(other))
         if at + 1 < len(codes) and codes[at + 1] != here and spent + 1 < budget:
-            walk(at + 2, spent + 1, prefix + chr(0x100 + codes[at + 1]) + chr(0x100 + here))
+            walk(at + 2, spent + 1, prefix + _char(codes[at + 1]) + _char(here))
 
     walk(0, 0.0, "")
     return found
 
 
-def _deletions(encoded: str, budget: float) -> set[str] | None:
-    """The name (one character per segment) with segments deleted at 1.5 each, below `budget`;
-    None when that set would be too large to be worth indexing."""
+def _char(code: int) -> str:
+    """A segment code as one character (a number's placeholder -k as character k)."""
+    return chr(0x100 + code) if code >= 0 else chr(-code)
+
+
+def _deletions(encoded: str, budget: float) -> dict[str, float] | None:
+    """The name (one character per segment) with segments deleted at 1.5 each, below `budget`,
+    each with its cost; None when that set would be too large to be worth indexing."""
     most = max(0, math.ceil(budget / INDEL) - 1)
     if sum(math.comb(len(encoded), r) for r in range(min(most, len(encoded)) + 1)) > _MAX_KEYS:
         return None
-    level, keys = {encoded}, {encoded}
-    for _ in range(min(most, len(encoded))):
+    level, keys = {encoded}, {encoded: 0.0}
+    for count in range(1, min(most, len(encoded)) + 1):
         level = {key[:p] + key[p + 1:] for key in level for p in range(len(key))}
-        keys |= level
+        for key in level:
+            keys.setdefault(key, count * INDEL)
     return keys
 
 
@@ -244,7 +287,8 @@ class _Measure:
         a, b = np.broadcast_arrays(left, right)
         flat = a.ravel() * len(self.words) + b.ravel()
         distinct, inverse = np.unique(flat, return_inverse=True)
-        costs = np.array([0.0 if x == y else DamerauLevenshtein.distance(self.words[x], self.words[y])
+        costs = np.array([0.0 if x == y else 2 * INDEL if self.words[x].isdigit() or self.words[y].isdigit()
+                          else DamerauLevenshtein.distance(self.words[x], self.words[y])
                           for x, y in zip(*np.divmod(distinct, len(self.words)))], dtype=np.float32)
         return costs[inverse].reshape(a.shape)
 
