@@ -21,8 +21,9 @@ _MAX_INT = 2**31 - 1  # clingo's integers are 32-bit
 NAMED_PORTS = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 
 
-def compose(system: System, diagnostics: DiagnosticSink, near_threshold: float = 0.5) -> FactStore:
-    """Build the fact store of one linked system configuration."""
+def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
+    """Build the fact store of one linked system configuration (near-miss names are added by
+    `add_near_names`, once the ports are known)."""
     store = FactStore()
     workspace, config = system.workspace, system.config
     for package in workspace.packages.values():
@@ -55,7 +56,6 @@ def compose(system: System, diagnostics: DiagnosticSink, near_threshold: float =
             store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config)
     _unknown_port_names(store, diagnostics)
-    add_near_names(store, near_threshold, diagnostics)
     return store
 
 

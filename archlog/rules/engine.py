@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import hashlib
 import re
+import time
 from dataclasses import dataclass, field
 
 import clingo
@@ -64,18 +65,24 @@ class Engine:
     def __init__(self, ruleset: RuleSet) -> None:
         self.ruleset = ruleset
         self.declared = check(ruleset)
+        self.timings: dict[str, float] = {}  # seconds of the last run's phases
 
     def run(self, store: FactStore) -> tuple[clingo.Control, list[Finding]]:
         ctl = self.ground(store)
         return ctl, self.findings(ctl, store)
 
     def ground(self, store: FactStore) -> clingo.Control:
+        clock = time.perf_counter()
         ctl = clingo.Control(["--warn=none"])
         ctl.add("base", [], self.declared + "\n".join(p.text for p in self.ruleset.programs))
-        with ctl.backend() as backend:
-            for symbol in store.symbols():
-                backend.add_rule([backend.add_atom(symbol)])
+        ctl.add("base", [], store.program())
+        self.timings["to-clingo"] = time.perf_counter() - clock
+        clock = time.perf_counter()
         ctl.ground([("base", [])])
+        stratified = ctl.solve().satisfiable and ctl.statistics["problem"]["lp"]["bodies"] == 0
+        self.timings["ground"] = time.perf_counter() - clock
+        if stratified:
+            return ctl  # every atom is a fact
         for atom in ctl.symbolic_atoms:
             if not atom.is_fact:
                 name = atom.symbol.name
@@ -86,6 +93,7 @@ class Engine:
         return ctl
 
     def findings(self, ctl: clingo.Control, store: FactStore) -> list[Finding]:
+        clock = time.perf_counter()
         result = []
         for rule in self.ruleset.rules:
             for atom in ctl.symbolic_atoms.by_signature(rule.predicate, len(rule.columns)):
@@ -99,6 +107,7 @@ class Engine:
                     values[name] = ", ".join(items) or "none"
                     listed += items
                 result.append(_finding(rule, values, store, listed))
+        self.timings["findings"] = time.perf_counter() - clock
         return sorted(result, key=lambda f: (f.location.file, f.location.line, f.rule.id, f.message))
 
 
