@@ -149,13 +149,19 @@ def _candidates(measure: _Measure, members: list[int], asked: list[int], budgets
             continue
         for key, spent in found.items():
             index[key].append((i, spent))
+    for entries in index.values():
+        entries.sort(key=lambda entry: entry[1])
+    longest = max(lengths[i] for i in asked)
     for j in members:
         keys = _deletions(measure.encoded[j], budgets[int(measure.lengths[j])][1])
         if keys is None:
             pairs |= {(min(i, j), max(i, j)) for i in asked if i != j}
             continue
+        cap = threshold * (longest + lengths[j]) / 2
         for key, deleted in keys.items():
             for i, spent in index.get(key, ()):
+                if spent + deleted >= cap:
+                    break
                 if i != j and spent + deleted < threshold * (lengths[i] + lengths[j]) / 2:
                     pairs.add((min(i, j), max(i, j)))
     return pairs
