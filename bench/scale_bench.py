@@ -35,6 +35,8 @@ from collections import Counter
 from pathlib import Path
 
 import yaml
+from rapidfuzz import process
+from rapidfuzz.distance import DamerauLevenshtein
 
 ROOT = Path(__file__).resolve().parent.parent
 PACKAGE = "scale_nodes"
@@ -77,11 +79,15 @@ def models() -> dict:
 
 
 def namespaces(count: int, naming: str, seed: int) -> list[str]:
+    """Fleet: robot_K. Distinct: made-up words at least 3 edits apart, so no two units' topics are
+    near misses of each other (only the planted typos are)."""
     if naming == "fleet":
         return [f"robot_{u}" for u in range(count)]
-    rng, seen = random.Random(seed), set()
+    rng, seen = random.Random(seed), []
     while len(seen) < count:
-        seen.add("".join(rng.choice(SYLLABLES) for _ in range(4)))
+        word = "".join(rng.choice(SYLLABLES) for _ in range(4))
+        if process.extractOne(word, seen, scorer=DamerauLevenshtein.distance, score_cutoff=2) is None:
+            seen.append(word)
     return sorted(seen)
 
 
