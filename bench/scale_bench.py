@@ -14,7 +14,8 @@ input remapped onto another type's topic). Two namings:
 
 For each size and naming it prints cpu seconds and peak memory of `archlog check` (a child
 process, measured with wait4), the near_name facts, the findings per rule (AL102 must equal the
-planted typos), and the largest phases of an in-process run; then the cpu growth exponent.
+planted typos), and the largest phases (shares of the wall time of a run in another child; on a
+busy machine they are rough); then the cpu growth exponent.
 """
 
 from __future__ import annotations
@@ -181,11 +182,24 @@ def phases(root: Path) -> tuple[dict[str, float], int]:
     return seconds, near
 
 
-def profile(root: Path, top: int) -> None:
-    """Print the functions with the most cumulative time of an in-process run."""
+def phases_apart(root: Path, top: int) -> tuple[dict[str, float], int]:
+    """`phases` in a child process (with a cProfile of TOP functions printed when top > 0), so that
+    this process stays small: a check forked from it counts its memory until it execs."""
+    done = subprocess.run([sys.executable, __file__, "--phases-of", str(root), "--profile", str(top)], cwd=ROOT,
+                          check=True, capture_output=True, text=True)
+    *printed, last = done.stdout.splitlines()
+    if printed:
+        print("\n".join(printed))
+    seconds, near = json.loads(last)
+    return seconds, near
+
+
+def print_phases(root: Path, top: int) -> None:
     profiler = cProfile.Profile()
-    profiler.runcall(phases, root)
-    pstats.Stats(profiler).sort_stats("cumulative").print_stats(top)
+    seconds, near = profiler.runcall(phases, root) if top else phases(root)
+    if top:
+        pstats.Stats(profiler).sort_stats("cumulative").print_stats(top)
+    print(json.dumps([seconds, near]))
 
 
 def main() -> None:
@@ -196,7 +210,11 @@ def main() -> None:
     parser.add_argument("--profile", type=int, default=0, metavar="TOP", help="also print a cProfile of each run")
     parser.add_argument("--limit-mb", type=int, default=4096, help="address-space limit of each check")
     parser.add_argument("--keep", type=Path, help="write the workspaces here instead of a temporary folder")
+    parser.add_argument("--phases-of", type=Path, help=argparse.SUPPRESS)
     opts = parser.parse_args()
+    if opts.phases_of:
+        print_phases(opts.phases_of, opts.profile)
+        return
     print("| naming | N | near_name facts | cpu s | peak MB | largest phases | findings | planted |")
     print("|---|---|---|---|---|---|---|---|")
     cpu: dict[str, dict[int, float]] = {}
@@ -213,15 +231,13 @@ def main() -> None:
                 seconds = statistics.median(r[0] for r in runs)
                 peak = statistics.median(r[1] for r in runs)
                 rules = Counter(f["rule"] for f in runs[0][2]["findings"])
-                split, near = phases(root)
+                split, near = phases_apart(root, opts.profile)
                 total = sum(split.values())
                 largest = ", ".join(f"{k} {v / total:.0%}" for k, v in sorted(split.items(), key=lambda kv: -kv[1])[:3])
                 cpu.setdefault(naming, {})[size] = seconds
                 print(f"| {naming} | {size:,} | {near:,} | {seconds:.1f} | {peak:,.0f} | {largest} | "
                       f"{' '.join(f'{r}:{c}' for r, c in sorted(rules.items()))} | "
                       f"{' '.join(f'{k}:{v}' for k, v in sorted(planted.items()))} |", flush=True)
-                if opts.profile:
-                    profile(root, opts.profile)
     for naming, series in cpu.items():
         sizes = sorted(series)
         if len(sizes) > 1:
