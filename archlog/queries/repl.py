@@ -139,7 +139,7 @@ class Repl:
                 self.console.print(f"no finding {target} (:findings lists them)")
                 return
             finding = self.numbered[index]
-            terms = [self.session.store.term(v) for v in finding.values.values()]
+            terms = [self.session.store.term(finding.values[c]) for c in finding.rule.columns]  # not its lists
             atom = clingo.Function(finding.rule.predicate, terms)
         else:
             try:

@@ -160,7 +160,7 @@ class Session:
                     and lit.atom.ast_type == clingo.ast.ASTType.SymbolicAtom]
         body_text = ", ".join(_name_anonymous(str(lit), i) for i, lit in enumerate(rule.body))
         bindings = ", ".join(f"{arg} = {value}" for arg, value in zip(rule.head.atom.symbol.arguments, atom.arguments))
-        variables = _variables(body_text)
+        variables = _variables(", ".join(literals))  # not an aggregate's own variables (unsafe outside it)
         self.parts += 1
         head = f"__why{self.parts}"
         text = f"{head}({', '.join(variables)}) :- {body_text}{', ' if bindings else ''}{bindings}."
