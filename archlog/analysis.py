@@ -23,7 +23,7 @@ from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.packages import Executable, share_dirs
-from archlog.facts.compose import compose
+from archlog.facts.compose import add_near_names, compose
 from archlog.facts.store import FactStore
 from archlog.system.link import link
 from archlog.system.node_models import BUILTIN_DIR, load_node_models
@@ -92,8 +92,12 @@ def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], model
     timings["link"] = _lap(clock)
 
     clock = time.perf_counter()
-    store = compose(system, diagnostics, near_threshold)
+    store = compose(system, diagnostics)
     timings["facts"] = _lap(clock)
+
+    clock = time.perf_counter()
+    add_near_names(store, near_threshold, diagnostics)
+    timings["near-miss"] = _lap(clock)
     return Analysis(workspace, system.config, store, diagnostics, timings)
 
 

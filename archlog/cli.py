@@ -7,26 +7,20 @@ import os
 import sys
 from contextlib import nullcontext
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
-from rich.console import Console
-from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
-from rich.table import Table
 
 from archlog import __version__, cli_choices, sandbox
-from archlog.analysis import Analysis, analyse
-from archlog.config import Config, find_config, load_config, workspace_config
 from archlog.diagnostics import SEVERITIES
 from archlog.errors import ConfigError
-from archlog.queries.session import QueryError, Session
-from archlog.reports.codequality import to_codequality
-from archlog.reports.json_report import to_json
-from archlog.reports.report import Report, coverage
-from archlog.reports.sarif import to_sarif
-from archlog.reports.suppress import apply_suppressions, read_baseline
-from archlog.reports.suppress import write_baseline as write_baseline_file
-from archlog.reports.text import print_text
-from archlog.rules.ruleset import RuleError, RuleSet, load_rules
+from archlog.rules.ruleset import RuleError
+
+if TYPE_CHECKING:  # the heavy parts (clingo, libclang, numpy, rich) load in the commands that use them
+
+    from archlog.analysis import Analysis
+    from archlog.config import Config
+    from archlog.rules.ruleset import RuleSet
 
 FAIL_ON = (*SEVERITIES, "never")
 
@@ -81,6 +75,13 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
           quiet: bool = False) -> tuple[Analysis, RuleSet, Config]:
     """Configuration, rules (checked before the slow part), then the analysis, with a progress bar
     on a terminal. The environment is [env] of the configuration with --env over it."""
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+    from archlog.analysis import analyse
+    from archlog.config import find_config, load_config, workspace_config
+    from archlog.rules.ruleset import load_rules
+
     config = load_config(config_path or find_config(list(paths)), profile)
     if config_path is None and config.source is not None:
         config = workspace_config(config)
@@ -135,8 +136,17 @@ def main() -> None:
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
           source_root_dir, output, fail_on, baseline, write_baseline, fail_on_incomplete, quiet) -> None:
     """Check a ROS system configuration and report findings."""
+    from rich.console import Console
+
+    from archlog.queries.session import Session
+    from archlog.reports.codequality import to_codequality
+    from archlog.reports.json_report import to_json
     from archlog.reports.paths import Rebase, source_root
-    from archlog.reports.text import print_concise
+    from archlog.reports.report import Report, coverage
+    from archlog.reports.sarif import to_sarif
+    from archlog.reports.suppress import apply_suppressions, read_baseline
+    from archlog.reports.suppress import write_baseline as write_baseline_file
+    from archlog.reports.text import print_concise, print_text
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env, quiet or fmt != "text" and output is None)
@@ -201,6 +211,7 @@ def query(paths, launches, args, models, rule_paths, config_path, profile, near_
           fmt) -> None:
     """Print every binding of the variables of GOAL (the last argument: a conjunction of literals such
     as 'publisher(P, N, T, _), not subscribed(T)') over the facts and derived relations."""
+    from archlog.queries.session import QueryError, Session
     from archlog.queries.table import print_result
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
@@ -217,6 +228,7 @@ def query(paths, launches, args, models, rule_paths, config_path, profile, near_
 def repl(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env) -> None:
     """Interactive queries over the system: extraction runs once."""
     from archlog.queries.repl import run_repl
+    from archlog.queries.session import Session
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env)
@@ -234,6 +246,7 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
 def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus,
           depth, parameters, output) -> None:
     """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
+    from archlog.queries.session import Session
     from archlog.reports import graph as views
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
@@ -295,6 +308,9 @@ def observe_command(master_uri, output, write_models, node_info) -> None:
 def diff(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, observed,
          fmt) -> None:
     """Compare the recovered architecture with an observed one (exit 1 when they differ)."""
+    from rich.console import Console
+    from rich.table import Table
+
     from archlog import observe
 
     analysis, _ruleset, _config = _load(paths, launches, args, models, rule_paths, config_path, profile,
@@ -327,6 +343,9 @@ def diff(paths, launches, args, models, rule_paths, config_path, profile, near_m
 def behavior(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env,
              fmt) -> None:
     """Print each node's behavior: state, and the triggers, guards and required inputs of its outputs."""
+    from rich.console import Console
+
+    from archlog.queries.session import Session
     from archlog.reports.behavior import behavior_model, print_behavior
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
@@ -346,6 +365,8 @@ def behavior(paths, launches, args, models, rule_paths, config_path, profile, ne
               "findings are left out (their derived relations stay usable).")
 def test_rules(folders, update, only) -> None:
     """Run each rule's fixtures and compare with their .expected files (exit 1 on a difference)."""
+    from rich.console import Console
+
     from archlog.queries.rule_tests import run_rule_tests
 
     sys.exit(0 if run_rule_tests(list(folders), update, Console(soft_wrap=True), only) else 1)
@@ -360,7 +381,9 @@ def test_rules(folders, update, only) -> None:
 def rule_command(rule_id, rule_paths, config_path) -> None:
     """Explain a rule (id, id prefix or name): description, an example finding, how to fix it.
     Without ID, list every rule."""
+    from archlog.config import find_config, load_config, workspace_config
     from archlog.reports.rule_help import listing, lookup
+    from archlog.rules.ruleset import load_rules
 
     config = load_config(config_path or find_config([]), None)
     if config_path is None and config.source is not None:

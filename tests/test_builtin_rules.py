@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from archlog.facts.similarity import near_pairs
+from archlog.facts.compose import add_near_names
 from archlog.facts.store import FactStore
 from archlog.rules.engine import Engine
 from archlog.rules.ruleset import load_rules
@@ -12,15 +12,12 @@ ENGINE = Engine(load_rules([]))
 
 
 def system(*ports: tuple[str, str, str, object, str]) -> FactStore:
-    """Ports as (relation, port id, node, name, type); names are also checked for near misses."""
+    """Ports as (relation, port id, node, name, type); near misses are added as `check` adds them."""
     store = FactStore()
     for relation, pid, node, name, type_ in ports:
         store.add(relation, pid, node, name, type_)
         store.locate(pid, f"{node.strip('/')}.py", int(pid[1:]))
-    names = {p[3] for p in ports if isinstance(p[3], str)}
-    for a, b, score in near_pairs(names):
-        store.add("near_name", a, b, round(score * 1000))
-        store.add("near_name", b, a, round(score * 1000))
+    add_near_names(store, 0.5)
     return store
 
 
@@ -84,3 +81,23 @@ def test_unreachable_required_input_lists_what_it_silences() -> None:
     assert finding.values["silenced"] == "/follower"
     assert (finding.location.file, finding.location.line) == ("lattice.cpp", 20)
     assert [(r.file, r.line) for r in finding.related] == [("lattice.cpp", 40)]
+
+
+def test_near_miss_names_the_nearest_namespace_and_relates_the_equally_near_others() -> None:
+    store = system(("subscriber", "p1", "/arm/ctl", "/arm/joint_cmd", "trajectory_msgs/JointTrajectory"),
+                   ("publisher", "p2", "/alm/planner", "/alm/joint_cmd", "trajectory_msgs/JointTrajectory"),
+                   ("publisher", "p3", "/arm/planner", "/arm/joint_cmds", "trajectory_msgs/JointTrajectory"),
+                   ("publisher", "p4", "/arn/planner", "/arn/joint_cmd", "trajectory_msgs/JointTrajectory"))
+    [finding] = [f for f in ENGINE.run(store)[1] if f.rule.id == "AL102"]
+    assert finding.values["other_topic"] == "/arm/joint_cmds" and finding.values["others"] == 2
+    assert sorted(r.line for r in finding.related) == [2, 3, 4]
+
+
+def test_near_miss_in_a_fleet_is_the_same_robots_counterpart() -> None:
+    ports = [port for k in range(1, 4) for port in (
+        ("publisher", f"p{k}1", f"/robot_{k}/lidar", f"/robot_{k}/front/scan", "sensor_msgs/LaserScan"),
+        ("subscriber", f"p{k}2", f"/robot_{k}/filter", f"/robot_{k}/front/{'scna' if k == 2 else 'scan'}",
+         "sensor_msgs/LaserScan"))]
+    findings = [f for f in ENGINE.run(system(*ports))[1] if f.rule.id == "AL102"]
+    assert [(f.values["topic"], f.values["other_topic"], f.values["others"]) for f in findings] == [
+        ("/robot_2/front/scna", "/robot_2/front/scan", 0)]

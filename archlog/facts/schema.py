@@ -136,9 +136,15 @@ RELATIONS: tuple[Relation, ...] = (
           "?(expr) in output"), ("expr", "str", "the expression"),
          ("file", "str", "file"), ("line", "int", "line")),
     _rel("derived", "near_name",
-         "Two names used in the system whose segment distance is below the near-miss threshold.",
+         "Two names used in the system, one of them used by one side only (published and not subscribed, served "
+         "and not called, or the reverse), whose segment distance is below the near-miss threshold.",
          ("a", "name", "a name"), ("b", "name", "another name"),
          ("distance", "int", "segment-aware Damerau-Levenshtein distance, in thousandths")),
+    _rel("derived", "near_scope",
+         "For a near_name pair: how far apart their namespaces are, seen from the first name.",
+         ("a", "name", "a name"), ("b", "name", "another name"),
+         ("up", "int", "namespace levels above a's namespace to the nearest namespace a and b share; 0 when "
+          "both are in the same namespace")),
 )
 
 BY_NAME: dict[str, Relation] = {r.name: r for r in RELATIONS}
@@ -192,6 +198,9 @@ DERIVED: tuple[Relation, ...] = (
              _SUB, _NODE),
     _derived(_AL601, "near_publisher", "A candidate for a starved input: a published near-miss name, or a topic of "
              "its type published to nobody (AL601's `near` list).", _SUB, ("topic", "name", "the candidate topic")),
+    _derived("AL102_near_miss_topic.lp", "near_also", "Another candidate as near as the one AL102 names for a "
+             "dangling port (AL102's `also` list: the finding's related locations).", _PORT,
+             ("other", "id", "the other candidate port")),
 )
 
 DERIVED_BY_NAME: dict[str, Relation] = {r.name: r for r in DERIVED}

@@ -1,4 +1,4 @@
-"""Near-miss names: segment-aware Damerau-Levenshtein distance with a prefix-filtered join.
+"""Near-miss names: segment-aware Damerau-Levenshtein distance, joined through segment deletions.
 
 Names are split on '/' and '_' (an absolute name keeps its empty root segment). Substituting one
 segment for another costs the character-level Damerau-Levenshtein distance of the two;
@@ -8,6 +8,10 @@ divided by the mean segment count. Two names are near misses when that is below 
 much as three character edits, so /a/point and /a/line stay apart while /a/point and
 /a/point_class, or /base_waypoint and /base_waypoints, are near.
 
+Numbers tell instances apart: two names whose numbers (their digit runs, in order) differ are
+never near, so /robot_3/scan is not a typo of /robot_4/scan, nor camera1 of camera2; and a segment
+that is a number is never substituted (replacing it costs a deletion and an insertion, 3).
+
 Measuring costs the product of two names' segment counts (and of two segments' lengths), so names
 past `MAX_SEGMENTS` segments or `MAX_CHARACTERS` characters (no ROS name comes near either) are not
 compared: `too_long()` says which, and why.
@@ -15,18 +19,22 @@ compared: `too_long()` says which, and why.
 
 from __future__ import annotations
 
+import math
 import re
+from collections import defaultdict
 from collections.abc import Iterable
 
 import numpy as np
 from rapidfuzz import process
-from rapidfuzz.distance import OSA, DamerauLevenshtein
+from rapidfuzz.distance import DamerauLevenshtein
 
 _SPLIT = re.compile(r"[/_]")
+_NUMBER = re.compile(r"\d+")
 INDEL = 1.5
-_BLOCK = 1024
 MAX_SEGMENTS = 64
 MAX_CHARACTERS = 1024
+_MAX_KEYS = 512  # a name with more variants than this is measured against every name of its group
+_MAX_WORD_EDITS = 4  # word replacements up to this character distance are enumerated; longer names are measured
 
 
 def segments(name: str) -> list[str]:
@@ -44,71 +52,258 @@ def too_long(name: str) -> str | None:
 
 
 def distance(a: str, b: str) -> float:
-    """The normalised segment distance of two names."""
-    return _Measure([a, b]).distances(np.array([0]), np.array([1]))[0]
+    """The normalised segment distance of two names (infinite when their numbers differ)."""
+    if _NUMBER.findall(a) != _NUMBER.findall(b):
+        return math.inf
+    return float(_Measure([a, b]).distances(np.array([0]), np.array([1]))[0])
+
+
+def namespace_steps(a: str, b: str) -> int:
+    """How many namespace levels above a's namespace the nearest namespace of a and b is (0 when
+    they share their namespace): /robot_1/front/scan and /robot_1/rear/scan are 1 apart."""
+    mine, theirs = a.split("/")[:-1], b.split("/")[:-1]
+    shared = next((k for k, (x, y) in enumerate(zip(mine, theirs)) if x != y), min(len(mine), len(theirs)))
+    return len(mine) - shared
 
 
 def near_pairs(names: Iterable[str], threshold: float = 0.5) -> list[tuple[str, str, float]]:
     """Every unordered pair of distinct names whose distance is below `threshold` (names that are
-    `too_long()` are left out).
+    `too_long()` are left out)."""
+    listed = list(names)
+    return near_names(listed, listed, threshold)
 
-    Each segment is encoded as one character, so rapidfuzz's optimal-string-alignment distance
-    over the encoded names (every segment edit counted 1) bounds the real distance from below.
-    That bound runs in C over all pairs, a block of rows at a time; only pairs under it are
-    measured exactly, all at once.
+
+def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 0.5) -> list[tuple[str, str, float]]:
+    """Every unordered pair (a, b), a < b, of a name of `queries` and another name of `queries` or
+    `names` whose distance is below `threshold`, sorted; names that are `too_long()` are left out.
+
+    Candidates meet on keys. An alignment of a query q with a name n substitutes, deletes and
+    transposes segments of q and inserts segments of n; its cost is below the budget B that the
+    threshold gives their lengths. So q's variants (each segment kept, deleted, swapped with its
+    neighbour, or replaced by a word within that budget's character distance) include one equal
+    to a variant of n with some of its segments deleted, and each side spends less than B on its
+    variant. Only names that meet are measured, all at once. Names are grouped by their numbers
+    first (names whose numbers differ are never near): copies of one name under many numbered
+    namespaces never meet. A name with too many variants is measured against its whole group.
     """
-    measure = _Measure(sorted({name for name in names if too_long(name) is None}))
-    lengths = measure.lengths
-    first, second = [], []
-    for start in range(0, len(measure.names), _BLOCK):
-        rows = slice(start, start + _BLOCK)
-        bound = process.cdist(measure.encoded[rows], measure.encoded, scorer=OSA.distance, dtype=np.float32, workers=-1)
-        bound -= lengths[rows, None] * (threshold / 2)
-        i, j = np.nonzero(bound < lengths[None, :] * (threshold / 2))
-        i += start
-        first.append(i[i < j])
-        second.append(j[i < j])
-    i, j = (np.concatenate(first), np.concatenate(second)) if first else (np.array([], int), np.array([], int))
+    asked = {q for q in queries if too_long(q) is None}
+    measure = _Measure(sorted(asked | {n for n in names if too_long(n) is None}))
+    groups: dict[tuple[str, ...], list[int]] = defaultdict(list)
+    for index, name in enumerate(measure.names):
+        groups[tuple(_NUMBER.findall(name))].append(index)
+    budgets = {length: _budgets(length, threshold) for length in set(measure.lengths.tolist())}
+    words = _Words(measure.words, max((budgets[int(measure.lengths[i])][0] for i in range(len(measure.names))
+                                       if measure.names[i] in asked), default=0.0))
+    variants = _Variants(words)
+    pairs: set[tuple[int, int]] = set()
+    for members in groups.values():
+        found = [i for i in members if measure.names[i] in asked]
+        if found:
+            pairs |= _candidates(measure, members, found, budgets, variants, threshold)
+    if not pairs:
+        return []
+    i, j = (np.array(column) for column in zip(*sorted(pairs)))
     scores = measure.distances(i, j, threshold)
     keep = scores < threshold
-    return sorted((measure.names[a], measure.names[b], float(d)) for a, b, d in zip(i[keep], j[keep], scores[keep]))
+    return [(measure.names[a], measure.names[b], float(d)) for a, b, d in zip(i[keep], j[keep], scores[keep])]
+
+
+class _Wide(Exception):
+    """A name with more variants than are worth indexing."""
+
+
+class _Words:
+    """The words (segments) within a character distance below `budget` of each word. Two words
+    with different numbers in both (3 and 7, robot3 and robot7) are not near: swapping one number
+    for another changes the name's numbers, and names whose numbers differ are never near. A
+    number is near no word (substituting it costs as much as deleting it and inserting the other)."""
+
+    def __init__(self, words: list[str], budget: float) -> None:
+        self.budget = min(budget, _MAX_WORD_EDITS + 1)
+        self.number = [word.isdigit() for word in words]
+        self.near: dict[int, list[tuple[int, float]]] = defaultdict(list)
+        numbers = [_NUMBER.findall(word) for word in words]
+        cutoff = max(0, math.ceil(self.budget) - 1)
+        for start in range(0, len(words) if cutoff else 0, 1024):
+            block = process.cdist(words[start:start + 1024], words, scorer=DamerauLevenshtein.distance,
+                                  score_cutoff=cutoff, dtype=np.int32, workers=-1)
+            for a, b in zip(*np.nonzero(block <= cutoff)):
+                mine, theirs = numbers[start + a], numbers[b]
+                if start + a != b and not (mine and theirs and mine != theirs) and not (
+                        self.number[start + a] or self.number[b]):
+                    self.near[int(start + a)].append((int(b), float(block[a, b])))
+
+
+def _candidates(measure: _Measure, members: list[int], asked: list[int], budgets: dict[int, tuple[float, float]],
+                variants: _Variants, threshold: float) -> set[tuple[int, int]]:
+    """Pairs (i < j) of a name of `asked` and another of `members` whose variants meet at a cost
+    (both sides' edits) below what the threshold allows their lengths."""
+    index: dict[str, list[tuple[int, float]]] = defaultdict(list)
+    lengths = measure.lengths.tolist()
+    pairs: set[tuple[int, int]] = set()
+    for i in asked:
+        try:
+            found = variants.of(measure.codes[i, : measure.lengths[i]].tolist(), budgets[int(measure.lengths[i])][0])
+        except _Wide:
+            pairs |= {(min(i, j), max(i, j)) for j in members if i != j}
+            continue
+        for key, spent in found.items():
+            index[key].append((i, spent))
+    for entries in index.values():
+        entries.sort(key=lambda entry: entry[1])
+    longest = max(lengths[i] for i in asked)
+    for j in members:
+        keys = _deletions(measure.encoded[j], budgets[int(measure.lengths[j])][1])
+        if keys is None:
+            pairs |= {(min(i, j), max(i, j)) for i in asked if i != j}
+            continue
+        cap = threshold * (longest + lengths[j]) / 2
+        for key, deleted in keys.items():
+            for i, spent in index.get(key, ()):
+                if spent + deleted >= cap:
+                    break
+                if i != j and spent + deleted < threshold * (lengths[i] + lengths[j]) / 2:
+                    pairs.add((min(i, j), max(i, j)))
+    return pairs
+
+
+class _Variants:
+    """Queries' variants, enumerated once per shape: the numbers of a name (which are never
+    substituted) are placeholders, so /robot_1/scan and /robot_2/scan share one enumeration."""
+
+    def __init__(self, words: _Words) -> None:
+        self.words = words
+        self.shapes: dict[tuple[tuple[int, ...], float], dict[str, float] | None] = {}
+
+    def of(self, codes: list[int], budget: float) -> dict[str, float]:
+        numbers = [code for code in codes if self.words.number[code]]
+        placeholders = iter(range(-1, -len(numbers) - 1, -1))
+        shape = tuple(next(placeholders) if self.words.number[code] else code for code in codes)
+        if (shape, budget) not in self.shapes:
+            try:
+                self.shapes[shape, budget] = _variants(list(shape), budget, self.words)
+            except _Wide:
+                self.shapes[shape, budget] = None
+        found = self.shapes[shape, budget]
+        if found is None:
+            raise _Wide
+        if not numbers:
+            return found
+        table = {k: chr(0x100 + code) for k, code in enumerate(numbers, 1)}
+        return {key.translate(table): spent for key, spent in found.items()}
+
+
+def _variants(codes: list[int], budget: float, words: _Words) -> dict[str, float]:
+    """A query's variants (one character per segment; a negative code -k is the k-th number's
+    placeholder, character k) of cost below `budget`, each with its least cost: segments kept,
+    deleted (1.5), swapped with a different neighbour (1), or replaced by a near word."""
+    if budget > words.budget:
+        raise _Wide
+    found: dict[str, float] = {}
+    steps = [0]
+
+    def walk(at: int, spent: float, prefix: str) -> None:
+        steps[0] += 1
+        if steps[0] > 16 * _MAX_KEYS:
+            raise _Wide
+        if at == len(codes):
+            found[prefix] = min(spent, found.get(prefix, spent))
+            return
+        here = codes[at]
+        walk(at + 1, spent, prefix + _char(here))
+        if spent + INDEL < budget:
+            walk(at + 1, spent + INDEL, prefix)
+        for other, cost in words.near.get(here, ()):
+            if spent + cost < budget:
+                walk(at + 1, spent + cost, prefix + _char(other))
+        if at + 1 < len(codes) and codes[at + 1] != here and spent + 1 < budget:
+            walk(at + 2, spent + 1, prefix + _char(codes[at + 1]) + _char(here))
+
+    walk(0, 0.0, "")
+    return found
+
+
+def _char(code: int) -> str:
+    """A segment code as one character (a number's placeholder -k as character k)."""
+    return chr(0x100 + code) if code >= 0 else chr(-code)
+
+
+def _deletions(encoded: str, budget: float) -> dict[str, float] | None:
+    """The name (one character per segment) with segments deleted at 1.5 each, below `budget`,
+    each with its cost; None when that set would be too large to be worth indexing."""
+    most = max(0, math.ceil(budget / INDEL) - 1)
+    if sum(math.comb(len(encoded), r) for r in range(min(most, len(encoded)) + 1)) > _MAX_KEYS:
+        return None
+    level, keys = {encoded}, {encoded: 0.0}
+    for count in range(1, min(most, len(encoded)) + 1):
+        level = {key[:p] + key[p + 1:] for key in level for p in range(len(key))}
+        for key in level:
+            keys.setdefault(key, count * INDEL)
+    return keys
+
+
+def _budgets(length: int, threshold: float) -> tuple[float, float]:
+    """For a name of `length` segments: the most a query may spend on its own edits, and the most
+    a name may spend on deletions, in an alignment cheaper than the threshold allows. The cost of
+    two names of lengths l and m is below threshold * (l + m) / 2 and at least 1.5 |l - m|."""
+    if threshold >= 2 * INDEL:
+        return math.inf, math.inf
+    query = deleted = 0.0
+    other = 1
+    while INDEL * (other - length) < threshold * (length + other) / 2:
+        limit = threshold * (length + other) / 2
+        if INDEL * abs(other - length) < limit:
+            query = max(query, limit - INDEL * max(0, other - length))
+            deleted = max(deleted, limit)
+        other += 1
+    return query, deleted
 
 
 class _Measure:
-    """Names as arrays of segment codes, and the character distance of every two segments."""
+    """Names as arrays of segment codes (and one character per segment, for the deletion keys)."""
 
     def __init__(self, names: list[str]) -> None:
         self.names = names
-        split = [segments(n) for n in names]
         vocabulary: dict[str, int] = {}
-        codes = [[vocabulary.setdefault(seg, len(vocabulary)) for seg in segs] for segs in split]
+        codes = [[vocabulary.setdefault(seg, len(vocabulary)) for seg in segments(n)] for n in names]
+        self.words = list(vocabulary)
         self.encoded = ["".join(chr(0x100 + c) for c in row) for row in codes]
-        self.lengths = np.array([len(row) for row in codes], dtype=np.float32)
+        self.lengths = np.array([len(row) for row in codes], dtype=np.int64)
         width = max((len(row) for row in codes), default=0)
         self.codes = np.full((len(codes), width), -1, dtype=np.int64)
         for k, row in enumerate(codes):
             self.codes[k, : len(row)] = row
-        words = list(vocabulary)
-        self.cost = process.cdist(words, words, scorer=DamerauLevenshtein.distance, dtype=np.float32, workers=-1)
 
     def distances(self, first: np.ndarray, second: np.ndarray, limit: float | None = None) -> np.ndarray:
         """Normalised segment distances of the pairs (first[k], second[k]); with `limit`, values
         at or above it may come back as infinity."""
         result = np.zeros(len(first))
-        la_all, lb_all = self.lengths[first].astype(int), self.lengths[second].astype(int)
+        la_all, lb_all = self.lengths[first], self.lengths[second]
         for la, lb in set(zip(la_all.tolist(), lb_all.tolist())):
             ks = np.nonzero((la_all == la) & (lb_all == lb))[0]
             budget = None if limit is None else limit * (la + lb) / 2
-            dist = _dl(self.codes[first[ks], :la], self.codes[second[ks], :lb], self.cost, budget)
+            left, right = self.codes[first[ks], :la], self.codes[second[ks], :lb]
+            dist = _dl(left, right, self._costs(left[:, :, None], right[:, None, :]), budget)
             result[ks] = dist * 2 / (la + lb)
         return result
 
+    def _costs(self, left: np.ndarray, right: np.ndarray) -> np.ndarray:
+        """The character distance of every segment of `left` to every one of `right` (broadcast),
+        measured once per distinct pair of words."""
+        a, b = np.broadcast_arrays(left, right)
+        flat = a.ravel() * len(self.words) + b.ravel()
+        distinct, inverse = np.unique(flat, return_inverse=True)
+        costs = np.array([0.0 if x == y else 2 * INDEL if self.words[x].isdigit() or self.words[y].isdigit()
+                          else DamerauLevenshtein.distance(self.words[x], self.words[y])
+                          for x, y in zip(*np.divmod(distinct, len(self.words)))], dtype=np.float32)
+        return costs[inverse].reshape(a.shape)
 
-def _dl(left: np.ndarray, right: np.ndarray, cost: np.ndarray, budget: float | None) -> np.ndarray:
-    """Damerau-Levenshtein (optimal string alignment) over segment codes, vectorised over pairs.
-    With a budget, cells that only paths costing at least the budget can cross are skipped."""
+
+def _dl(left: np.ndarray, right: np.ndarray, sub: np.ndarray, budget: float | None) -> np.ndarray:
+    """Damerau-Levenshtein (optimal string alignment) over segment codes, vectorised over pairs,
+    with `sub` the substitution cost of every two segments. With a budget, cells that only paths
+    costing at least the budget can cross are skipped."""
     pairs, la, lb = left.shape[0], left.shape[1], right.shape[1]
-    sub = cost[left[:, :, None], right[:, None, :]]
     d = np.full((pairs, la + 1, lb + 1), np.inf, dtype=np.float32)
     d[:, :, 0] = np.arange(la + 1) * INDEL
     d[:, 0, :] = np.arange(lb + 1) * INDEL

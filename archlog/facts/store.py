@@ -81,12 +81,19 @@ class FactStore:
         """A CSV- and JSON-friendly form: an unknown is written `?(expr)` (`unknown_value` has its place)."""
         return str(cell) if isinstance(cell, Unknown) else cell
 
-    def symbols(self) -> list[clingo.Symbol]:
-        return [
-            clingo.Function(name, [self.term(c) for c in row])
-            for name, rows in self._rows.items()
-            for row in rows
-        ]
+    def program(self) -> str:
+        """Every row as a clingo fact, one program text: clingo parses it, with no Python call
+        per fact (a string is cut at a NUL character, as clingo.String cuts it)."""
+        return "".join(f"{name}({','.join(map(self._text, row))}).\n" for name, rows in self._rows.items()
+                       for row in rows)
+
+    def _text(self, cell: Cell) -> str:
+        if isinstance(cell, Unknown):
+            return f"unknown({self._unknowns[cell]})"
+        if isinstance(cell, int):
+            return str(int(cell))
+        text = cell.split("\0", 1)[0].replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+        return f'"{text}"'
 
     def export(self, directory: Path, fmt: str) -> list[Path]:
         """Write one file per relation (every relation of the schema, even when empty)."""

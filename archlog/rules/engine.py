@@ -5,6 +5,7 @@ from __future__ import annotations
 import difflib
 import hashlib
 import re
+import time
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
@@ -68,18 +69,24 @@ class Engine:
     def __init__(self, ruleset: RuleSet) -> None:
         self.ruleset = ruleset
         self.declared = check(ruleset)
+        self.timings: dict[str, float] = {}  # seconds of the last run's phases
 
     def run(self, store: FactStore) -> tuple[clingo.Control, list[Finding]]:
         ctl = self.ground(store)
         return ctl, self.findings(ctl, store)
 
     def ground(self, store: FactStore) -> clingo.Control:
+        clock = time.perf_counter()
         ctl = clingo.Control(["--warn=none"])
         ctl.add("base", [], self.declared + "\n".join(p.text for p in self.ruleset.programs))
-        with ctl.backend() as backend:
-            for symbol in store.symbols():
-                backend.add_rule([backend.add_atom(symbol)])
+        ctl.add("base", [], store.program())
+        self.timings["to-clingo"] = time.perf_counter() - clock
+        clock = time.perf_counter()
         ctl.ground([("base", [])], context=FUNCTIONS)
+        stratified = ctl.solve().satisfiable and ctl.statistics["problem"]["lp"]["bodies"] == 0
+        self.timings["ground"] = time.perf_counter() - clock
+        if stratified:
+            return ctl  # every atom is a fact
         for atom in ctl.symbolic_atoms:
             if not atom.is_fact:
                 name = atom.symbol.name
@@ -90,20 +97,26 @@ class Engine:
         return ctl
 
     def findings(self, ctl: clingo.Control, store: FactStore) -> list[Finding]:
+        clock = time.perf_counter()
         result = []
         for rule in self.ruleset.rules:
             for atom in ctl.symbolic_atoms.by_signature(rule.predicate, len(rule.columns)):
                 values = {c: store.from_term(a) for c, a in zip(rule.columns, atom.symbol.arguments)}
+                listed: list[str] = []
                 for name, (relation, column) in rule.lists.items():
                     key = atom.symbol.arguments[rule.columns.index(column)]
-                    items = {render(store.from_term(row.symbol.arguments[1]))
-                             for row in ctl.symbolic_atoms.by_signature(relation, 2) if row.symbol.arguments[0] == key}
-                    values[name] = ", ".join(sorted(items)) or "none"
-                result.append(_finding(rule, values, store))
+                    items = sorted({render(store.from_term(row.symbol.arguments[1]))
+                                    for row in ctl.symbolic_atoms.by_signature(relation, 2)
+                                    if row.symbol.arguments[0] == key})
+                    values[name] = ", ".join(items) or "none"
+                    listed += items
+                result.append(_finding(rule, values, store, listed))
+        self.timings["findings"] = time.perf_counter() - clock
         return sorted(result, key=lambda f: (f.location.file, f.location.line, f.rule.id, f.message))
 
 
-def _finding(rule: Rule, values: dict[str, Cell], store: FactStore) -> Finding:
+def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list[str]) -> Finding:
+    """A finding; listed items that are located ids (ports, elements) are related locations too."""
     def locate(column: str) -> Location:
         found = store.location(str(values[column]))
         return Location(*found) if found else Location("", 0, 0)
@@ -116,7 +129,8 @@ def _finding(rule: Rule, values: dict[str, Cell], store: FactStore) -> Finding:
             if render(value) not in bucket:
                 bucket.append(render(value))
     message = rule.message.format(**{k: render(v) for k, v in values.items()})
-    return Finding(rule, values, message, locate(rule.location), [locate(c) for c in rule.related], subjects)
+    also = [Location(*found) for item in listed if (found := store.location(item))]
+    return Finding(rule, values, message, locate(rule.location), [locate(c) for c in rule.related] + also, subjects)
 
 
 # -- checking rule programs ---------------------------------------------------------------

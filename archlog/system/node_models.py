@@ -45,13 +45,21 @@ BUILTIN_DIR = Path(__file__).resolve().parent.parent / "models"
 UNSET = "<not set>"  # the value of a `set: true` condition's parameter when the configuration lacks it
 
 
-class LineLoader(bounded_yaml.BoundedLoader):
-    """A YAML loader (within the budget) that records each mapping's line as key '__line__'."""
+class _Lines:
+    """Records each mapping's line as key '__line__'."""
 
     def construct_mapping(self, node: yaml.MappingNode, deep: bool = False) -> dict:
-        mapping = super().construct_mapping(node, deep=deep)
+        mapping = super().construct_mapping(node, deep=deep)  # type: ignore[misc]
         mapping["__line__"] = node.start_mark.line + 1
         return mapping
+
+
+class LineLoader(_Lines, bounded_yaml.BoundedLoader):
+    """A YAML loader (within the budget) that records each mapping's line as key '__line__'."""
+
+
+class ShippedLoader(_Lines, getattr(yaml, "CSafeLoader", yaml.SafeLoader)):  # type: ignore[misc]
+    """archlog's own models (trusted, no budget needed) with libyaml's parser: ten times faster."""
 
 
 @dataclass
@@ -72,7 +80,8 @@ def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: Diagn
         if not path.is_file():
             raise ConfigError(f"model file not found: {path}")
         shown = workspace.display(path)
-        for summary, instance in load_models(path, shown, diagnostics):
+        loader = ShippedLoader if target is models.builtin else LineLoader
+        for summary, instance in load_models(path, shown, diagnostics, loader):
             if instance:
                 line = summary.ports[0].line - 1 if summary.ports else 1
                 element = Element(f"m{index:03d}{len(models.externals):03d}", shown, max(line, 1))
@@ -82,10 +91,11 @@ def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: Diagn
     return models
 
 
-def load_models(path: Path, shown: str, diagnostics: DiagnosticSink) -> list[tuple[NodeSummary, str | None]]:
+def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
+                loader: type = LineLoader) -> list[tuple[NodeSummary, str | None]]:
     """(summary, external instance name or None) for every valid model in the file."""
     try:
-        data = yaml.load(sandbox.read_text(path, "config"), Loader=LineLoader)
+        data = yaml.load(sandbox.read_text(path, "config"), Loader=loader)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         diagnostics.add(shown, mark.line + 1 if mark else 1, "model-yaml", f"model file does not parse: {exc}", "error")
