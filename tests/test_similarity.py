@@ -43,6 +43,13 @@ def test_names_whose_numbers_differ_are_never_near() -> None:
     assert distance("/robot_3/front_lidar/scan", "/robot_4/front_lidar/scan") == float("inf")
     assert distance("/camera1/image_raw", "/camera2/image_raw") == float("inf")
     assert distance("/robot_3/front_lidar/scna", "/robot_3/front_lidar/scan") < 0.5
+
+
+def test_a_missing_namespace_is_near_whatever_its_numbers() -> None:
+    assert distance("/cmd_vel", "/robot1/cmd_vel") < 0.5
+    assert near_names(["/cmd_vel"], ["/robot1/cmd_vel", "/robot2/cmd_vel", "/robot1/odom"]) == [
+        ("/cmd_vel", "/robot1/cmd_vel", distance("/cmd_vel", "/robot1/cmd_vel")),
+        ("/cmd_vel", "/robot2/cmd_vel", distance("/cmd_vel", "/robot2/cmd_vel"))]
     fleet = [f"/robot_{k}/front_lidar/{leaf}" for k in range(30) for leaf in ("scan", "points")]
     pairs = near_pairs([*fleet, "/robot_7/front_lidar/scna"])
     assert [(a, b) for a, b, _ in pairs] == [("/robot_7/front_lidar/scan", "/robot_7/front_lidar/scna")]

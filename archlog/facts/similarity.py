@@ -10,7 +10,10 @@ much as three character edits, so /a/point and /a/line stay apart while /a/point
 
 Numbers tell instances apart: two names whose numbers (their digit runs, in order) differ are
 never near, so /robot_3/scan is not a typo of /robot_4/scan, nor camera1 of camera2; and a segment
-that is a number is never substituted (replacing it costs a deletion and an insertion, 3).
+that is a number is never substituted (replacing it costs a deletion and an insertion, 3). One
+exception: a name and the same name under more namespaces (/cmd_vel and /robot1/cmd_vel) are
+measured as any other pair, since a missing or extra namespace is a misconfiguration, not
+another instance.
 
 Measuring costs the product of two names' segment counts (and of two segments' lengths), so names
 past `MAX_SEGMENTS` segments or `MAX_CHARACTERS` characters (no ROS name comes near either) are not
@@ -52,8 +55,9 @@ def too_long(name: str) -> str | None:
 
 
 def distance(a: str, b: str) -> float:
-    """The normalised segment distance of two names (infinite when their numbers differ)."""
-    if _NUMBER.findall(a) != _NUMBER.findall(b):
+    """The normalised segment distance of two names (infinite when their numbers differ, unless one
+    is the other under more namespaces)."""
+    if _NUMBER.findall(a) != _NUMBER.findall(b) and not (_tails(a) & {b} or _tails(b) & {a}):
         return math.inf
     return float(_Measure([a, b]).distances(np.array([0]), np.array([1]))[0])
 
@@ -85,6 +89,7 @@ def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 
     variant. Only names that meet are measured, all at once. Names are grouped by their numbers
     first (names whose numbers differ are never near): copies of one name under many numbered
     namespaces never meet. A name with too many variants is measured against its whole group.
+    A query also meets the same name under more or fewer namespaces, whatever their numbers.
     """
     asked = {q for q in queries if too_long(q) is None}
     measure = _Measure(sorted(asked | {n for n in names if too_long(n) is None}))
@@ -100,12 +105,34 @@ def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 
         found = [i for i in members if measure.names[i] in asked]
         if found:
             pairs |= _candidates(measure, members, found, budgets, variants, threshold)
+    pairs |= _namespaced(measure, asked)
     if not pairs:
         return []
     i, j = (np.array(column) for column in zip(*sorted(pairs)))
     scores = measure.distances(i, j, threshold)
     keep = scores < threshold
     return [(measure.names[a], measure.names[b], float(d)) for a, b, d in zip(i[keep], j[keep], scores[keep])]
+
+
+def _tails(name: str) -> set[str]:
+    """The name without one or more of its leading namespaces (/a/b/c: /b/c and /c)."""
+    parts = name.split("/")
+    return {"/" + "/".join(parts[k:]) for k in range(2, len(parts))} if name.startswith("/") else set()
+
+
+def _namespaced(measure: _Measure, asked: set[str]) -> set[tuple[int, int]]:
+    """Pairs (i < j) of a name of `asked` and the same name under more or fewer namespaces."""
+    position = {name: index for index, name in enumerate(measure.names)}
+    under: dict[str, list[int]] = defaultdict(list)
+    for index, name in enumerate(measure.names):
+        for tail in _tails(name):
+            under[tail].append(index)
+    pairs = set()
+    for name in asked:
+        i = position[name]
+        for j in [*under.get(name, ()), *(position[t] for t in _tails(name) if t in position)]:
+            pairs.add((min(i, j), max(i, j)))
+    return pairs
 
 
 class _Wide(Exception):
