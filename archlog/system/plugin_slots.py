@@ -17,9 +17,9 @@ from typing import Any
 from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
+from archlog.extract.library_ports import reconfigure_ports
 from archlog.extract.summary import PluginSlot, Port
 from archlog.system.node_models import PluginClass, param_text
-from archlog.system.robot_description import RECONFIGURE
 from archlog.values import Unknown
 
 _ABSENT = object()
@@ -62,8 +62,8 @@ def _loaded(slot: PluginSlot, node: LaunchNode, config: LaunchConfig,
 
 
 def _class_ports(plugin: PluginClass, namespace: str, node: LaunchNode, config: LaunchConfig) -> list[Port]:
-    ports = [Port(kind, names.join(namespace, suffix), type_, plugin.file, plugin.line)
-             for kind, suffix, type_ in RECONFIGURE] if plugin.reconfigure else []
+    ports = [Port(*port, plugin.file, plugin.line) for port in reconfigure_ports(namespace)] \
+        if plugin.reconfigure else []
     for kind, entry in plugin.ports:
         for item in _items(entry.get("each"), namespace, node, config):
             def fill(text: str, item: str = item) -> str:
