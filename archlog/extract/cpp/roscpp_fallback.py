@@ -8,11 +8,15 @@ from functools import lru_cache
 
 from archlog.extract.cpp.clang_ast import CALL_WINDOW, line_finder, type_from_spelling, unquote
 from archlog.extract.cpp.handles import METHODS, NODE_HANDLE, NODELET_HANDLES
+from archlog.extract.library_ports import reconfigure_ports
 from archlog.extract.summary import Port
 from archlog.values import Unknown, Value
 
 _FALLBACK = re.compile(r"(\w+)\s*(?:\.|->)\s*(advertise|subscribe|advertiseService|serviceClient)\s*"
                        r"(?:<\s*([\w:\s]+?)\s*>)?\s*\(\s*(\"(?:[^\"\\]|\\.)*\"|\w+)")
+# a dynamic_reconfigure server built on a handle (`new dynamic_reconfigure::Server<Config>(nh)`, or a
+# variable `dynamic_reconfigure::Server<Config> server(nh)`): its Config header is generated at build time
+_RECONFIGURE = re.compile(r"dynamic_reconfigure::Server\s*<[\w:\s]+>\s*(?:\w+\s*)?\(\s*(\w*)\s*\)")
 
 
 def roscpp_fallback(text: str, file: str, covered: set[int],
@@ -27,8 +31,16 @@ def roscpp_fallback(text: str, file: str, covered: set[int],
     handles.update({m.group(1): m.group(2) for m in re.finditer(r"[:,]\s*(\w+)\s*\(\s*\"(~?[\w/]*)\"\s*\)", text)
                     if m.group(1) in objects and m.group(1) not in handles})  # member initialisers
     handles.update({m.group(1): NODELET_HANDLES[m.group(2)] for m in re.finditer(
-        r"NodeHandle\s*&?\s*(\w+)\s*=\s*(get(?:MT)?(?:Private)?NodeHandle)\s*\(\s*\)", text)})
+        r"NodeHandle\s*&?\s*(\w+)\s*=\s*(?:this\s*->\s*)?(get(?:MT)?(?:Private)?NodeHandle)\s*\(\s*\)", text)})
     line_of = line_finder(text)
+    for match in _RECONFIGURE.finditer(text):
+        line = line_of(match.start())
+        if line in covered or (spans is not None and not any(a <= line <= b for a, b in spans)):
+            continue
+        obj = match.group(1)
+        server_ns: Value = "~" if not obj else handles[obj] if obj in handles else \
+            Unknown(f"{obj} (read from tokens)", file, line)
+        ports += [Port(kind, name, type_, file, line, 0, server_ns) for kind, name, type_ in reconfigure_ports("")]
     for match in _FALLBACK.finditer(text):
         line = line_of(match.start())
         if line in covered or (spans is not None and not any(a <= line <= b for a, b in spans)):
