@@ -173,7 +173,8 @@ class _Walker:
         found = {evaluate(args[index]) for site in sites if len(args := written_args(site)) > index}
         if len(found) == 1:
             return next(iter(found))
-        why = f"no call site passes this {what}" if not found else f"call sites pass different values for {what}"
+        why = f"{param.spelling} comes from a caller in another file: no call site in this file passes this {what}" \
+            if not found else f"call sites pass different values for {what}"
         return self.unknown(expr, why)
 
     # -- values ---------------------------------------------------------------------------
