@@ -69,6 +69,13 @@ CONSTRUCTED: dict[str, list[tuple[str, str | None, int | None]]] = {
                                     ("publisher", "parameter_descriptions", None),
                                     ("publisher", "parameter_updates", None)],
 }
+# constructed objects whose ports are named after a namespace argument: class -> (kind, suffix, type)
+UNDER_NAMESPACE = {
+    "interactive_markers::InteractiveMarkerServer": [
+        ("publisher", "/update", "visualization_msgs/InteractiveMarkerUpdate"),
+        ("publisher", "/update_full", "visualization_msgs/InteractiveMarkerInit"),
+        ("subscriber", "/feedback", "visualization_msgs/InteractiveMarkerFeedback")],
+}
 FIXED_TYPES = {
     "/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage", "/diagnostics": "diagnostic_msgs/DiagnosticArray",
     "set_parameters": "dynamic_reconfigure/Reconfigure",
@@ -285,6 +292,10 @@ class _Walker:
             return
         if ref.kind == K.CONSTRUCTOR and owner in CONSTRUCTED:
             self.constructed(call, owner, args)
+        elif ref.kind == K.CONSTRUCTOR and owner in UNDER_NAMESPACE and args:
+            namespace = self.value(args[0])
+            for kind, suffix, type_ in UNDER_NAMESPACE[owner]:
+                self.add(kind, call, concat(namespace, suffix), type_, "")
         elif owner in ("ros::Rate", "ros::WallRate") and ref.kind == K.CONSTRUCTOR and args:
             hz = self.value(args[0])
             self.add("timer", call, period(hz) if isinstance(hz, str) else self.unknown(call, "rate not constant"),
