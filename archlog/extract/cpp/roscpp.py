@@ -294,8 +294,8 @@ class _Walker:
             self.constructed(call, owner, args)
         elif ref.kind == K.CONSTRUCTOR and owner in UNDER_NAMESPACE and args:
             namespace = self.value(args[0])
-            for kind, suffix, type_ in UNDER_NAMESPACE[owner]:
-                self.add(kind, call, concat(namespace, suffix), type_, "")
+            for port_kind, suffix, port_type in UNDER_NAMESPACE[owner]:
+                self.add(port_kind, call, concat(namespace, suffix), port_type, "")
         elif owner in ("ros::Rate", "ros::WallRate") and ref.kind == K.CONSTRUCTOR and args:
             hz = self.value(args[0])
             self.add("timer", call, period(hz) if isinstance(hz, str) else self.unknown(call, "rate not constant"),
