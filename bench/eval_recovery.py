@@ -324,9 +324,6 @@ CAUSES = {
     "footprint-sub": "each costmap subscribes ~<costmap>/footprint as geometry_msgs/Polygon while publishing it "
                      "as PolygonStamped; archlog/models/move_base.yaml leaves the subscriber out so that every "
                      "move_base is not a type mismatch with itself.",
-    "camera-info": "archlog/models/depthimage_to_laserscan.yaml subscribes camera_info at the node's namespace; "
-                   "image_transport's subscribeCamera takes it next to the (remapped) image topic "
-                   "(/camera/depth/camera_info).",
 }
 
 # (subject or "", tool or "", node regex, port regex, cause); first match wins.
@@ -342,7 +339,6 @@ CAUSE_PATTERNS = [
     ("", "", "/mobile_base_nodelet_manager", r"^/cmd_vel_mux/|^/mobile_base/commands/velocity$", "param-list"),
     ("", "", "/mobile_base_nodelet_manager", r"kobuki_safety_controller/|/mobile_base/events/|"
      r"navigation_velocity_smoother/|^/odom$", "nh-across"),
-    ("", "", "/laserscan_nodelet_manager", r"camera_info", "camera-info"),
 ]
 
 

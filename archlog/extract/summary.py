@@ -27,6 +27,7 @@ class Port:
     qos: tuple[tuple[str, str], ...] = ()
     queue: Value | None = None
     condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
+    camera_info: bool = False  # an image_transport camera port: also camera_info beside the remapped image topic
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.registry import Summaries
-from archlog.extract.summary import NodeSummary
+from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.messages import message_files
 from archlog.system.configured import configured_ports
@@ -107,6 +107,20 @@ def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
     return found
 
 
+def _camera_info_ports(node: LaunchNode, ports: list[Port]) -> list[Port]:
+    """image_transport's camera ports: camera_info beside the image topic as resolved and remapped
+    (CameraSubscriber / CameraPublisher take the sibling of the remapped image topic)."""
+    remaps = names.resolve_remaps([(src, dst) for src, dst, _ in node.remaps], node.namespace, node.name)
+    found = []
+    for port in ports:
+        if port.camera_info and isinstance(port.name, str) and isinstance(port.handle_ns, str):
+            image = names.remap(names.resolve(names.join(port.handle_ns, port.name) if port.handle_ns else port.name,
+                                              node.namespace, node.name), remaps)
+            found.append(replace(port, name=names.join(names.namespace_of(image), "camera_info"),
+                                 type="sensor_msgs/CameraInfo", camera_info=False))
+    return found
+
+
 def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config: LaunchConfig,
              workspace: Workspace, diagnostics: DiagnosticSink, missing: set[tuple[str, str]]) -> NodeSummary | None:
     """What one instance runs, with its configured ports and those of the plugins its parameters
@@ -115,7 +129,8 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     model = models.user.get(node.kind) or models.builtin.get(node.kind)
     slots = summary.plugins if summary is not None and summary.plugins else model.plugins if model else ()
     extra = configured_ports(node, config, workspace, diagnostics) + \
-        plugin_ports(node, slots, models.classes, config, diagnostics)
+        plugin_ports(node, slots, models.classes, config, diagnostics) + \
+        _camera_info_ports(node, summary.ports if summary is not None else [])
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
             NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")

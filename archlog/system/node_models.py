@@ -7,7 +7,9 @@ configuration) and lists its ports. A name may be a string or `{param: NAME, def
 inputs); a port with `if: {param: NAME, default: VALUE}` exists only when that parameter is true (or
 equals `equals`), and with `if: {param: NAME, set: true}` only when the configuration sets it. A
 ROS 2 port may give `qos:` as a preset's name or as `{preset: P, reliability: ..., depth: ...,
-deadline: SECONDS, ...}` (rmw's default profile when no preset is named). `plugins:` lists where a node
+deadline: SECONDS, ...}` (rmw's default profile when no preset is named). An image port with
+`camera_info: true` is an image_transport camera subscriber or publisher: its camera_info topic is
+the sibling of the image topic as resolved and remapped (system/link.py). `plugins:` lists where a node
 loads pluginlib classes its parameters choose (see `PluginSlot`), and a file's `classes:` the ports
 such a class creates in the namespace its host gives it (system/plugin_slots.py). A model with
 `incomplete: REASON` lists only some ports, so its nodes count as opaque. The format's
@@ -165,7 +167,8 @@ def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: 
     summary.ports.append(Port(kind, _name(port["name"], shown, port["__line__"]), str(port.get("type", "")),
                               shown, port["__line__"], 0, "", None if default is None else str(default),
                               qos=() if "qos" not in port else _qos(port["qos"]),
-                              condition=None if condition is None else _condition(condition, shown)))
+                              condition=None if condition is None else _condition(condition, shown),
+                              camera_info=bool(port.get("camera_info"))))
 
 
 def _qos(spec: str | dict) -> tuple[tuple[str, str], ...]:
