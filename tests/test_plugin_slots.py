@@ -55,3 +55,12 @@ def test_a_class_without_a_model_is_reported(tmp_path: Path) -> None:
       <param name="base_global_planner" value="my_planners/LanePlanner"/></node>""")
     assert notes and "my_planners/LanePlanner" in notes[0] and "base_global_planner" in notes[0]
     assert not any("NavfnROS" in name for _kind, name in found)
+
+
+def test_sources_not_known_statically_make_a_port_whose_name_is_unknown(tmp_path: Path) -> None:
+    found, _notes = ports(tmp_path, """<node pkg="move_base" type="move_base" name="move_base">
+      <rosparam ns="local_costmap">plugins: [{name: obstacles, type: "costmap_2d::ObstacleLayer"}]</rosparam>
+      <param name="local_costmap/obstacles/observation_sources" value="$(env LASER_SOURCES)"/></node>""")
+    unknown = [(kind, name) for kind, name in found if name.startswith("?")]
+    assert unknown == [("subscriber", "?(each word of ~local_costmap/obstacles/observation_sources "
+                                      "($(env LASER_SOURCES) (environment variable LASER_SOURCES is not given)))")]

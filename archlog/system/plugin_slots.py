@@ -12,6 +12,7 @@ A plugin named by a single parameter lives in NAMESPACE/its class name (pluginli
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from typing import Any
 
 from archlog import names
@@ -65,7 +66,13 @@ def _class_ports(plugin: PluginClass, namespace: str, node: LaunchNode, config: 
     ports = [Port(*port, plugin.file, plugin.line) for port in reconfigure_ports(namespace)] \
         if plugin.reconfigure else []
     for kind, entry in plugin.ports:
-        for item in _items(entry.get("each"), namespace, node, config):
+        line = entry.get("__line__", plugin.line)
+        items = _items(entry.get("each"), namespace, node, config)
+        if isinstance(items, Unknown):  # a port per word of a value not known statically
+            type_ = entry["type"] if isinstance(entry["type"], str) else Unknown(items.expr, plugin.file, line)
+            ports.append(Port(kind, Unknown(items.expr, plugin.file, line), type_, plugin.file, line))
+            continue
+        for item in items:
             def fill(text: str, item: str = item) -> str:
                 return text.replace("{item}", item)
 
@@ -73,34 +80,39 @@ def _class_ports(plugin: PluginClass, namespace: str, node: LaunchNode, config: 
                 continue
             name = _chosen(entry["name"], namespace, node, config, fill)
             type_ = _chosen(entry["type"], namespace, node, config, fill)
-            if isinstance(entry["type"], dict):
+            if isinstance(entry["type"], dict) and isinstance(type_, str):
                 type_ = f"{entry['type'].get('prefix', '')}{type_}"
-            if entry.get("in") != "node" or name.startswith(("/", "~")):
-                name = names.join(namespace, name)
-            ports.append(Port(kind, name, type_, plugin.file, entry.get("__line__", plugin.line)))
+            if isinstance(name, str) and entry.get("in") != "node" and not name.startswith("~"):
+                name = names.join(namespace, name)  # a global name stays global
+            ports.append(Port(kind, name, type_, plugin.file, line))
     return ports
 
 
-def _items(each: str | None, namespace: str, node: LaunchNode, config: LaunchConfig) -> list[str]:
+def _items(each: str | None, namespace: str, node: LaunchNode, config: LaunchConfig) -> list[str] | Unknown:
     """The words (or list elements) of parameter `each`; one empty item when there is none."""
     if each is None:
         return [""]
     value = _param(names.join(namespace, each), node, config)
+    if isinstance(value, Unknown):
+        return Unknown(f"each word of {names.join(namespace, each)} ({value.expr})", value.file, value.line)
     if isinstance(value, list):
         return [str(v) for v in value]
     return str(value).split() if isinstance(value, (str, int, float)) else []
 
 
-def _chosen(spec: str | dict[str, Any], namespace: str, node: LaunchNode, config: LaunchConfig, fill) -> str:
+def _chosen(spec: str | dict[str, Any], namespace: str, node: LaunchNode, config: LaunchConfig,
+            fill: Callable[[str], str]) -> str | Unknown:
     """A literal (with {item} filled in), or a parameter of the plugin's namespace with its default."""
     if isinstance(spec, str):
         return fill(spec)
     value = _param(names.join(namespace, fill(spec["param"])), node, config)
-    return fill(str(spec.get("default", ""))) if value is _ABSENT or isinstance(value, Unknown) else param_text(value)
+    if isinstance(value, Unknown):
+        return value
+    return fill(str(spec.get("default", ""))) if value is _ABSENT else param_text(value)
 
 
 def _holds(condition: dict[str, Any] | None, namespace: str, node: LaunchNode, config: LaunchConfig,
-           fill=lambda text: text) -> bool:
+           fill: Callable[[str], str] = str) -> bool:
     """A condition on a parameter of the namespace: equal to `equals` (true), or an unknown value."""
     if condition is None:
         return True
