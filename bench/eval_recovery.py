@@ -311,9 +311,9 @@ CAUSES = {
     "param-list": "topic names read at run time from a YAML file: cmd_vel_mux parses its yaml_cfg_file with "
                   "yaml-cpp (publisher, subscribers[].topic).",
     "nh-across": "a NodeHandle handed to another object and used there: kobuki SafetyController(nh, name) "
-                 "stores it in a member and subscribes/advertises in init() in safety_controller.hpp (the "
-                 "nodelet is read with its class only); VelocitySmoother::init(ph) is called through a pointer "
-                 "member (and its generated paramsConfig.h is missing).",
+                 "stores it in a member and subscribes/advertises in init(), defined in safety_controller.hpp; "
+                 "nodelet.cpp stops compiling at a missing include (ecl/threads/thread.hpp) before that header, "
+                 "and the token fallback reads only the nodelet's own file.",
     "loader-call-sites": "nodelet's Loader(bool) and Loader(const NodeHandle&) both call constructorImpl in "
                          "loader.cpp with different handles; which one the manager uses is decided in nodelet.cpp "
                          "(another file), so the load_nodelet/unload_nodelet/list services' names stay unknown "
