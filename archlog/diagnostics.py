@@ -124,8 +124,10 @@ CODES: dict[str, Code] = {
                               "Fix the description; xacro expressions are evaluated by archlog's restricted "
                               "evaluator."),
         "plugin-no-model": ("note", "A robot description loads a gazebo plugin that archlog has no model of "
-                            "(archlog/models/plugins/); the ports it creates in gzserver are unknown.",
-                            "Add the plugin to archlog/models/plugins/gazebo.yaml."),
+                            "(archlog/models/plugins/), or a node's parameters make it load a pluginlib class "
+                            "that no model file's `classes:` describes; the ports it creates are unknown.",
+                            "Add the plugin to archlog/models/plugins/gazebo.yaml, or the class to a model "
+                            "file's `classes:` (passed with --model)."),
         "xacro-legacy": ("note", "A xacro file calls a macro without the xacro: prefix (<kobuki/>), which older "
                          "xacro accepted with a deprecation warning; archlog expands it as a macro call.",
                          "Write <xacro:NAME/>."),

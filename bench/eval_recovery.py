@@ -305,61 +305,49 @@ def _controller_instances(analysis) -> set[str]:
 CAUSES = {
     "linked-library": "the node's code is in a catkin library the executable links (add_library + "
                       "target_link_libraries); archlog reads only the executable's own sources. No diagnostic.",
-    "no-extension": "add_executable(${PROJECT_NAME} src/marker_server) names its source without the .cpp "
-                    "extension; the executable gets no source file and no ports. No diagnostic.",
-    "image-transport": "the kinect's image is advertised through image_transport, whose installed plugins add "
-                       "compressed, compressedDepth and theora topics and their dynamic_reconfigure servers; "
-                       "archlog/models/plugins/gazebo.yaml lists the raw topics only (what is installed is "
-                       "not in the sources).",
     "model-condition": "archlog/models/diff_drive_controller.yaml publishes /tf only if ~enable_odom_tf; the "
                        "controller advertises /tf unconditionally (diff_drive_controller.cpp:727), so the master "
                        "sees it even with enable_odom_tf: false (husky control.yaml).",
-    "param-list": "topic names read at run time from a parameter list or a YAML file (twist_mux ~topics/~locks "
-                  "iterated from XmlRpc; cmd_vel_mux's yaml_cfg_file parsed with yaml-cpp).",
+    "param-list": "topic names read at run time from a YAML file: cmd_vel_mux parses its yaml_cfg_file with "
+                  "yaml-cpp (publisher, subscribers[].topic).",
     "nh-across": "a NodeHandle handed to another object and used there: kobuki SafetyController(nh, name) "
-                 "stores it and subscribes in init() in safety_controller.hpp; VelocitySmoother::init(ph) is "
-                 "called through a pointer member (and its generated paramsConfig.h is missing).",
-    "updater-member": "twist_mux's diagnostic_updater::Updater is a member of TwistMuxDiagnostics, built with "
-                      "boost::make_shared in twist_mux.cpp and constructed in twist_mux_diagnostics.cpp; the "
-                      "Updater's implicit /diagnostics publisher is not seen through the member.",
-    "nh-reference": "`ros::NodeHandle &nh = this->getPrivateNodeHandle()` (a reference) is resolved as the "
-                    "global namespace: /active instead of /cmd_vel_mux/active (an extra and a miss).",
+                 "stores it in a member and subscribes/advertises in init(), defined in safety_controller.hpp; "
+                 "nodelet.cpp stops compiling at a missing include (ecl/threads/thread.hpp) before that header, "
+                 "and the token fallback reads only the nodelet's own file.",
+    "loader-call-sites": "nodelet's Loader(bool) and Loader(const NodeHandle&) both call constructorImpl in "
+                         "loader.cpp with different handles; which one the manager uses is decided in nodelet.cpp "
+                         "(another file), so the load_nodelet/unload_nodelet/list services' names stay unknown "
+                         "(port-name-unknown notes).",
     "no-compile": "the C++ does not compile here (rosbag/bag.h, yaml-cpp, generated dynamic_reconfigure "
                   "headers missing) and the token fallback misses calls on members of unresolved types "
                   "(amcl's diagnostic_updater, kinetic amcl's tf::TransformListener).",
-    "move-base-model": "move_base model approximations (its header says so): layer and planner plugins' "
-                       "dynamic_reconfigure servers, obstacle-layer observation sources, DWA clouds, footprint "
-                       "subscriptions.",
-    "camera-info": "archlog/models/depthimage_to_laserscan.yaml subscribes camera_info at the node's namespace; "
-                   "image_transport's subscribeCamera takes it next to the (remapped) image topic "
-                   "(/camera/depth/camera_info).",
+    "footprint-sub": "each costmap subscribes ~<costmap>/footprint as geometry_msgs/Polygon while publishing it "
+                     "as PolygonStamped; archlog/models/move_base.yaml leaves the subscriber out so that every "
+                     "move_base is not a type mismatch with itself.",
 }
 
 # (subject or "", tool or "", node regex, port regex, cause); first match wins.
 CAUSE_PATTERNS = [
     ("husky", "", "/gazebo", r"/tf$", "model-condition"),
-    ("turtlebot", "", "/gazebo", r"/image_raw/(compressed|compressedDepth|theora)", "image-transport"),
-    ("", "", "/twist_marker_server", r".", "no-extension"),
     ("", "archlog", "/(ekf_localization|joy_teleop/teleop_twist_joy|robot_state_publisher)", r".", "linked-library"),
-    ("", "archlog", "/move_base", r".", "linked-library"),
-    ("", "", "/twist_mux", r"/diagnostics", "updater-member"),
-    ("", "", "/twist_mux", r".", "param-list"),
     ("", "", "/amcl", r".", "no-compile"),
-    ("", "", "/move_base", r".", "move-base-model"),
-    ("", "", r"/\w+_nodelet_manager", r"_nodelet_manager/(list|load_nodelet|unload_nodelet)$", "linked-library"),
-    ("", "", "/mobile_base_nodelet_manager", r"^/cmd_vel_mux/active$", "nh-reference"),
+    ("", "", "/move_base", r"_costmap/footprint$", "footprint-sub"),
+    ("", "", r"/\w+_nodelet_manager", r"_nodelet_manager/(list|load_nodelet|unload_nodelet)$", "loader-call-sites"),
+    ("", "", "/mobile_base_nodelet_manager", r"^/cmd_vel_mux/input/(navi|safety_controller)$", "nh-across",
+     "publisher"),
+    ("", "", "/mobile_base_nodelet_manager", r"^/mobile_base/commands/velocity$", "nh-across", "subscriber"),
     ("", "", "/mobile_base_nodelet_manager", r"^/cmd_vel_mux/|^/mobile_base/commands/velocity$", "param-list"),
     ("", "", "/mobile_base_nodelet_manager", r"kobuki_safety_controller/|/mobile_base/events/|"
      r"navigation_velocity_smoother/|^/odom$", "nh-across"),
-    ("", "archlog+models", "/laserscan_nodelet_manager", r"camera_info", "camera-info"),
-    ("", "archlog", "/laserscan_nodelet_manager", r".", "linked-library"),
 ]
 
 
-def cause_of(subject: str, tool: str, node: str, port: str) -> str:
+def cause_of(subject: str, tool: str, node: str, port: str, kind: str = "") -> str:
+    """The cause of a missing port (a pattern may also name the port's kind: publisher, subscriber...)."""
     import re
-    for subj, tl, node_re, port_re, cause in CAUSE_PATTERNS:
-        if subj in ("", subject) and tl in ("", tool) and re.fullmatch(node_re, node) and re.search(port_re, port):
+    for subj, tl, node_re, port_re, cause, *kinds in CAUSE_PATTERNS:
+        if subj in ("", subject) and tl in ("", tool) and re.fullmatch(node_re, node) and re.search(port_re, port) \
+                and (not kinds or kind.rstrip("s") in kinds):
             return cause
     return "unclassified"
 
@@ -419,7 +407,7 @@ def print_differences(subject: str, tool: str, res: dict) -> dict[str, int]:
             for node, name in res[kind][key]:
                 item = f"{kind[:3]} {name}"
                 if label == "missing" and tool != "study":
-                    cause = cause_of(subject, tool, node, name)
+                    cause = cause_of(subject, tool, node, name, kind)
                     counts[cause] += 1
                     item += f" [{cause}]"
                 grouped[node].append(item)

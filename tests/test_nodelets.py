@@ -80,3 +80,17 @@ def test_plugin_descriptions_with_several_libraries() -> None:
                                                    ("/b", "filters/FilterB", "/manager"),
                                                    ("/c", "wrapped/C", ""), ("/d", "wrapped/D", "")]
     assert [d.code for d in result.diagnostics.items] == ["no-model"]  # only the manager has no model
+
+
+def test_a_nodelet_that_hands_its_handle_to_an_object_of_its_file() -> None:
+    """corpus/workspace/nodelet_helper_object: the nodelet class calls `smoother_->init(ph)` on a
+    class of its own file whose header does not compile here (its generated Config is missing); the
+    method's calls are read from the tokens, in the namespace of the handle the nodelet passes."""
+    fixture = Path(__file__).resolve().parent.parent / "corpus" / "workspace" / "nodelet_helper_object"
+    result = analyse([fixture], [str(fixture / "main.launch")], {}, [])
+    ports = sorted((rel, t) for rel in ("publisher", "subscriber", "service_server")
+                   for _p, n, t, _ty in result.store.rows(rel) if n == "/smoother")
+    assert ports == [("publisher", "/smoother/parameter_descriptions"), ("publisher", "/smoother/parameter_updates"),
+                     ("publisher", "/smoother/smooth_cmd_vel"), ("service_server", "/smoother/set_parameters"),
+                     ("subscriber", "/smoother/raw_cmd_vel")]
+    assert [d.code for d in result.diagnostics.items] == ["cpp-compile", "no-model"]

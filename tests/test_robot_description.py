@@ -60,12 +60,20 @@ def test_urdf_textfile_plugins_namespaces_and_unknown_topics(tmp_path: Path) -> 
         "<node pkg='gazebo_ros' type='spawn_model' name='orphan' args='-urdf -param missing_description'/></launch>")
     result = analyse([tmp_path], ["cam/cam.launch"], {}, [])
     camera = [("/camera_info", "sensor_msgs/CameraInfo"), ("/image_raw", "sensor_msgs/Image"),
+              # image_transport's compressed, compressedDepth and theora topics, each with its reconfigure server
+              *[(f"/image_raw/{transport}{suffix}", type_) for transport, packet in (
+                  ("compressed", "sensor_msgs/CompressedImage"), ("compressedDepth", "sensor_msgs/CompressedImage"),
+                  ("theora", "theora_image_transport/Packet"))
+                for suffix, type_ in (("", packet), ("/parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
+                                      ("/parameter_updates", "dynamic_reconfigure/Config"))],
               ("/parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
               ("/parameter_updates", "dynamic_reconfigure/Config")]
     assert [p for p in ports(result, "publisher") if "spawn" in p[0]] == [
         *[("/spawn", "/rover/front" + n, t) for n, t in camera], ("/spawn", "?", "sensor_msgs/LaserScan"),
         *[("/two/spawn", "/r2/front" + n, t) for n, t in camera], ("/two/spawn", "?", "sensor_msgs/LaserScan")]
     assert [p for p in ports(result, "service_server") if p[0] == "/spawn"] == [
+        *[("/spawn", f"/rover/front/image_raw/{t}/set_parameters", "dynamic_reconfigure/Reconfigure")
+          for t in ("compressed", "compressedDepth", "theora")],
         ("/spawn", "/rover/front/set_camera_info", "sensor_msgs/SetCameraInfo"),
         ("/spawn", "/rover/front/set_parameters", "dynamic_reconfigure/Reconfigure")]
     assert [(d.line, d.code) for d in result.diagnostics.items] == [(1, "robot-description"), (1, "port-name-unknown")]

@@ -27,6 +27,7 @@ class Port:
     qos: tuple[tuple[str, str], ...] = ()
     queue: Value | None = None
     condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
+    camera_info: bool = False  # an image_transport camera port: also camera_info beside the remapped image topic
 
 
 @dataclass(frozen=True)
@@ -80,6 +81,22 @@ class StateWrite:
     line: int
 
 
+@dataclass(frozen=True)
+class PluginSlot:
+    """Where a node loads pluginlib classes its parameters choose (node models only): the class named
+    by parameter `param`, its namespace `namespace`/the class's own name (as move_base's planners), or,
+    with `listed`, every {name, type} element of the list `param`, each in `namespace`/name (as a
+    costmap's layers). `default` is what the node uses when the parameter is not set: a class name,
+    or a list of {name, type, if} entries."""
+
+    param: str
+    namespace: str
+    listed: bool
+    default: object
+    file: str
+    line: int
+
+
 @dataclass
 class NodeSummary:
     """The ports of one node executable and its default name (ros::init / rospy.init_node)."""
@@ -96,3 +113,4 @@ class NodeSummary:
     namespace: Value = ""
     publishes: list[Publish] = field(default_factory=list)  # behavior: how each publish call is reached
     writes: list[StateWrite] = field(default_factory=list)
+    plugins: tuple[PluginSlot, ...] = ()

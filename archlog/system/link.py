@@ -10,13 +10,14 @@ from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.registry import Summaries
-from archlog.extract.summary import NodeSummary
+from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.messages import message_files
 from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels
+from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
 from archlog.values import ParamRef
 
@@ -56,7 +57,7 @@ def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, 
         config.nodes.append(LaunchNode(elem, summary.package, summary.executable, names.join("/", instance),
                                        names.namespace_of(names.join("/", instance))))
     missing: set[tuple[str, str]] = set()
-    instances = [Instance(node, _summary(node, summaries, config, workspace, diagnostics, missing))
+    instances = [Instance(node, _summary(node, summaries, models, config, workspace, diagnostics, missing))
                  for node in config.nodes]
     return System(workspace, config, instances, message_files(workspace))
 
@@ -106,11 +107,30 @@ def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
     return found
 
 
-def _summary(node: LaunchNode, summaries: Summaries, config: LaunchConfig, workspace: Workspace,
-             diagnostics: DiagnosticSink, missing: set[tuple[str, str]]) -> NodeSummary | None:
-    """What one instance runs, with its configured ports; a kind with neither is reported once."""
+def _camera_info_ports(node: LaunchNode, ports: list[Port]) -> list[Port]:
+    """image_transport's camera ports: camera_info beside the image topic as resolved and remapped
+    (CameraSubscriber / CameraPublisher take the sibling of the remapped image topic)."""
+    remaps = names.resolve_remaps([(src, dst) for src, dst, _ in node.remaps], node.namespace, node.name)
+    found = []
+    for port in ports:
+        if port.camera_info and isinstance(port.name, str) and isinstance(port.handle_ns, str):
+            image = names.remap(names.resolve(names.join(port.handle_ns, port.name) if port.handle_ns else port.name,
+                                              node.namespace, node.name), remaps)
+            found.append(replace(port, name=names.join(names.namespace_of(image), "camera_info"),
+                                 type="sensor_msgs/CameraInfo", camera_info=False))
+    return found
+
+
+def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config: LaunchConfig,
+             workspace: Workspace, diagnostics: DiagnosticSink, missing: set[tuple[str, str]]) -> NodeSummary | None:
+    """What one instance runs, with its configured ports and those of the plugins its parameters
+    choose (the slots of its model, also when its source is read); a kind with neither is reported once."""
     summary = summaries.get(node.kind)
-    extra = configured_ports(node, config, workspace, diagnostics)
+    model = models.user.get(node.kind) or models.builtin.get(node.kind)
+    slots = summary.plugins if summary is not None and summary.plugins else model.plugins if model else ()
+    extra = configured_ports(node, config, workspace, diagnostics) + \
+        plugin_ports(node, slots, models.classes, config, diagnostics) + \
+        _camera_info_ports(node, summary.ports if summary is not None else [])
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
             NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")

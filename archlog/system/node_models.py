@@ -7,7 +7,11 @@ configuration) and lists its ports. A name may be a string or `{param: NAME, def
 inputs); a port with `if: {param: NAME, default: VALUE}` exists only when that parameter is true (or
 equals `equals`), and with `if: {param: NAME, set: true}` only when the configuration sets it. A
 ROS 2 port may give `qos:` as a preset's name or as `{preset: P, reliability: ..., depth: ...,
-deadline: SECONDS, ...}` (rmw's default profile when no preset is named). A model with
+deadline: SECONDS, ...}` (rmw's default profile when no preset is named). An image port with
+`camera_info: true` is an image_transport camera subscriber or publisher: its camera_info topic is
+the sibling of the image topic as resolved and remapped (system/link.py). `plugins:` lists where a node
+loads pluginlib classes its parameters choose (see `PluginSlot`), and a file's `classes:` the ports
+such a class creates in the namespace its host gives it (system/plugin_slots.py). A model with
 `incomplete: REASON` lists only some ports, so its nodes count as opaque. The format's
 JSON Schema is archlog/models/model.schema.json; a file that breaks it is reported at the offending
 entry's line and its valid models are still used.
@@ -20,6 +24,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
 import jsonschema
 import yaml
@@ -31,7 +36,7 @@ from archlog.extract.launch import bounded_yaml
 from archlog.extract.launch.model import Element
 from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.registry import Summaries
-from archlog.extract.summary import NodeSummary, Port
+from archlog.extract.summary import NodeSummary, PluginSlot, Port
 from archlog.extract.workspace.index import Workspace
 from archlog.values import ParamList, ParamRef, Value
 
@@ -62,14 +67,27 @@ class ShippedLoader(_Lines, getattr(yaml, "CSafeLoader", yaml.SafeLoader)):  # t
     """archlog's own models (trusted, no budget needed) with libyaml's parser: ten times faster."""
 
 
+@dataclass(frozen=True)
+class PluginClass:
+    """The ports a pluginlib class creates, as a model file's `classes:` entry lists them (names
+    relative to the namespace the host gives the plugin)."""
+
+    names: tuple[str, ...]
+    ports: tuple[tuple[str, dict[str, Any]], ...]  # (port kind, the entry as written)
+    reconfigure: bool
+    file: str
+    line: int
+
+
 @dataclass
 class NodeModels:
-    """The models of one run: shipped ones, the user's (which win over extracted summaries) and
-    external instances that models declare."""
+    """The models of one run: shipped ones, the user's (which win over extracted summaries),
+    external instances that models declare, and pluginlib classes by lookup name."""
 
     builtin: Summaries = field(default_factory=dict)
     user: Summaries = field(default_factory=dict)
     externals: list[tuple[NodeSummary, str, Element]] = field(default_factory=list)
+    classes: dict[str, PluginClass] = field(default_factory=dict)
 
 
 def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: DiagnosticSink) -> NodeModels:
@@ -81,7 +99,7 @@ def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: Diagn
             raise ConfigError(f"model file not found: {path}")
         shown = workspace.display(path)
         loader = ShippedLoader if target is models.builtin else LineLoader
-        for summary, instance in load_models(path, shown, diagnostics, loader):
+        for summary, instance in load_models(path, shown, diagnostics, loader, models.classes):
             if instance:
                 line = summary.ports[0].line - 1 if summary.ports else 1
                 element = Element(f"m{index:03d}{len(models.externals):03d}", shown, max(line, 1))
@@ -92,8 +110,9 @@ def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: Diagn
 
 
 def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
-                loader: type = LineLoader) -> list[tuple[NodeSummary, str | None]]:
-    """(summary, external instance name or None) for every valid model in the file."""
+                loader: type = LineLoader, classes: dict[str, PluginClass] | None = None) -> list[tuple[NodeSummary, str | None]]:
+    """(summary, external instance name or None) for every valid model in the file; its valid
+    pluginlib classes go into `classes` by lookup name."""
     try:
         data = yaml.load(sandbox.read_text(path, "config"), Loader=loader)
     except yaml.YAMLError as exc:
@@ -109,7 +128,9 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
     except UnicodeDecodeError:
         diagnostics.add(shown, 1, "model-read", "cannot read model file: not UTF-8", "error")
         return []
-    items = data.get("models", []) if isinstance(data, dict) and "models" in data else [data]
+    if isinstance(data, dict) and "classes" in data:
+        _classes(data, shown, diagnostics, {} if classes is None else classes)
+    items = data.get("models", []) if isinstance(data, dict) and data.keys() & {"models", "classes"} else [data]
     if not isinstance(items, list):
         diagnostics.add(shown, data["__line__"], "model-schema", "invalid model file: models must be a list", "error")
         return []
@@ -127,8 +148,26 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
         for section, kind in SECTIONS.items():
             for port in item.get(section) or []:
                 _port(summary, kind, port, shown, diagnostics)
+        summary.plugins = tuple(PluginSlot(str(slot.get("list", slot.get("param"))), str(slot["namespace"]),
+                                           "list" in slot, _without_lines(slot.get("default")), shown,
+                                           slot["__line__"]) for slot in item.get("plugins") or [])
         result.append((summary, instance))
     return result
+
+
+def _classes(data: dict, shown: str, diagnostics: DiagnosticSink, classes: dict[str, PluginClass]) -> None:
+    """The file's valid `classes:` entries, by each of their lookup names."""
+    entries = data["classes"] if isinstance(data["classes"], list) else []
+    for entry in entries:
+        problem = _schema_problem(entry, "pluginClass")
+        if problem is not None:
+            line = entry.get("__line__", data["__line__"]) if isinstance(entry, dict) else data["__line__"]
+            diagnostics.add(shown, problem[0] or line, "model-schema", f"invalid plugin class: {problem[1]}", "error")
+            continue
+        lookup = entry["class"] if isinstance(entry["class"], list) else [entry["class"]]
+        ports = tuple((kind, port) for section, kind in SECTIONS.items() for port in entry.get(section) or [])
+        plugin = PluginClass(tuple(lookup), ports, bool(entry.get("reconfigure")), shown, entry["__line__"])
+        classes.update(dict.fromkeys(lookup, plugin))
 
 
 def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: DiagnosticSink) -> None:
@@ -137,7 +176,8 @@ def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: 
     summary.ports.append(Port(kind, _name(port["name"], shown, port["__line__"]), str(port.get("type", "")),
                               shown, port["__line__"], 0, "", None if default is None else str(default),
                               qos=() if "qos" not in port else _qos(port["qos"]),
-                              condition=None if condition is None else _condition(condition, shown)))
+                              condition=None if condition is None else _condition(condition, shown),
+                              camera_info=bool(port.get("camera_info"))))
 
 
 def _qos(spec: str | dict) -> tuple[tuple[str, str], ...]:
@@ -147,7 +187,7 @@ def _qos(spec: str | dict) -> tuple[tuple[str, str], ...]:
     qos = Qos.preset(spec.get("preset", "default"))
     for policy, value in spec.items():
         if policy not in ("preset", "__line__"):
-            text = seconds_text(Fraction(str(value))) if policy in DURATIONS else _text(value)
+            text = seconds_text(Fraction(str(value))) if policy in DURATIONS else param_text(value)
             qos.apply(policy, text, f"{policy}: {value}")
     return qos.facts()
 
@@ -156,23 +196,24 @@ def _condition(condition: dict, shown: str) -> tuple[Value, str | None]:
     """(parameter read, value it must equal), or (parameter read, None) for `set: true`."""
     if condition.get("set"):
         return ParamRef(str(condition["param"]), UNSET, "", shown, condition["__line__"]), None
-    return (ParamRef(str(condition["param"]), _text(condition.get("default", False)), "", shown,
-                     condition["__line__"]), _text(condition.get("equals", True)))
+    return (ParamRef(str(condition["param"]), param_text(condition.get("default", False)), "", shown,
+                     condition["__line__"]), param_text(condition.get("equals", True)))
 
 
-def _text(value: object) -> str:
+def param_text(value: object) -> str:
+    """A parameter value as text, booleans as YAML and roslaunch write them."""
     return str(value).lower() if isinstance(value, bool) else str(value)
 
 
-@lru_cache(maxsize=1)
-def _validator() -> jsonschema.protocols.Validator:
+@lru_cache(maxsize=2)
+def _validator(definition: str) -> jsonschema.protocols.Validator:
     schema = json.loads((BUILTIN_DIR / "model.schema.json").read_text())
-    return jsonschema.Draft202012Validator(schema["$defs"]["model"] | {"$defs": schema["$defs"]})
+    return jsonschema.Draft202012Validator(schema["$defs"][definition] | {"$defs": schema["$defs"]})
 
 
-def _schema_problem(item: object) -> tuple[int, str] | None:
-    """(line, message) of the first place a model breaks the schema, or None."""
-    errors = sorted(_validator().iter_errors(_without_lines(item)), key=lambda e: list(e.absolute_path))
+def _schema_problem(item: object, definition: str = "model") -> tuple[int, str] | None:
+    """(line, message) of the first place a model (or another definition) breaks the schema, or None."""
+    errors = sorted(_validator(definition).iter_errors(_without_lines(item)), key=lambda e: list(e.absolute_path))
     if not errors:
         return None
     error = errors[0]

@@ -21,6 +21,7 @@ import yaml
 from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
+from archlog.extract.library_ports import image_transport_ports, reconfigure_ports
 from archlog.extract.summary import Port
 from archlog.extract.workspace.index import Workspace
 from archlog.system.command_line import split_options
@@ -29,9 +30,6 @@ from archlog.values import Unknown
 
 PLUGIN_MODELS = Path(__file__).resolve().parent.parent / "models" / "plugins"
 KINDS = {"publishers": "publisher", "subscribers": "subscriber", "services": "service_server"}
-RECONFIGURE = (("publisher", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
-               ("publisher", "parameter_updates", "dynamic_reconfigure/Config"),
-               ("service_server", "set_parameters", "dynamic_reconfigure/Reconfigure"))
 
 
 @dataclass(frozen=True)
@@ -42,6 +40,7 @@ class PluginModel:
     elements: dict[str, str | None]  # SDF element -> default (a template over earlier elements; None: unknown)
     namespace: str  # template
     ports: tuple[tuple[str, str, str, str | None], ...]  # (kind, name template, type, element it needs true)
+    transported: frozenset[str] = frozenset()  # name templates of images published through image_transport
 
 
 @functools.cache
@@ -51,10 +50,10 @@ def plugin_models() -> dict[str, PluginModel]:
     for path in sorted(PLUGIN_MODELS.glob("*.yaml")):
         for entry in yaml.safe_load(path.read_text())["plugins"]:
             ports = [(KINDS[key], p["name"], p["type"], p.get("if")) for key in KINDS for p in entry.get(key, [])]
-            ports += [(kind, names.join(ns, suffix) if ns else suffix, type_, None)
-                      for ns in entry.get("reconfigure", []) for kind, suffix, type_ in RECONFIGURE]
+            ports += [(*port, None) for ns in entry.get("reconfigure", []) for port in reconfigure_ports(ns)]
+            transported = frozenset(p["name"] for p in entry.get("publishers", []) if p.get("transport") == "image")
             found[entry["filename"]] = PluginModel(entry["filename"], dict(entry.get("elements") or {}),
-                                                   entry.get("namespace", ""), tuple(ports))
+                                                   entry.get("namespace", ""), tuple(ports), transported)
     return found
 
 
@@ -152,6 +151,8 @@ def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: 
         resolved: str | Unknown = names.resolve(name, "/" + ns.strip("/"), "/gazebo") if name is not None \
             and ns is not None else unknown(template if name is None else model.namespace)
         ports.append(Port(kind, resolved, type_, file, line))
+        if template in model.transported and isinstance(resolved, str):
+            ports += [Port(*port, file, line) for port in image_transport_ports(resolved)]
     return ports
 
 

@@ -54,7 +54,7 @@ class Handles:
 
     def handle_ns(self, decl: ci.Cursor) -> Value:
         getter = next((c.spelling for c in decl.walk_preorder() if c.kind == K.CALL_EXPR
-                       and c.spelling in NODELET_HANDLES), None)
+                       and c.spelling in NODELET_HANDLES), None) or _accessor_assigned(decl)
         if getter:
             return NODELET_HANDLES[getter]
         ctor = next((c for c in decl.get_children() if c.kind in (K.CALL_EXPR, K.UNEXPOSED_EXPR)), None)
@@ -106,3 +106,13 @@ class Handles:
                 if cursor.spelling in ("NodeHandle", "ImageTransport"):
                     return self.ctor_ns(cursor)
         return self.ctx.unknown(expr, "NodeHandle of unknown origin")
+
+
+def _accessor_assigned(decl: ci.Cursor) -> str | None:
+    """The nodelet accessor a declaration is initialised with (`NodeHandle& nh = this->getPrivateNodeHandle()`),
+    read from its tokens: libclang leaves the call unresolved when it is dependent (a class template)
+    or when the nodelet's headers are missing."""
+    tokens = [t.spelling for t in decl.get_tokens()]
+    rest = tokens[tokens.index("=") + 1:] if "=" in tokens else []
+    rest = rest[2:] if rest[:2] == ["this", "->"] else rest
+    return rest[0] if rest[1:3] == ["(", ")"] and rest[0] in NODELET_HANDLES else None

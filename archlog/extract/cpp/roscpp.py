@@ -69,6 +69,13 @@ CONSTRUCTED: dict[str, list[tuple[str, str | None, int | None]]] = {
                                     ("publisher", "parameter_descriptions", None),
                                     ("publisher", "parameter_updates", None)],
 }
+# constructed objects whose ports are named after a namespace argument: class -> (kind, suffix, type)
+UNDER_NAMESPACE = {
+    "interactive_markers::InteractiveMarkerServer": [
+        ("publisher", "/update", "visualization_msgs/InteractiveMarkerUpdate"),
+        ("publisher", "/update_full", "visualization_msgs/InteractiveMarkerInit"),
+        ("subscriber", "/feedback", "visualization_msgs/InteractiveMarkerFeedback")],
+}
 FIXED_TYPES = {
     "/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage", "/diagnostics": "diagnostic_msgs/DiagnosticArray",
     "set_parameters": "dynamic_reconfigure/Reconfigure",
@@ -173,7 +180,8 @@ class _Walker:
         found = {evaluate(args[index]) for site in sites if len(args := written_args(site)) > index}
         if len(found) == 1:
             return next(iter(found))
-        why = f"no call site passes this {what}" if not found else f"call sites pass different values for {what}"
+        why = f"{param.spelling} comes from a caller in another file: no call site in this file passes this {what}" \
+            if not found else f"call sites pass different values for {what}"
         return self.unknown(expr, why)
 
     # -- values ---------------------------------------------------------------------------
@@ -284,6 +292,10 @@ class _Walker:
             return
         if ref.kind == K.CONSTRUCTOR and owner in CONSTRUCTED:
             self.constructed(call, owner, args)
+        elif ref.kind == K.CONSTRUCTOR and owner in UNDER_NAMESPACE and args:
+            namespace = self.value(args[0])
+            for port_kind, suffix, port_type in UNDER_NAMESPACE[owner]:
+                self.add(port_kind, call, concat(namespace, suffix), port_type, "")
         elif owner in ("ros::Rate", "ros::WallRate") and ref.kind == K.CONSTRUCTOR and args:
             hz = self.value(args[0])
             self.add("timer", call, period(hz) if isinstance(hz, str) else self.unknown(call, "rate not constant"),
