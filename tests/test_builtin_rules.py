@@ -80,7 +80,9 @@ def test_unreachable_required_input_lists_what_it_silences() -> None:
     case = Path(__file__).resolve().parent.parent / "archlog/rules/builtin/tests/AL601_required_input_unreachable"
     [finding] = [f for f in ENGINE.run(load_facts(case / "facts.json"))[1] if f.rule.id == "AL601"]
     assert finding.values["outputs"] == "/trajectory"
-    assert finding.values["near"] == "/odom_pos"
-    assert finding.values["silenced"] == "/follower"
+    assert finding.values["near"] == "; candidates: /odom_pos"
+    assert finding.values["silenced"] == "; nodes silenced downstream: /follower"
+    assert finding.values["unseen"] == ""  # an empty list with a phrase leaves no text
     assert (finding.location.file, finding.location.line) == ("lattice.cpp", 20)
-    assert [(r.file, r.line) for r in finding.related] == [("lattice.cpp", 40)]
+    # the other side is the candidate's publisher (/localizer's /odom_pos), not the node's own publish call
+    assert [(r.file, r.line) for r in finding.related] == [("localizer.py", 5)]

@@ -111,9 +111,11 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
             for period in _options(_bind(port.name, node, config)):
                 store.add("timer", pid, node.name, period)
             continue
-        resolved = [(_resolve(option, port.handle_ns, node, config, {}),
-                     _resolve(option, port.handle_ns, node, config, remaps))
-                    for option in _options(_bind(port.name, node, config))]
+        before_remaps = [_resolve(option, port.handle_ns, node, config, remaps)
+                         for option in _options(_bind(port.name, node, config))]
+        resolved = [(b, b if isinstance(b, Unknown) else names.remap(b, remaps)) for b in before_remaps]
+        if not node.ros2 and isinstance(handle := _handle_namespace(port.handle_ns, node, config), str) and handle:
+            store.add("handle_namespace", pid, handle)
         if len(resolved) > 1:
             store.add("alternative_names", pid, len(resolved))
         last = _bind(port.default, node, config) if port.default is not None else \
@@ -152,19 +154,24 @@ def action_topics(port: Port) -> list[Port]:
 
 def _resolve(name: str | Unknown, handle_ns: Value, node: LaunchNode, config: LaunchConfig,
              remaps: dict[str, str]) -> str | Unknown:
-    """Resolve one bound port name in the instance's context: handle namespace, `~`, then remaps."""
+    """Resolve one bound port name in the instance's context (handle namespace, `~`), before the name's
+    own remap. As roscpp does, a ROS 1 NodeHandle's namespace is itself remapped with `remaps` first."""
     if isinstance(name, Unknown):
         return name
     if name.startswith("~"):
-        resolved = names.join(node.name, name[1:].lstrip("/"))
-    elif name.startswith("/"):
-        resolved = names.canonical(name)
-    else:
-        handle = _single(_bind(handle_ns, node, config))
-        if isinstance(handle, Unknown):
-            return Unknown(f"{handle.expr}/{name}", handle.file, handle.line)
-        resolved = names.join(names.resolve(handle, node.namespace, node.name) if handle else node.namespace, name)
-    return names.remap(resolved, remaps)
+        return names.join(node.name, name[1:].lstrip("/"))
+    if name.startswith("/"):
+        return names.canonical(name)
+    handle = _handle_namespace(handle_ns, node, config)
+    if isinstance(handle, Unknown):
+        return Unknown(f"{handle.expr}/{name}", handle.file, handle.line)
+    return names.join(names.remap(handle, remaps) if handle and not node.ros2 else handle or node.namespace, name)
+
+
+def _handle_namespace(handle_ns: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
+    """The resolved namespace of the handle a port was created on, before remapping ('' for the node's own)."""
+    handle = _single(_bind(handle_ns, node, config))
+    return names.resolve(handle, node.namespace, node.name) if isinstance(handle, str) and handle else handle
 
 
 def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown | Alternatives:

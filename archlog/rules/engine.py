@@ -94,9 +94,16 @@ class Engine:
                     key = atom.symbol.arguments[rule.columns.index(column)]
                     items = {render(store.from_term(row.symbol.arguments[1]))
                              for row in ctl.symbolic_atoms.by_signature(relation, 2) if row.symbol.arguments[0] == key}
-                    values[name] = ", ".join(sorted(items)) or "none"
+                    values[name] = _list_text(", ".join(sorted(items)), rule.list_phrases.get(name))
                 result.append(_finding(rule, values, store))
         return sorted(result, key=lambda f: (f.location.file, f.location.line, f.rule.id, f.message))
+
+
+def _list_text(joined: str, phrase: str | None) -> str:
+    """A list value: the items, or "none"; with a phrase, the phrase around them, or nothing."""
+    if phrase is None:
+        return joined or "none"
+    return phrase.replace("{}", joined) if joined else ""
 
 
 def _finding(rule: Rule, values: dict[str, Cell], store: FactStore) -> Finding:
@@ -112,7 +119,8 @@ def _finding(rule: Rule, values: dict[str, Cell], store: FactStore) -> Finding:
             if render(value) not in bucket:
                 bucket.append(render(value))
     message = rule.message.format(**{k: render(v) for k, v in values.items()})
-    return Finding(rule, values, message, locate(rule.location), [locate(c) for c in rule.related], subjects)
+    related = [found for found in map(locate, rule.related) if found.file]  # an optional column may hold `none`
+    return Finding(rule, values, message, locate(rule.location), related, subjects)
 
 
 # -- checking rule programs ---------------------------------------------------------------
