@@ -54,6 +54,7 @@ def compose(system: System, diagnostics: DiagnosticSink, near_threshold: float =
         if summary.incomplete:
             store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config)
+    _param_topics(store, system)
     _unknown_port_names(store, diagnostics)
     add_near_names(store, near_threshold, diagnostics)
     return store
@@ -114,6 +115,8 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         before_remaps = [_resolve(option, port.handle_ns, node, config, remaps)
                          for option in _options(_bind(port.name, node, config))]
         resolved = [(b, b if isinstance(b, Unknown) else names.remap(b, remaps)) for b in before_remaps]
+        if isinstance(port.name, ParamRef) and isinstance(key := _param_key(port.name, node, config), str):
+            store.add("port_name_param", pid, key)
         if not node.ros2 and isinstance(handle := _handle_namespace(port.handle_ns, node, config), str) and handle:
             store.add("handle_namespace", pid, handle)
         if len(resolved) > 1:
@@ -174,12 +177,31 @@ def _handle_namespace(handle_ns: Value, node: LaunchNode, config: LaunchConfig) 
     return names.resolve(handle, node.namespace, node.name) if isinstance(handle, str) and handle else handle
 
 
+def _param_topics(store: FactStore, system: System) -> None:
+    """param_topic facts: a parameter the configuration sets in a node's private namespace, named like
+    a topic parameter (its last segment ends in `topic`, or some port takes its name from a parameter
+    of that last segment), whose value is a graph name: that name resolved as the node would."""
+    topic_params = {str(key).rsplit("/", 1)[-1] for _port, key in store.rows("port_name_param")}
+    for node in (i.launch for i in system.instances):
+        for name, (value, _elem) in system.config.params.items():
+            last = name.rsplit("/", 1)[-1]
+            if name.startswith(node.name + "/") and "/" not in name[len(node.name) + 1:] and \
+                    isinstance(value, str) and names.is_valid(value) and value != "/" and \
+                    (last.endswith("topic") or last in topic_params):
+                store.add("param_topic", name, node.name, names.resolve(value, node.namespace, node.name))
+
+
+def _param_key(ref: ParamRef, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
+    """The resolved name of the parameter a value is read from."""
+    return _resolve(_single(_bind(ref.name, node, config)), ref.handle_ns, node, config, {})
+
+
 def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown | Alternatives:
     """Evaluate a recovered value for one instance: parameters come from the configuration."""
     if isinstance(value, (str, Unknown)):
         return value
     if isinstance(value, ParamRef):
-        key = _resolve(_single(_bind(value.name, node, config)), value.handle_ns, node, config, {})
+        key = _param_key(value, node, config)
         if isinstance(key, str) and key in config.params:
             found = config.params[key][0]
             return found if isinstance(found, Unknown) else _text(found)

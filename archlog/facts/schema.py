@@ -106,6 +106,12 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("ports", "handle_namespace", "A ROS 1 port created on a NodeHandle with a namespace of its own: that "
          "namespace resolved in the node's, before remapping (roscpp remaps it like any name, so a remap of it moves "
          "every port of the handle).", _PORT, ("namespace", "name", "the handle's resolved namespace")),
+    _rel("ports", "port_name_param", "A port whose name is the value of a parameter (with a default, or a model's "
+         "`{param: ...}`).", _PORT, ("param", "name", "the resolved parameter name")),
+    _rel("configuration", "param_topic", "A parameter the configuration sets in a node's private namespace that names "
+         "a topic: its last segment ends in `topic`, or some port takes its name from a parameter of that last "
+         "segment, and its value is a graph name.", ("param", "name", "resolved parameter name"), _NODE,
+         ("topic", "name", "the value resolved as the node would resolve a topic name")),
     _rel("behavior", "publish_call", "A call that publishes on a publisher port (`location` gives its file:line).",
          ("call", "id", "the publish call"), _NODE, ("pub", "id", "the publisher port it uses")),
     _rel("behavior", "publish_trigger", "One way a publish call is reached (a call may have several).",
