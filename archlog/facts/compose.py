@@ -48,6 +48,10 @@ def compose(system: System, diagnostics: DiagnosticSink, near_threshold: float =
             store.locate(include.id, include.file, include.line)
         if node.plugin:
             store.add("nodelet", node.name, node.plugin, node.manager or "")
+        for src, dst, elem in node.remaps:  # an opaque node's too: they tell which names it may use
+            store.add("remap", elem.id, node.name, names.resolve(src, node.namespace, node.name),
+                      names.resolve(dst, node.namespace, node.name))
+            store.locate(elem.id, elem.file, elem.line)
         if summary is None:
             continue
         store.add("node_source", node.name, summary.origin)
@@ -92,10 +96,6 @@ def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSi
 def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig) -> None:
     pairs = [(src, dst) for src, dst, _ in node.remaps]
     remaps = names.resolve_remaps(pairs[::-1] if node.ros2 else pairs, node.namespace, node.name)
-    for src, dst, elem in node.remaps:
-        store.add("remap", elem.id, node.name, names.resolve(src, node.namespace, node.name),
-                  names.resolve(dst, node.namespace, node.name))
-        store.locate(elem.id, elem.file, elem.line)
     ports = [e for p in summary.ports if _present(p, node, config) for e in _each(p, node, config)]
     sites: Sites = {}
     for port in [q for p in ports for q in [p, *action_topics(p)]]:
