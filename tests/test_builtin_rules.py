@@ -86,3 +86,26 @@ def test_unreachable_required_input_lists_what_it_silences() -> None:
     assert (finding.location.file, finding.location.line) == ("lattice.cpp", 20)
     # the other side is the candidate's publisher (/localizer's /odom_pos), not the node's own publish call
     assert [(r.file, r.line) for r in finding.related] == [("localizer.py", 5)]
+
+
+def test_opaque_nodes_block_only_where_they_might_be_the_counterpart() -> None:
+    """Issue 21: an opaque node remapped onto a name keeps a rule from concluding there; elsewhere
+    the finding is reported and names the opaque nodes, or counts them when there are many."""
+    def store(opaque: int) -> FactStore:
+        facts = system(("publisher", "p1", "/laser", "/front/scan", "sensor_msgs/LaserScan"),
+                       ("subscriber", "p2", "/rviz", "/front/scan", "sensor_msgs/LaserScan"),
+                       ("subscriber", "p3", "/amcl", "/base_laser", "sensor_msgs/LaserScan"),
+                       ("subscriber", "p4", "/amcl", "/rear_laser", "sensor_msgs/LaserScan"))
+        for node in ("/laser", "/rviz", "/amcl"):
+            facts.add("node", node, "pkg", node[1:], "e0")
+            facts.add("node_source", node, "cpp")
+        for i in range(opaque):
+            facts.add("node", f"/vendor{i}", "vendor", "driver", "e0")
+        facts.add("remap", "e9", "/vendor0", "/scan", "/rear_laser")
+        return facts
+
+    [few] = ENGINE.run(store(2))[1]
+    assert (few.rule.id, few.location.line) == ("AL104", 3)  # /rear_laser: /vendor0 is remapped onto it
+    assert few.message.endswith("(unless /vendor0, /vendor1, which archlog cannot see into, publishes it)")
+    [many] = ENGINE.run(store(6))[1]
+    assert many.message.endswith("(unless one of the 6 nodes archlog cannot see into publishes it)")

@@ -178,10 +178,18 @@ DERIVED: tuple[Relation, ...] = (
     _derived(_PRELUDE, "opaque_may_use", "An opaque node that might use a name archlog cannot see it use: the launch "
              "file remaps one of its names onto it, or (extraction incomplete) its known ports use the name's type.",
              _NODE, ("name", "name", "a topic, service or action name")),
-    _derived(_PRELUDE, "opaque_near", "A name an opaque node other than the given one might use (a rule about that "
-             "node's port on the name cannot conclude).", ("name", "name", "the name"), _NODE),
-    _derived(_PRELUDE, "opaque_other", "An opaque node other than the port's own: the uncertainty a finding about the "
-             "port names (the `unseen` lists).", _PORT, _NODE),
+    _derived(_PRELUDE, "opaque_near", "A name a node has a port on and that an opaque node other than it might use "
+             "(a rule about that port cannot conclude).", ("name", "name", "the name"), _NODE),
+    _derived(_PRELUDE, "opaque_other", "An opaque node other than the port's own, for a port of a finding that names "
+             "the uncertainty left (the `unseen` lists), when at most five nodes are opaque.", _PORT, _NODE),
+    _derived(_PRELUDE, "opaque_many", "For a port of a finding that names the uncertainty left, how many nodes are "
+             "opaque when there are more than five (they are then counted, not named).", _PORT,
+             ("count", "int", "the number of opaque nodes")),
+    _derived(_PRELUDE, "uncertain_port", "The port (and its node) of a finding of AL103, AL104, AL201, AL203 or AL601, "
+             "whose message names the opaque nodes it still depends on.", _PORT, _NODE),
+    _derived(_PRELUDE, "unfed", "A subscriber whose topic nothing publishes, nor might publish (no publisher with an "
+             "unknown name of a compatible type, no opaque node that might use the topic).", _SUB, _NODE,
+             ("topic", "name", "the topic")),
     _derived(_PRELUDE, "group_input", "Alternative inputs: a guard only the callbacks of two or more inputs set, so "
              "the publish call needs one of them.", ("group", "id", "the guard, g(call, var, value)"), _SUB),
     _derived(_PRELUDE, "required_group", "An output every call of which needs one of a group of alternative inputs.",

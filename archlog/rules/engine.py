@@ -87,16 +87,26 @@ class Engine:
 
     def findings(self, ctl: clingo.Control, store: FactStore) -> list[Finding]:
         result = []
+        listed: dict[str, dict[clingo.Symbol, set[str]]] = {}  # relation -> first argument -> rendered seconds
         for rule in self.ruleset.rules:
             for atom in ctl.symbolic_atoms.by_signature(rule.predicate, len(rule.columns)):
                 values = {c: store.from_term(a) for c, a in zip(rule.columns, atom.symbol.arguments)}
                 for name, (relation, column) in rule.lists.items():
-                    key = atom.symbol.arguments[rule.columns.index(column)]
-                    items = {render(store.from_term(row.symbol.arguments[1]))
-                             for row in ctl.symbolic_atoms.by_signature(relation, 2) if row.symbol.arguments[0] == key}
+                    if relation not in listed:
+                        listed[relation] = _binary_rows(ctl, relation, store)
+                    items = listed[relation].get(atom.symbol.arguments[rule.columns.index(column)], set())
                     values[name] = _list_text(", ".join(sorted(items)), rule.list_phrases.get(name))
                 result.append(_finding(rule, values, store))
         return sorted(result, key=lambda f: (f.location.file, f.location.line, f.rule.id, f.message))
+
+
+def _binary_rows(ctl: clingo.Control, relation: str, store: FactStore) -> dict[clingo.Symbol, set[str]]:
+    """The rows of a binary relation, by first argument (a finding's list reads one key of them)."""
+    rows: dict[clingo.Symbol, set[str]] = {}
+    for row in ctl.symbolic_atoms.by_signature(relation, 2):
+        first, second = row.symbol.arguments
+        rows.setdefault(first, set()).add(render(store.from_term(second)))
+    return rows
 
 
 def _list_text(joined: str, phrase: str | None) -> str:
