@@ -95,17 +95,20 @@ def test_opaque_nodes_block_only_where_they_might_be_the_counterpart() -> None:
         facts = system(("publisher", "p1", "/laser", "/front/scan", "sensor_msgs/LaserScan"),
                        ("subscriber", "p2", "/rviz", "/front/scan", "sensor_msgs/LaserScan"),
                        ("subscriber", "p3", "/amcl", "/base_laser", "sensor_msgs/LaserScan"),
-                       ("subscriber", "p4", "/amcl", "/rear_laser", "sensor_msgs/LaserScan"))
+                       ("subscriber", "p4", "/amcl", "/rear_laser", "sensor_msgs/LaserScan"),
+                       ("subscriber", "p5", "/amcl", "/vendor1/scan", "sensor_msgs/LaserScan"))
         for node in ("/laser", "/rviz", "/amcl"):
             facts.add("node", node, "pkg", node[1:], "e0")
             facts.add("node_source", node, "cpp")
         for i in range(opaque):
             facts.add("node", f"/vendor{i}", "vendor", "driver", "e0")
         facts.add("remap", "e9", "/vendor0", "/scan", "/rear_laser")
+        facts.add("private_name", "/vendor1/scan", "/vendor1")
         return facts
 
     [few] = ENGINE.run(store(2))[1]
-    assert (few.rule.id, few.location.line) == ("AL104", 3)  # /rear_laser: /vendor0 is remapped onto it
+    # /rear_laser: /vendor0 is remapped onto it; /vendor1/scan: in /vendor1's private namespace
+    assert (few.rule.id, few.location.line) == ("AL104", 3)
     assert few.message.endswith("(unless /vendor0, /vendor1, which archlog cannot see into, publishes it)")
     [many] = ENGINE.run(store(6))[1]
     assert many.message.endswith("(unless one of the 6 nodes archlog cannot see into publishes it)")

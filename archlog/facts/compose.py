@@ -59,6 +59,7 @@ def compose(system: System, diagnostics: DiagnosticSink, near_threshold: float =
             store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config)
     _param_topics(store, system)
+    _private_names(store)
     _unknown_port_names(store, diagnostics)
     add_near_names(store, near_threshold, diagnostics)
     return store
@@ -175,6 +176,18 @@ def _handle_namespace(handle_ns: Value, node: LaunchNode, config: LaunchConfig) 
     """The resolved namespace of the handle a port was created on, before remapping ('' for the node's own)."""
     handle = _single(_bind(handle_ns, node, config))
     return names.resolve(handle, node.namespace, node.name) if isinstance(handle, str) and handle else handle
+
+
+def _private_names(store: FactStore) -> None:
+    """private_name facts: the names ports use that lie in a node instance's private namespace."""
+    nodes = {str(row[0]) for row in store.rows("node")}
+    used = {str(row[2]) for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)}
+    for name in sorted(used):
+        parent = names.namespace_of(name)
+        while parent != "/":
+            if parent in nodes:
+                store.add("private_name", name, parent)
+            parent = names.namespace_of(parent)
 
 
 def _param_topics(store: FactStore, system: System) -> None:

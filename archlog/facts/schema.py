@@ -112,6 +112,8 @@ RELATIONS: tuple[Relation, ...] = (
          "a topic: its last segment ends in `topic`, or some port takes its name from a parameter of that last "
          "segment, and its value is a graph name.", ("param", "name", "resolved parameter name"), _NODE,
          ("topic", "name", "the value resolved as the node would resolve a topic name")),
+    _rel("ports", "private_name", "A name some port uses that lies in a node instance's private namespace "
+         "(/robot/amcl/particlecloud for /robot/amcl).", ("name", "name", "the name"), _NODE),
     _rel("behavior", "publish_call", "A call that publishes on a publisher port (`location` gives its file:line).",
          ("call", "id", "the publish call"), _NODE, ("pub", "id", "the publisher port it uses")),
     _rel("behavior", "publish_trigger", "One way a publish call is reached (a call may have several).",
