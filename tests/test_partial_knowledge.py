@@ -55,4 +55,4 @@ def test_misplaced_remap_names_the_node_it_misses() -> None:
     _analysis, findings = run_case(CORPUS / "misplaced_remap" / "buggy")
     [al401] = [f for f in findings if f.rule.id == "AL401"]
     assert "(it applies to /safety/safety_stop)" in al401.message
-    assert "/safety/obstacle_monitor uses the name but comes before the remap" in al401.message
+    assert "; the name is used by /safety/obstacle_monitor, declared before the remap" in al401.message
