@@ -77,10 +77,40 @@ def test_unreachable_required_input_lists_what_it_silences() -> None:
     case = Path(__file__).resolve().parent.parent / "archlog/rules/builtin/tests/AL601_required_input_unreachable"
     [finding] = [f for f in ENGINE.run(load_facts(case / "facts.json"))[1] if f.rule.id == "AL601"]
     assert finding.values["outputs"] == "/trajectory"
-    assert finding.values["near"] == "/odom_pos"
-    assert finding.values["silenced"] == "/follower"
+    assert finding.values["near"] == "; candidates: /odom_pos"
+    assert finding.values["silenced"] == "; nodes silenced downstream: /follower"
+    assert finding.values["unseen"] == ""  # an empty list with a phrase leaves no text
     assert (finding.location.file, finding.location.line) == ("lattice.cpp", 20)
-    assert [(r.file, r.line) for r in finding.related] == [("lattice.cpp", 40)]
+    # the other side is the candidate's publisher (/localizer's /odom_pos), not the node's own publish call
+    assert [(r.file, r.line) for r in finding.related] == [("localizer.py", 5)]
+
+
+def test_opaque_nodes_block_only_where_they_might_be_the_counterpart() -> None:
+    """Issue 21: an opaque node remapped onto a name keeps a rule from concluding there; elsewhere
+    the finding is reported and names the opaque nodes, or counts them when there are many."""
+    def store(opaque: int) -> FactStore:
+        facts = system(("publisher", "p1", "/laser", "/front/scan", "sensor_msgs/LaserScan"),
+                       ("subscriber", "p2", "/rviz", "/front/scan", "sensor_msgs/LaserScan"),
+                       ("subscriber", "p3", "/amcl", "/base_laser", "sensor_msgs/LaserScan"),
+                       ("subscriber", "p4", "/amcl", "/rear_laser", "sensor_msgs/LaserScan"),
+                       ("subscriber", "p5", "/amcl", "/vendor1/scan", "sensor_msgs/LaserScan"))
+        for node in ("/laser", "/rviz", "/amcl"):
+            facts.add("node", node, "pkg", node[1:], "e0")
+            facts.add("node_source", node, "cpp")
+        for i in range(opaque):
+            facts.add("node", f"/vendor{i}", "vendor", "driver", "e0")
+        facts.add("remap", "e9", "/vendor0", "/scan", "/rear_laser")
+        facts.add("private_name", "/vendor1/scan", "/vendor1")
+        return facts
+
+    [few] = ENGINE.run(store(2))[1]
+    # /rear_laser: /vendor0 is remapped onto it; /vendor1/scan: in /vendor1's private namespace
+    assert (few.rule.id, few.location.line) == ("AL104", 3)
+    assert few.message.endswith("(unless /vendor0, /vendor1, which archlog cannot see into, publishes it)")
+    [many] = ENGINE.run(store(6))[1]
+    assert many.message.endswith("(unless one of the 6 nodes archlog cannot see into publishes it)")
+
+
 
 
 def test_near_miss_names_the_nearest_namespace_and_relates_the_equally_near_others() -> None:

@@ -54,8 +54,9 @@ def test_sarif_paths_are_relative_to_the_git_work_tree(repo: Path, sarif_schema:
     jsonschema.validate(sarif, sarif_schema)
     run = sarif["runs"][0]
     assert run["originalUriBaseIds"]["SRCROOT"]["uri"] == repo.resolve().as_uri() + "/"
+    # the finding, then the other side: the candidate publisher of the missing input
     assert uris(sarif) == [f"{NESTED}/src/safety_monitor/scripts/proximity_guard.py",
-                           f"{NESTED}/src/safety_monitor/scripts/proximity_guard.py",
+                           f"{NESTED}/src/laser_bringup/scripts/laser_driver.py",
                            f"{NESTED}/src/safety_monitor/launch/guard.launch",
                            f"{NESTED}/src/safety_monitor/launch/robot.launch"]
     for uri in uris(sarif):  # each names a file of the repository
@@ -91,7 +92,8 @@ def test_json_and_text_use_the_same_root(repo: Path) -> None:
     jsonschema.validate(document, SCHEMA)
     assert document["root"] == str(repo.resolve())
     [finding] = document["findings"]
-    assert [loc["file"] for loc in finding["locations"]] == [f"{NESTED}/src/safety_monitor/scripts/proximity_guard.py"] * 2
+    assert [loc["file"] for loc in finding["locations"]] == [f"{NESTED}/src/safety_monitor/scripts/proximity_guard.py",
+                                                          f"{NESTED}/src/laser_bringup/scripts/laser_driver.py"]
     text = archlog("check", repo / NESTED, *LAUNCH).stdout
     assert text.startswith(f"{NESTED}/src/safety_monitor/scripts/proximity_guard.py\n")
     assert "rospy.Subscriber(" in text  # the source line is still found from the new root

@@ -40,7 +40,7 @@ def test_an_imu_topic_set_in_xacro_is_checked_against_its_subscriber() -> None:
     found = Engine(load_rules([])).run(buggy.store)[1]
     assert [(f.rule.id, f.values["topic"], str(f.location.file), f.location.line) for f in found] == [
         ("AL601", "/imu/data", "bot/scripts/guard.py", 10)]  # it stops the base only on IMU messages
-    assert found[0].values["near"] == "/imu_raw"  # the xacro's topic is the candidate (AL103 steps aside)
+    assert found[0].values["near"] == "; candidates: /imu_raw"  # the xacro's topic is the candidate (AL103 steps aside)
     clean = analyse([CASES / "clean"], ["bot/sim.launch"], {}, [])  # imu_topic:=imu/data on the xacro command
     assert ("/spawn_bot", "/imu/data", "sensor_msgs/Imu") in ports(clean, "publisher")
     assert Engine(load_rules([])).run(clean.store)[1] == []

@@ -50,12 +50,18 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
             store.locate(include.id, include.file, include.line)
         if node.plugin:
             store.add("nodelet", node.name, node.plugin, node.manager or "")
+        for src, dst, elem in node.remaps:  # an opaque node's too: they tell which names it may use
+            store.add("remap", elem.id, node.name, names.resolve(src, node.namespace, node.name),
+                      names.resolve(dst, node.namespace, node.name))
+            store.locate(elem.id, elem.file, elem.line)
         if summary is None:
             continue
         store.add("node_source", node.name, summary.origin)
         if summary.incomplete:
             store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config)
+    _param_topics(store, system)
+    _private_names(store)
     _unknown_port_names(store, diagnostics)
     add_namespaces(store)
     return store
@@ -101,10 +107,6 @@ def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSi
 def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig) -> None:
     pairs = [(src, dst) for src, dst, _ in node.remaps]
     remaps = names.resolve_remaps(pairs[::-1] if node.ros2 else pairs, node.namespace, node.name)
-    for src, dst, elem in node.remaps:
-        store.add("remap", elem.id, node.name, names.resolve(src, node.namespace, node.name),
-                  names.resolve(dst, node.namespace, node.name))
-        store.locate(elem.id, elem.file, elem.line)
     ports = [e for p in summary.ports if _present(p, node, config) for e in _each(p, node, config)]
     sites: Sites = {}
     for port in [q for p in ports for q in [p, *action_topics(p)]]:
@@ -121,9 +123,13 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
             for period in _options(_bind(port.name, node, config)):
                 store.add("timer", pid, node.name, period)
             continue
-        resolved = [(_resolve(option, port.handle_ns, node, config, {}),
-                     _resolve(option, port.handle_ns, node, config, remaps))
-                    for option in _options(_bind(port.name, node, config))]
+        before_remaps = [_resolve(option, port.handle_ns, node, config, remaps)
+                         for option in _options(_bind(port.name, node, config))]
+        resolved = [(b, b if isinstance(b, Unknown) else names.remap(b, remaps)) for b in before_remaps]
+        if isinstance(port.name, ParamRef) and isinstance(key := _param_key(port.name, node, config), str):
+            store.add("port_name_param", pid, key)
+        if not node.ros2 and isinstance(handle := _handle_namespace(port.handle_ns, node, config), str) and handle:
+            store.add("handle_namespace", pid, handle)
         if len(resolved) > 1:
             store.add("alternative_names", pid, len(resolved))
         last = _bind(port.default, node, config) if port.default is not None else \
@@ -162,19 +168,55 @@ def action_topics(port: Port) -> list[Port]:
 
 def _resolve(name: str | Unknown, handle_ns: Value, node: LaunchNode, config: LaunchConfig,
              remaps: dict[str, str]) -> str | Unknown:
-    """Resolve one bound port name in the instance's context: handle namespace, `~`, then remaps."""
+    """Resolve one bound port name in the instance's context (handle namespace, `~`), before the name's
+    own remap. As roscpp does, a ROS 1 NodeHandle's namespace is itself remapped with `remaps` first."""
     if isinstance(name, Unknown):
         return name
     if name.startswith("~"):
-        resolved = names.join(node.name, name[1:].lstrip("/"))
-    elif name.startswith("/"):
-        resolved = names.canonical(name)
-    else:
-        handle = _single(_bind(handle_ns, node, config))
-        if isinstance(handle, Unknown):
-            return Unknown(f"{handle.expr}/{name}", handle.file, handle.line)
-        resolved = names.join(names.resolve(handle, node.namespace, node.name) if handle else node.namespace, name)
-    return names.remap(resolved, remaps)
+        return names.join(node.name, name[1:].lstrip("/"))
+    if name.startswith("/"):
+        return names.canonical(name)
+    handle = _handle_namespace(handle_ns, node, config)
+    if isinstance(handle, Unknown):
+        return Unknown(f"{handle.expr}/{name}", handle.file, handle.line)
+    return names.join(names.remap(handle, remaps) if handle and not node.ros2 else handle or node.namespace, name)
+
+
+def _handle_namespace(handle_ns: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
+    """The resolved namespace of the handle a port was created on, before remapping ('' for the node's own)."""
+    handle = _single(_bind(handle_ns, node, config))
+    return names.resolve(handle, node.namespace, node.name) if isinstance(handle, str) and handle else handle
+
+
+def _private_names(store: FactStore) -> None:
+    """private_name facts: the names ports use that lie in a node instance's private namespace."""
+    nodes = {str(row[0]) for row in store.rows("node")}
+    used = {str(row[2]) for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)}
+    for name in sorted(used):
+        parent = names.namespace_of(name)
+        while parent != "/":
+            if parent in nodes:
+                store.add("private_name", name, parent)
+            parent = names.namespace_of(parent)
+
+
+def _param_topics(store: FactStore, system: System) -> None:
+    """param_topic facts: a parameter the configuration sets in a node's private namespace, named like
+    a topic parameter (its last segment ends in `topic`, or some port takes its name from a parameter
+    of that last segment), whose value is a graph name: that name resolved as the node would."""
+    topic_params = {str(key).rsplit("/", 1)[-1] for _port, key in store.rows("port_name_param")}
+    for node in (i.launch for i in system.instances):
+        for name, (value, _elem) in system.config.params.items():
+            last = name.rsplit("/", 1)[-1]
+            if name.startswith(node.name + "/") and "/" not in name[len(node.name) + 1:] and \
+                    isinstance(value, str) and names.is_valid(value) and value != "/" and \
+                    (last.endswith("topic") or last in topic_params):
+                store.add("param_topic", name, node.name, names.resolve(value, node.namespace, node.name))
+
+
+def _param_key(ref: ParamRef, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
+    """The resolved name of the parameter a value is read from."""
+    return _resolve(_single(_bind(ref.name, node, config)), ref.handle_ns, node, config, {})
 
 
 def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown | Alternatives:
@@ -182,7 +224,7 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
     if isinstance(value, (str, Unknown)):
         return value
     if isinstance(value, ParamRef):
-        key = _resolve(_single(_bind(value.name, node, config)), value.handle_ns, node, config, {})
+        key = _param_key(value, node, config)
         if isinstance(key, str) and key in config.params:
             found = config.params[key][0]
             return found if isinstance(found, Unknown) else _text(found)

@@ -113,6 +113,17 @@ RELATIONS: tuple[Relation, ...] = (
          "each alternative is its own row of the port's relation.", _PORT, ("count", "int", "how many alternatives")),
     _rel("ports", "port_source_name", "A port's name resolved in the node's namespace, before remapping.",
          _PORT, ("name", "name", "resolved name before remaps")),
+    _rel("ports", "handle_namespace", "A ROS 1 port created on a NodeHandle with a namespace of its own: that "
+         "namespace resolved in the node's, before remapping (roscpp remaps it like any name, so a remap of it moves "
+         "every port of the handle).", _PORT, ("namespace", "name", "the handle's resolved namespace")),
+    _rel("ports", "port_name_param", "A port whose name is the value of a parameter (with a default, or a model's "
+         "`{param: ...}`).", _PORT, ("param", "name", "the resolved parameter name")),
+    _rel("configuration", "param_topic", "A parameter the configuration sets in a node's private namespace that names "
+         "a topic: its last segment ends in `topic`, or some port takes its name from a parameter of that last "
+         "segment, and its value is a graph name.", ("param", "name", "resolved parameter name"), _NODE,
+         ("topic", "name", "the value resolved as the node would resolve a topic name")),
+    _rel("ports", "private_name", "A name some port uses that lies in a node instance's private namespace "
+         "(/robot/amcl/particlecloud for /robot/amcl).", ("name", "name", "the name"), _NODE),
     _rel("behavior", "publish_call", "A call that publishes on a publisher port (`location` gives its file:line).",
          ("call", "id", "the publish call"), _NODE, ("pub", "id", "the publisher port it uses")),
     _rel("behavior", "publish_trigger", "One way a publish call is reached (a call may have several).",
@@ -156,6 +167,7 @@ def _derived(source: str, name: str, doc: str, *cols: tuple[str, str, str]) -> R
 
 _PRELUDE = "prelude.lp"
 _AL601 = "AL601_required_input_unreachable.lp"
+_AL401 = "AL401_unused_remap.lp"
 _SUB = ("sub", "id", "the subscriber port")
 
 # Relations the shipped rules derive that Python code reads from the grounded program (reports,
@@ -182,6 +194,25 @@ DERIVED: tuple[Relation, ...] = (
     _derived(_PRELUDE, "opaque_node", "A node instance whose ports are not (all) known: no source or model, or "
              "incomplete extraction.", _NODE),
     _derived(_PRELUDE, "system_opaque", "Some node instance of the configuration is opaque."),
+    _derived(_PRELUDE, "opaque_may_use", "An opaque node that might use a name archlog cannot see it use: the launch "
+             "file remaps one of its names onto it, or (extraction incomplete) its known ports use the name's type.",
+             _NODE, ("name", "name", "a topic, service or action name")),
+    _derived(_PRELUDE, "opaque_near", "A name a node has a port on and that an opaque node other than it might use "
+             "(a rule about that port cannot conclude).", ("name", "name", "the name"), _NODE),
+    _derived(_PRELUDE, "opaque_other", "An opaque node other than the port's own, for a port of a finding that names "
+             "the uncertainty left (the `unseen` lists), when at most five nodes are opaque.", _PORT, _NODE),
+    _derived(_PRELUDE, "opaque_many", "For a port of a finding that names the uncertainty left, how many nodes are "
+             "opaque when there are more than five (they are then counted, not named).", _PORT,
+             ("count", "int", "the number of opaque nodes")),
+    _derived(_PRELUDE, "uncertain_port", "The port (and its node) of a finding of AL103, AL104, AL201, AL203 or AL601, "
+             "whose message names the opaque nodes it still depends on.", _PORT, _NODE),
+    _derived(_PRELUDE, "unfed", "A subscriber whose topic nothing publishes, nor might publish (no publisher with an "
+             "unknown name of a compatible type, no opaque node that might use the topic).", _SUB, _NODE,
+             ("topic", "name", "the topic")),
+    _derived(_PRELUDE, "group_input", "Alternative inputs: a guard only the callbacks of two or more inputs set, so "
+             "the publish call needs one of them.", ("group", "id", "the guard, g(call, var, value)"), _SUB),
+    _derived(_PRELUDE, "required_group", "An output every call of which needs one of a group of alternative inputs.",
+             ("pub", "id", "the publisher port"), ("group", "id", "the group")),
     _derived(_PRELUDE, "qos_pair", "A publisher and a subscriber of one topic whose QoS is known, so their policies "
              "must be compatible for them to connect.", ("topic", "name", "the topic"),
              ("pub", "id", "the publisher port"), ("pub_node", "name", "its node"), _SUB,
@@ -196,6 +227,14 @@ DERIVED: tuple[Relation, ...] = (
              _SUB, ("topic", "name", "the output's topic")),
     _derived(_AL601, "silenced_node", "A node silenced downstream of a starved input (AL601's `silenced` list).",
              _SUB, _NODE),
+    _derived(_AL601, "starved_alternative", "Another input of a starved input's group, none of which is published "
+             "(AL601's `alternatives` list).", _SUB, ("topic", "name", "the alternative's topic")),
+    _derived(_AL401, "remap_target", "A node an ineffective remap applies to (AL401's `applies` list).",
+             ("elem", "id", "the remap"), _NODE),
+    _derived(_AL401, "remap_user_before", "A node that uses an ineffective remap's name but is declared before it in "
+             "the same file (AL401's `before` list).", ("elem", "id", "the remap"), _NODE),
+    _derived(_AL401, "remap_user_outside", "A node that uses an ineffective remap's name outside its scope (AL401's "
+             "`outside` list).", ("elem", "id", "the remap"), _NODE),
     _derived(_AL601, "near_publisher", "A candidate for a starved input: a published near-miss name, or a topic of "
              "its type published to nobody (AL601's `near` list).", _SUB, ("topic", "name", "the candidate topic")),
     _derived("AL102_near_miss_topic.lp", "near_also", "Another candidate as near as the one AL102 names for a "

@@ -99,20 +99,36 @@ class Engine:
     def findings(self, ctl: clingo.Control, store: FactStore) -> list[Finding]:
         clock = time.perf_counter()
         result = []
+        listed: dict[str, dict[clingo.Symbol, set[str]]] = {}  # relation -> first argument -> rendered seconds
         for rule in self.ruleset.rules:
             for atom in ctl.symbolic_atoms.by_signature(rule.predicate, len(rule.columns)):
                 values = {c: store.from_term(a) for c, a in zip(rule.columns, atom.symbol.arguments)}
-                listed: list[str] = []
+                shown: list[str] = []
                 for name, (relation, column) in rule.lists.items():
-                    key = atom.symbol.arguments[rule.columns.index(column)]
-                    items = sorted({render(store.from_term(row.symbol.arguments[1]))
-                                    for row in ctl.symbolic_atoms.by_signature(relation, 2)
-                                    if row.symbol.arguments[0] == key})
-                    values[name] = ", ".join(items) or "none"
-                    listed += items
-                result.append(_finding(rule, values, store, listed))
+                    if relation not in listed:
+                        listed[relation] = _binary_rows(ctl, relation, store)
+                    items = listed[relation].get(atom.symbol.arguments[rule.columns.index(column)], set())
+                    values[name] = _list_text(", ".join(sorted(items)), rule.list_phrases.get(name))
+                    shown += sorted(items)
+                result.append(_finding(rule, values, store, shown))
         self.timings["findings"] = time.perf_counter() - clock
         return sorted(result, key=lambda f: (f.location.file, f.location.line, f.rule.id, f.message))
+
+
+def _binary_rows(ctl: clingo.Control, relation: str, store: FactStore) -> dict[clingo.Symbol, set[str]]:
+    """The rows of a binary relation, by first argument (a finding's list reads one key of them)."""
+    rows: dict[clingo.Symbol, set[str]] = {}
+    for row in ctl.symbolic_atoms.by_signature(relation, 2):
+        first, second = row.symbol.arguments
+        rows.setdefault(first, set()).add(render(store.from_term(second)))
+    return rows
+
+
+def _list_text(joined: str, phrase: str | None) -> str:
+    """A list value: the items, or "none"; with a phrase, the phrase around them, or nothing."""
+    if phrase is None:
+        return joined or "none"
+    return phrase.replace("{}", joined) if joined else ""
 
 
 def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list[str]) -> Finding:
@@ -129,8 +145,9 @@ def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list
             if render(value) not in bucket:
                 bucket.append(render(value))
     message = rule.message.format(**{k: render(v) for k, v in values.items()})
+    related = [found for found in map(locate, rule.related) if found.file]  # an optional column may hold `none`
     also = [Location(*found) for item in listed if (found := store.location(item))]
-    return Finding(rule, values, message, locate(rule.location), [locate(c) for c in rule.related] + also, subjects)
+    return Finding(rule, values, message, locate(rule.location), related + also, subjects)
 
 
 # -- checking rule programs ---------------------------------------------------------------

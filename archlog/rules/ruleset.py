@@ -63,6 +63,8 @@ class Rule:
     # name -> (relation, column): the second arguments of the relation's binary rows whose first
     # argument is the finding's value in that column, listed in the finding (e.g. nodes silenced)
     lists: dict[str, tuple[str, str]] = field(default_factory=dict)
+    # list name -> the phrase it renders as ("{}" is the list), or nothing when the list is empty
+    list_phrases: dict[str, str] = field(default_factory=dict)
     # metadata key -> its line in the file (errors about a key point at it)
     lines: dict[str, int] = field(default_factory=dict)
 
@@ -192,8 +194,13 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
         raise fail("precision", f"precision must be one of {', '.join(PRECISIONS)}")
     if not isinstance(meta.get("lists") or {}, dict):
         raise fail("lists", "`lists` must be a mapping such as {name: relation(column)}")
-    lists = {}
+    lists, phrases = {}, {}
     for name, spec in (meta.get("lists") or {}).items():
+        if isinstance(spec, dict):
+            if set(spec) != {"of", "text"} or "{}" not in str(spec["text"]):
+                raise fail("lists", f"list '{name}' as a mapping must be {{of: relation(column), text: \"... {{}} ...\"}}")
+            phrases[str(name)] = str(spec["text"])
+            spec = spec["of"]
         match = _HEAD.match(str(spec))
         if not match or match.group(2).strip() not in columns:
             raise fail("lists", f"list '{name}' must look like relation(column), with a column of {head.group(1)}")
@@ -207,5 +214,5 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
         message=str(meta["message"]), predicate=head.group(1), columns=columns, location=meta["location"],
         related=list(related), description=str(meta.get("description", "")).strip(),
         help=str(meta.get("help", "")).strip(), url=str(meta.get("url", "")).strip(), tags=list(meta.get("tags") or []),
-        precision=precision, file=file, line=line, lists=lists, lines=lines,
+        precision=precision, file=file, line=line, lists=lists, list_phrases=phrases, lines=lines,
     )
