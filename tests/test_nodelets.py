@@ -1,5 +1,6 @@
 """Nodelets: plugin XML and PLUGINLIB_EXPORT_CLASS map pkg/Type to a class; launch `nodelet load`
-instances get that class's ports, with the manager's handles and their own remaps."""
+instances get that class's ports, with the manager's handles and their own remaps; the nodelet
+mechanism's own ports (manager services, bonds) are the manager's and the loaders'."""
 
 from __future__ import annotations
 
@@ -59,13 +60,34 @@ def test_nodelet_instances_get_their_class_ports(tmp_path: Path) -> None:
     (pkg / "src" / "nodelets.cpp").write_text(SOURCE)
     (pkg / "cams.launch").write_text(LAUNCH)
     result = analyse([tmp_path], [str(pkg / "cams.launch")], {}, [])
-    ports = sorted((n, t, ty) for rel in ("publisher", "subscriber") for _p, n, t, ty in result.store.rows(rel))
-    assert ports == [("/cam/blur", "/cam/blur/blurred", "sensor_msgs/Image"),
-                     ("/cam/blur", "/cam/image_raw", "sensor_msgs/Image"),
-                     ("/cam/edges", "/cam/edges", "sensor_msgs/Image")]
+    ports = sorted((rel, n, t, ty) for rel in ("publisher", "subscriber") for _p, n, t, ty in result.store.rows(rel))
+    bond = [(rel, node, "/manager/bond", "bond/Status") for rel in ("publisher", "subscriber")
+            for node in ("/cam/blur", "/manager")]
+    assert ports == sorted([("publisher", "/cam/blur", "/cam/blur/blurred", "sensor_msgs/Image"),
+                            ("subscriber", "/cam/blur", "/cam/image_raw", "sensor_msgs/Image"),
+                            ("publisher", "/cam/edges", "/cam/edges", "sensor_msgs/Image"), *bond])
     assert sorted(result.store.rows("nodelet")) == [("/cam/blur", "vision/Blur", "/manager"),
                                                    ("/cam/edges", "vision/Edges", "")]
-    assert [d.code for d in result.diagnostics.items] == ["no-model"]  # only the manager has no model
+    services = {(rel, n, s, ty) for rel in ("service_server", "service_client") for _p, n, s, ty in result.store.rows(rel)}
+    assert services == {("service_server", "/manager", "/manager/load_nodelet", "nodelet/NodeletLoad"),
+                        ("service_server", "/manager", "/manager/unload_nodelet", "nodelet/NodeletUnload"),
+                        ("service_server", "/manager", "/manager/list", "nodelet/NodeletList"),
+                        ("service_client", "/cam/blur", "/manager/load_nodelet", "nodelet/NodeletLoad"),
+                        ("service_client", "/cam/blur", "/manager/unload_nodelet", "nodelet/NodeletUnload")}
+    assert result.diagnostics.items == []  # the manager runs the nodelet mechanism: not opaque
+
+
+def test_manager_without_bonded_loaders_has_no_bond(tmp_path: Path) -> None:
+    """`--no-bond` loaders and `standalone` processes do not bond: the manager has only its services."""
+    (tmp_path / "a.launch").write_text("""<launch>
+  <node pkg="nodelet" type="nodelet" name="manager" args="manager"/>
+  <node pkg="nodelet" type="nodelet" name="x" args="load some/Thing manager --no-bond"/>
+</launch>""")
+    result = analyse([tmp_path], [str(tmp_path / "a.launch")], {}, [])
+    topics = sorted((n, t) for rel in ("publisher", "subscriber") for _p, n, t, _ty in result.store.rows(rel))
+    assert topics == []
+    clients = sorted((n, s) for _p, n, s, _ty in result.store.rows("service_client"))
+    assert clients == [("/x", "/manager/load_nodelet"), ("/x", "/manager/unload_nodelet")]
 
 
 def test_plugin_descriptions_with_several_libraries() -> None:
@@ -74,9 +96,10 @@ def test_plugin_descriptions_with_several_libraries() -> None:
     nodelet_plugins.xml), one with a <class_libraries> wrapper; every class of every library is read."""
     fixture = Path(__file__).resolve().parent.parent / "corpus" / "workspace" / "nodelet_libraries"
     result = analyse([fixture], [str(fixture / "main.launch")], {}, [])
-    ports = sorted((n, t) for rel in ("publisher", "subscriber") for _p, n, t, _ty in result.store.rows(rel))
+    ports = sorted((n, t) for rel in ("publisher", "subscriber") for _p, n, t, _ty in result.store.rows(rel)
+                   if not t.endswith("/bond"))
     assert ports == [("/a", "/a/out_a"), ("/b", "/b/out_b"), ("/c", "/in_c"), ("/d", "/in_d")]
     assert sorted(result.store.rows("nodelet")) == [("/a", "filters/FilterA", "/manager"),
                                                    ("/b", "filters/FilterB", "/manager"),
                                                    ("/c", "wrapped/C", ""), ("/d", "wrapped/D", "")]
-    assert [d.code for d in result.diagnostics.items] == ["no-model"]  # only the manager has no model
+    assert result.diagnostics.items == []

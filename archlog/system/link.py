@@ -17,6 +17,7 @@ from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels
+from archlog.system.nodelets import is_manager, loader_ports, manager_summary
 from archlog.system.rosrun import rosrun_config
 from archlog.values import ParamRef
 
@@ -108,9 +109,10 @@ def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
 
 def _summary(node: LaunchNode, summaries: Summaries, config: LaunchConfig, workspace: Workspace,
              diagnostics: DiagnosticSink, missing: set[tuple[str, str]]) -> NodeSummary | None:
-    """What one instance runs, with its configured ports; a kind with neither is reported once."""
-    summary = summaries.get(node.kind)
-    extra = configured_ports(node, config, workspace, diagnostics)
+    """What one instance runs, with its configured ports; a kind with neither is reported once.
+    A nodelet manager runs the nodelet mechanism, whatever the source of `nodelet` says."""
+    summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
+    extra = configured_ports(node, config, workspace, diagnostics) + loader_ports(node)
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
             NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")
