@@ -103,3 +103,19 @@ def test_plugin_descriptions_with_several_libraries() -> None:
                                                    ("/b", "filters/FilterB", "/manager"),
                                                    ("/c", "wrapped/C", ""), ("/d", "wrapped/D", "")]
     assert result.diagnostics.items == []
+
+
+def test_plugin_named_under_another_prefix_than_its_package(tmp_path: Path) -> None:
+    """pcl_ros declares its nodelets as pcl/VoxelGrid: `nodelet load pcl/VoxelGrid` runs the class
+    of package pcl_ros (here vision_ros declares vision/Blur)."""
+    pkg = tmp_path / "src" / "vision_ros"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "package.xml").write_text(MANIFEST.replace("<name>vision</name>", "<name>vision_ros</name>"))
+    (pkg / "nodelets.xml").write_text(PLUGINS)
+    (pkg / "CMakeLists.txt").write_text("project(vision_ros)\nadd_library(vision_nodelets src/nodelets.cpp)\n")
+    (pkg / "src" / "nodelets.cpp").write_text(SOURCE)
+    (pkg / "cams.launch").write_text(LAUNCH)
+    result = analyse([tmp_path], [str(pkg / "cams.launch")], {}, [])
+    ports = sorted((n, t) for _p, n, t, _ty in result.store.rows("publisher") if not t.endswith("/bond"))
+    assert ports == [("/cam/blur", "/cam/blur/blurred"), ("/cam/edges", "/cam/edges")]
+    assert result.diagnostics.items == []

@@ -67,11 +67,13 @@ def extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnosti
     inline: dict[str, Callable[[Executable], NodeSummary]] = {}
     isolated: dict[str, Callable[[Executable], IsolatedJob]] = {}
     jobs: list[IsolatedJob] = []
+    aliases: dict[tuple[str, str], tuple[str, str]] = {}
     for package in workspace.packages.values():
         for exe in package.executables.values():
             kind = INPUT_KINDS.get(exe.lang)
-            if kind is None or wanted is not None and (package.name, exe.name) not in wanted:
+            if kind is None or wanted is not None and not wanted.intersection(exe.kinds):
                 continue
+            aliases.update((alias, exe.kinds[0]) for alias in exe.kinds[1:])
             if kind.start_isolated is not None:
                 if exe.lang not in isolated:
                     isolated[exe.lang] = kind.start_isolated(workspace, diagnostics)
@@ -90,6 +92,7 @@ def extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnosti
         summaries[(job.package, job.executable)] = summary
         for diag in found:
             diagnostics.add(diag.file, diag.line, diag.code, diag.message, diag.severity, diag.column)
+    summaries.update((alias, summaries[own]) for alias, own in aliases.items() if own in summaries)
     return summaries
 
 

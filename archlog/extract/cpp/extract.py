@@ -124,11 +124,16 @@ class CppEnvironment:
 def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvironment,
                 shown: dict[Path, str], diagnostics: DiagnosticSink, cls: str | None = None) -> NodeSummary:
     """The summary of one executable (or of one nodelet class): every source file read, from the
-    cache when unchanged."""
+    cache when unchanged. A nodelet's files are read after the one that names its class, with the
+    base classes found there (their methods, defined in other files of the library, are the node's
+    code too)."""
     summary = NodeSummary(package, executable, "cpp")
     cache = ResultCache("cpp")
     index: ci.Index | None = None
     behaviors: list[FileBehavior] = []
+    if cls is not None:
+        last = cls.rsplit("::", 1)[-1]
+        sources = sorted(sources, key=lambda s: re.search(rf"\b{re.escape(last)}\b", _text(s)) is None)
     for source in sources:
         name = shown.get(source, str(source))
         refused = unreadable(source, "source")
@@ -156,9 +161,18 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             cache.put(cache_key, result)
         _merge(summary, result, diagnostics)
         behaviors.append(result.behavior)
+        if cls is not None and len(result.classes) > len(cls.split("|")):
+            cls = "|".join(result.classes)
     summary.publishes, summary.writes = link_files(behaviors)
     _settle_behavior(summary)
     return summary
+
+
+def _text(source: Path) -> str:
+    try:
+        return sandbox.read_text(source, "source")
+    except sandbox.Refused:  # reported when the file is read
+        return ""
 
 
 def _settle_behavior(summary: NodeSummary) -> None:

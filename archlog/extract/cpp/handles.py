@@ -16,12 +16,14 @@ NODE_HANDLE = "ros::NodeHandle"
 IMAGE_TRANSPORT = "image_transport::ImageTransport"
 HANDLE_TYPES = (NODE_HANDLE, IMAGE_TRANSPORT)
 # (class, method) -> port kind
+NODELET_LAZY = "nodelet_topic_tools::NodeletLazy"
 METHODS = {
     (NODE_HANDLE, "advertise"): "publisher", (NODE_HANDLE, "subscribe"): "subscriber",
     (NODE_HANDLE, "advertiseService"): "service_server", (NODE_HANDLE, "serviceClient"): "service_client",
     (IMAGE_TRANSPORT, "advertise"): "publisher", (IMAGE_TRANSPORT, "subscribe"): "subscriber",
     (IMAGE_TRANSPORT, "advertiseCamera"): "publisher", (IMAGE_TRANSPORT, "subscribeCamera"): "subscriber",
     ("message_filters::Subscriber", "subscribe"): "subscriber",
+    (NODELET_LAZY, "advertise"): "publisher",  # advertise<T>(nh, topic, queue): a lazy nodelet's publisher
 }
 # nodelet::Nodelet accessors for the manager-provided handles
 NODELET_HANDLES = {"getNodeHandle": "", "getMTNodeHandle": "", "getPrivateNodeHandle": "~",
@@ -78,6 +80,23 @@ class Handles:
             return ns
         return f"~{ns}" if parent == "~" else names.canonical(f"{parent}/{ns}")
 
+    def reset_ns(self, field: ci.Cursor) -> Value:
+        """A (smart pointer) handle member that the inline methods of its class set with
+        `field.reset(new ros::NodeHandle(...))` (nodelet_topic_tools::NodeletLazy's nh_ and pnh_,
+        in a header not otherwise read): the namespace they agree on, else the node's."""
+        found: set[Value] = set()
+        for call in field.semantic_parent.walk_preorder() if field.semantic_parent is not None else []:
+            if call.kind == K.CALL_EXPR and call.spelling == "reset" and (args := written_args(call)):
+                target = next(call.get_children(), None)
+                if target is not None and any(c.referenced == field for c in target.walk_preorder()
+                                              if c.kind == K.MEMBER_REF_EXPR):
+                    made = next((c for c in args[0].walk_preorder() if c.kind == K.CALL_EXPR
+                                 and (c.spelling in NODELET_HANDLES or c.spelling == "NodeHandle")), None)
+                    if made is not None:
+                        found.add(NODELET_HANDLES.get(made.spelling) if made.spelling in NODELET_HANDLES
+                                  else self.ctor_ns(made))
+        return found.pop() if len(found) == 1 else ""
+
     def member_inits(self, ctor: ci.Cursor) -> None:
         children = list(ctor.get_children())
         for member, init in zip(children, children[1:]):
@@ -95,7 +114,8 @@ class Handles:
                 if key in self.namespaces:
                     return self.namespaces[key]
                 if decl is not None and decl.kind == K.FIELD_DECL:
-                    return ""
+                    self.namespaces[key] = self.reset_ns(decl)
+                    return self.namespaces[key]
                 if decl is not None and decl.kind == K.PARM_DECL and depth < 4:
                     return self.ctx.from_call_sites(decl, expr, lambda arg: self.handle_of(arg, depth + 1),
                                                     "NodeHandle")

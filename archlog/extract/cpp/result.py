@@ -26,3 +26,4 @@ class FileResult:
     depends: list[tuple[str, int]] = field(default_factory=list)
     missing: list[str] = field(default_factory=list)
     behavior: FileBehavior = field(default_factory=FileBehavior)
+    classes: list[str] = field(default_factory=list)  # a nodelet's class and the bases this file knows of

@@ -36,6 +36,7 @@ from archlog.extract.cpp.clang_ast import (
 from archlog.extract.cpp.handles import (
     IMAGE_TRANSPORT,
     METHODS,
+    NODELET_LAZY,
     NODE_HANDLE,
     Handles,
     is_handle_type,
@@ -83,11 +84,19 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     `ros2`: the file is ROS 2 code (rclcpp/walker.py reads its API)."""
     walker = _Walker(source, shown, cls, ros2, workspace or (str(source.parent),))
     walker.walk(tu.cursor)
+    walker.result.classes = walker.scope.classes
+    walker.members(walker.scope.members)
     if incomplete_ast:
         walker.token_fallback(tu)
     walker.result.behavior = read_behavior(walker, walker.kept, walker.port_calls, walker.named_callbacks,
                                            sandbox.read_bytes(source, "source") if incomplete_ast else None)
     return walker.result
+
+
+def _made_class(call: ci.Cursor) -> str:
+    """The class a make_shared<T>(...) / make_unique<T>(...) call constructs."""
+    made = call.type.get_canonical().get_template_argument_type(0)
+    return qualified(made.get_declaration()) if made.kind != ci.TypeKind.INVALID else ""
 
 
 class _Walker:
@@ -284,6 +293,8 @@ class _Walker:
             return
         if ref.kind == K.CONSTRUCTOR and owner in CONSTRUCTED:
             self.constructed(call, owner, args)
+        elif name in ("make_shared", "make_unique") and (made := _made_class(call)) in CONSTRUCTED:
+            self.constructed(call, made, args)
         elif owner in ("ros::Rate", "ros::WallRate") and ref.kind == K.CONSTRUCTOR and args:
             hz = self.value(args[0])
             self.add("timer", call, period(hz) if isinstance(hz, str) else self.unknown(call, "rate not constant"),
@@ -314,6 +325,10 @@ class _Walker:
             self.add(kind, call, self.value(args[1]) if len(args) > 1 else self.unknown(call), type_,
                      self.handles.handle_of(args[0]))
             return
+        if owner == NODELET_LAZY:
+            self.add(kind, call, self.value(args[1]) if len(args) > 1 else self.unknown(call),
+                     self.port_type(call, args, name), self.handles.handle_of(args[0]))
+            return
         handle = self.handles.handle_of(next(call.get_children()))
         topic = self.value(args[0])
         if owner == IMAGE_TRANSPORT:
@@ -340,6 +355,17 @@ class _Walker:
             if position >= len(args):
                 return  # default-constructed: ports come from a later subscribe()/start()
             self.add(kind, call, self.value(args[position]), type_, handle)
+
+    def members(self, fields: list[ci.Cursor]) -> None:
+        """A nodelet's members (of its class and bases) that are library objects with fixed ports
+        (a tf listener, say): each instance constructs them, so their ports are the node's."""
+        for field in fields:
+            owner = qualified(field.type.get_declaration())
+            for kind, fixed, _index in CONSTRUCTED.get(owner, []):
+                if fixed is not None and field.location.file is not None:
+                    loc = field.location
+                    self.result.ports.append(Port(kind, fixed, FIXED_TYPES[fixed], self.shown(field), loc.line,
+                                                  loc.column))
 
     def param(self, call: ci.Cursor, args: list[ci.Cursor], handle: Value, method: str) -> None:
         pname = self.value(args[0])

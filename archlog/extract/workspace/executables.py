@@ -73,17 +73,11 @@ class ExecutableFinder:
             if exe.lang != "cpp" or exe.cls is not None:
                 continue
             own = "\n".join(_text(s) for s in exe.sources)
-            pending, seen, linked = list(package.links.get(exe.target, [])), set(), list[Path]()
-            while pending:
-                library = pending.pop(0)
-                if library in package.libraries and library not in seen and library != exe.target:
-                    seen.add(library)
-                    linked += [s for s in package.libraries[library] if s not in exe.sources and s not in linked]
-                    pending += package.links.get(library, [])
+            linked = [s for s in _linked(package, exe.target) if s not in exe.sources]
             if package.ament:
                 exe.sources += [s for s in linked if all(re.search(rf"\b{c}\b", own) for c in _node_classes(s))]
                 continue
-            exported = {s: _exported_plugins(s) for s in linked}
+            exported = {s: exported_plugins(s) for s in linked}
             plain = [s for s in linked if not exported[s]]
             exe.sources += plain
             text = "\n".join([own, *(_text(s) for s in plain)])
@@ -174,9 +168,10 @@ class ExecutableFinder:
                         continue
                     name, type_ = cls.get("name") or cls.get("type", ""), cls.get("type", "")
                     sources = package.libraries.get(target) or _exporting(package.path, type_)
+                    sources = sources + [s for s in _linked(package, target) if s not in sources]
                     plugin = name.split("/", 1)[-1]
                     package.executables[plugin] = Executable(package.name, plugin, "cpp", sources,
-                                                             cls.sourceline or 0, type_)
+                                                             cls.sourceline or 0, type_, plugin=name)
 
     def _registered_components(self, package: Package, command: str, args: tuple[str, ...], line: int) -> None:
         """rclcpp_components_register_node(lib PLUGIN ns::Class [EXECUTABLE exe]) and
@@ -261,6 +256,18 @@ class ExecutableFinder:
                     package.executables[path.name] = Executable(package.name, path.name, "python", [path])
 
 
+def _linked(package: Package, target: str) -> list[Path]:
+    """The sources of the package's libraries a target links, transitively."""
+    pending, seen, linked = list(package.links.get(target, [])), set(), list[Path]()
+    while pending:
+        library = pending.pop(0)
+        if library in package.libraries and library not in seen and library != target:
+            seen.add(library)
+            linked += [s for s in package.libraries[library] if s not in linked]
+            pending += package.links.get(library, [])
+    return linked
+
+
 def _text(path: Path) -> str:
     """A source file's text for indexing; empty when the sandbox refuses it (the extractor that
     reads it for its node reports why)."""
@@ -275,7 +282,7 @@ def _node_classes(source: Path) -> list[str]:
     return sorted(set(_NODE_CONSTRUCTOR.findall(_text(source))))
 
 
-def _exported_plugins(source: Path) -> list[str]:
+def exported_plugins(source: Path) -> list[str]:
     """Classes a C++ file exports as plugins (PLUGINLIB_EXPORT_CLASS, PLUGINLIB_DECLARE_CLASS)."""
     return sorted({(m.group(1) or m.group(2)).lstrip(":") for m in _EXPORT.finditer(_text(source))})
 
