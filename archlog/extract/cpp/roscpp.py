@@ -36,8 +36,8 @@ from archlog.extract.cpp.clang_ast import (
 from archlog.extract.cpp.handles import (
     IMAGE_TRANSPORT,
     METHODS,
-    NODELET_LAZY,
     NODE_HANDLE,
+    NODELET_LAZY,
     Handles,
     is_handle_type,
 )
