@@ -119,3 +119,48 @@ def test_plugin_named_under_another_prefix_than_its_package(tmp_path: Path) -> N
     ports = sorted((n, t) for _p, n, t, _ty in result.store.rows("publisher") if not t.endswith("/bond"))
     assert ports == [("/cam/blur", "/cam/blur/blurred"), ("/cam/edges", "/cam/edges")]
     assert result.diagnostics.items == []
+
+
+LOADER_MAIN = """#include <nodelet/loader.h>
+#include <ros/ros.h>
+void loadSide(nodelet::Loader& manager, const std::string& side) {
+  nodelet::M_string remappings;
+  nodelet::V_string my_argv;
+  remappings["image"] = ros::names::resolve(side + "/image_raw");
+  manager.load(ros::this_node::getName() + "_blur_" + side, "vision/Blur", remappings, my_argv);
+  remappings.clear();
+  manager.load(ros::this_node::getName() + "_edges_" + side, "vision/Edges", remappings, my_argv);
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "pipeline");
+  nodelet::Loader manager(false);
+  loadSide(manager, "left");
+  loadSide(manager, "right");
+  ros::spin();
+}
+"""
+
+
+def test_executable_loading_nodelets_in_process_has_their_ports(tmp_path: Path) -> None:
+    """A node executable that loads nodelets through nodelet::Loader (image_proc's, stereo_image_proc's
+    way) has their ports under the names it gives them, with the remappings of each load; a helper
+    called once per side loads once per call site. The library exporting them is not its own code."""
+    pkg = tmp_path / "src" / "vision"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "package.xml").write_text(MANIFEST)
+    (pkg / "nodelets.xml").write_text(PLUGINS)
+    (pkg / "CMakeLists.txt").write_text("project(vision)\nadd_library(vision_nodelets src/nodelets.cpp)\n"
+                                        "add_executable(pipeline src/pipeline.cpp)\n"
+                                        "target_link_libraries(pipeline vision_nodelets)\n")
+    (pkg / "src" / "nodelets.cpp").write_text(SOURCE)
+    (pkg / "src" / "pipeline.cpp").write_text(LOADER_MAIN)
+    (pkg / "run.launch").write_text('<launch><node pkg="vision" type="pipeline" name="pipe" ns="stereo"/></launch>')
+    result = analyse([tmp_path], [str(pkg / "run.launch")], {}, [])
+    ports = sorted((rel, n, t) for rel in ("publisher", "subscriber") for _p, n, t, _ty in result.store.rows(rel))
+    # two Edges nodelets (one per side, no remapping) publish the same topic
+    assert ports == [("publisher", "/stereo/pipe", "/stereo/edges"), ("publisher", "/stereo/pipe", "/stereo/edges"),
+                     ("publisher", "/stereo/pipe", "/stereo/pipe_blur_left/blurred"),
+                     ("publisher", "/stereo/pipe", "/stereo/pipe_blur_right/blurred"),
+                     ("subscriber", "/stereo/pipe", "/stereo/left/image_raw"),
+                     ("subscriber", "/stereo/pipe", "/stereo/right/image_raw")]
+    assert result.diagnostics.items == []

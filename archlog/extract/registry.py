@@ -62,7 +62,25 @@ def register(lang: str, kind: InputKind) -> None:
 def extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnostics: DiagnosticSink,
             progress: Progress) -> Summaries:
     """Summaries of the executables the configuration runs (all of them when `wanted` is None) whose
-    language is an input kind; `progress(done, total)` is called as they finish."""
+    language is an input kind, and of the nodelets they load into their own process;
+    `progress(done, total)` is called as they finish."""
+    summaries = _extract(workspace, wanted, diagnostics, progress)
+    loaded = {kind for s in summaries.values() for n in s.loads if (kind := plugin_kind(n.plugin))} - summaries.keys()
+    if loaded and wanted is not None:
+        summaries.update(_extract(workspace, loaded, diagnostics, progress))
+    return summaries
+
+
+def plugin_kind(plugin: object) -> tuple[str, str] | None:
+    """(package, Type) of a plugin name pkg/Type, as a launch file's `nodelet load` runs it."""
+    if isinstance(plugin, str) and plugin.count("/") == 1 and all(plugin.split("/")):
+        pkg, name = plugin.split("/")
+        return pkg, name
+    return None
+
+
+def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnostics: DiagnosticSink,
+             progress: Progress) -> Summaries:
     summaries: Summaries = {}
     inline: dict[str, Callable[[Executable], NodeSummary]] = {}
     isolated: dict[str, Callable[[Executable], IsolatedJob]] = {}

@@ -80,6 +80,19 @@ class StateWrite:
     line: int
 
 
+@dataclass(frozen=True)
+class LoadedNodelet:
+    """A nodelet an executable loads into its own process (nodelet::Loader::load): the plugin
+    (pkg/Type), the nodelet's name (a FullNodeName when built from ros::this_node::getName()) and
+    the remappings given with it, as written; its ports are the executable's (system/nodelets.py)."""
+
+    plugin: Value
+    name: Value
+    remaps: tuple[tuple[Value, Value], ...]
+    file: str
+    line: int
+
+
 @dataclass
 class NodeSummary:
     """The ports of one node executable and its default name (ros::init / rospy.init_node)."""
@@ -96,3 +109,4 @@ class NodeSummary:
     namespace: Value = ""
     publishes: list[Publish] = field(default_factory=list)  # behavior: how each publish call is reached
     writes: list[StateWrite] = field(default_factory=list)
+    loads: list[LoadedNodelet] = field(default_factory=list)  # nodelets run in this process

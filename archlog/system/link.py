@@ -17,7 +17,7 @@ from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels
-from archlog.system.nodelets import is_manager, loader_ports, manager_summary
+from archlog.system.nodelets import is_manager, loaded_ports, loader_ports, manager_summary
 from archlog.system.rosrun import rosrun_config
 from archlog.values import ParamRef
 
@@ -68,7 +68,10 @@ _COMPARED = ("publisher", "subscriber", "service_server", "service_client", "act
 def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: DiagnosticSink) -> NodeSummary:
     """A node both read from source and modelled by archlog: the source, unless it resolves fewer
     ports than the model (code in a library not read, names not known, a file that did not compile):
-    then the model. Where the two disagree on a resolved name, a model-drift note."""
+    then the model. Where the two disagree on a resolved name, a model-drift note. A source that
+    loads nodelets into its process is used: their ports are placed per instance (nodelets.py)."""
+    if source.loads:
+        return source
     ours, theirs = _resolved(source), _resolved(model)
     chosen = model if len(ours) < len(theirs) else source
     actions = {n for k, n in ours | theirs if k.startswith("action")}  # an action's topics are the action
@@ -112,6 +115,8 @@ def _summary(node: LaunchNode, summaries: Summaries, config: LaunchConfig, works
     """What one instance runs, with its configured ports; a kind with neither is reported once.
     A nodelet manager runs the nodelet mechanism, whatever the source of `nodelet` says."""
     summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
+    if summary is not None and summary.loads:
+        summary = replace(summary, ports=summary.ports + loaded_ports(node, summary, summaries, diagnostics))
     extra = configured_ports(node, config, workspace, diagnostics) + loader_ports(node)
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \

@@ -528,6 +528,7 @@ def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
 
 def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink) -> None:
     summary.ports += [p for p in result.ports if p not in summary.ports]  # a header's code is read with each file
+    summary.loads += [n for n in result.loads if n not in summary.loads]
     if result.default_name is not None and summary.default_name is None:
         summary.default_name, summary.anonymous = result.default_name, result.anonymous
         summary.name_file, summary.name_line = result.name_file, result.name_line

@@ -93,7 +93,7 @@ class Handles:
                     made = next((c for c in args[0].walk_preorder() if c.kind == K.CALL_EXPR
                                  and (c.spelling in NODELET_HANDLES or c.spelling == "NodeHandle")), None)
                     if made is not None:
-                        found.add(NODELET_HANDLES.get(made.spelling) if made.spelling in NODELET_HANDLES
+                        found.add(NODELET_HANDLES[made.spelling] if made.spelling in NODELET_HANDLES
                                   else self.ctor_ns(made))
         return found.pop() if len(found) == 1 else ""
 

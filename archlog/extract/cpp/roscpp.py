@@ -41,6 +41,7 @@ from archlog.extract.cpp.handles import (
     Handles,
     is_handle_type,
 )
+from archlog.extract.cpp.loader import LOADER, loaded_nodelets
 from archlog.extract.cpp.rclcpp.durations import Durations
 from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
 from archlog.extract.cpp.rclcpp.walker import RclcppWalker
@@ -304,6 +305,8 @@ class _Walker:
             self.result.name_file, self.result.name_line = self.shown(call), call.location.line
             self.result.anonymous = len(args) > 3 and "AnonymousName" in " ".join(
                 t.spelling for t in args[3].get_tokens())
+        elif owner == LOADER and name == "load" and len(args) >= 2:
+            self.result.loads += loaded_nodelets(self, call, args)
         elif (owner, name) in METHODS and args:
             self.method(call, ref, owner, name, args)
         elif owner == NODE_HANDLE and args and name in PARAM_READS | PARAM_WRITES:

@@ -65,10 +65,9 @@ class ExecutableFinder:
         """Packages often build the node's code into a library of their own that the executable
         links (target_link_libraries, followed transitively within the package): its sources belong
         to the executable, except, in ROS 2, those defining a node class the executable's own
-        sources never name, and in ROS 1, those exporting a plugin (a nodelet) that no source read
-        with the executable names, by class or by plugin name (image_proc's node loads
-        "image_proc/debayer", not the library's other nodelets)."""
-        plugins = {} if package.ament else self._plugin_names(package)
+        sources never name, and in ROS 1, those exporting a plugin (a nodelet) whose class no source
+        read with the executable names (a nodelet loaded by its plugin name, as image_proc's node
+        loads "image_proc/debayer" through nodelet::Loader, runs under its own name: system/nodelets.py)."""
         for exe in package.executables.values():
             if exe.lang != "cpp" or exe.cls is not None:
                 continue
@@ -82,24 +81,10 @@ class ExecutableFinder:
             exe.sources += plain
             text = "\n".join([own, *(_text(s) for s in plain)])
             waiting = [s for s in linked if exported[s]]
-            while named := [s for s in waiting if any(_names(text, cls, plugins.get(cls)) for cls in exported[s])]:
+            while named := [s for s in waiting if any(_names(text, cls) for cls in exported[s])]:
                 exe.sources += named
                 waiting = [s for s in waiting if s not in named]
                 text += "\n".join(_text(s) for s in named)
-
-    def _plugin_names(self, package: Package) -> dict[str, str]:
-        """Plugin class (as exported, no leading ::) -> plugin name, from the package's plugin XML
-        files (unreadable ones are reported where nodelets are read)."""
-        found: dict[str, str] = {}
-        for raw in package.plugin_xml:
-            try:
-                root = parse_xml_elements(Path(raw.replace("${prefix}", str(package.path))), "build")
-            except (sandbox.Refused, etree.XMLSyntaxError):
-                continue
-            for cls in root.iter("class"):
-                if cls.get("type") and cls.get("name"):
-                    found[cls.get("type", "").lstrip(":")] = cls.get("name", "")
-        return found
 
     def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int,
                    asker: tuple[Path, int] | None = None) -> None:
@@ -287,10 +272,9 @@ def exported_plugins(source: Path) -> list[str]:
     return sorted({(m.group(1) or m.group(2)).lstrip(":") for m in _EXPORT.finditer(_text(source))})
 
 
-def _names(text: str, cls: str, plugin: str | None) -> bool:
-    """Whether a text names a plugin class (by its last component) or its plugin name (in quotes)."""
-    return bool(re.search(rf"\b{re.escape(cls.rsplit('::', 1)[-1])}\b", text)) or \
-        plugin is not None and f'"{plugin}"' in text
+def _names(text: str, cls: str) -> bool:
+    """Whether a text names a plugin class (by its last component; not inside a plugin name pkg/Type)."""
+    return bool(re.search(rf"(?<![\w/]){re.escape(cls.rsplit('::', 1)[-1])}\b", text))
 
 
 def registered_components(text: str) -> list[tuple[str, int]]:
