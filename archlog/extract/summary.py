@@ -27,6 +27,7 @@ class Port:
     qos: tuple[tuple[str, str], ...] = ()
     queue: Value | None = None
     condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
+    info_of: Value | None = None  # image_transport: the image topic (as written) whose remapped sibling this is
 
 
 @dataclass(frozen=True)

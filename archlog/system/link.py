@@ -13,6 +13,7 @@ from archlog.extract.registry import Summaries
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.messages import message_files
+from archlog.system.camera_info import placed_camera_info
 from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
@@ -117,6 +118,8 @@ def _summary(node: LaunchNode, summaries: Summaries, config: LaunchConfig, works
     summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
     if summary is not None and summary.loads:
         summary = replace(summary, ports=summary.ports + loaded_ports(node, summary, summaries, diagnostics))
+    if summary is not None and any(p.info_of is not None for p in summary.ports):
+        summary = replace(summary, ports=[placed_camera_info(p, node) for p in summary.ports])
     extra = configured_ports(node, config, workspace, diagnostics) + loader_ports(node)
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \

@@ -104,13 +104,20 @@ def _placed(port: Port, full: str, load: LoadedNodelet) -> Port:
     """A nodelet's port as the process that loads it has it: its handles made absolute (public: the
     nodelet's namespace, private: its name), a plain name resolved and remapped as the load says."""
     handle = _rebased(port.handle_ns, full)
-    if isinstance(port.name, str) and isinstance(handle, str):
-        resolved = names.join(full, port.name[1:].lstrip("/")) if port.name.startswith("~") else \
-            names.join(handle, port.name)
-        remaps = {names.join(handle, k): names.join(handle, v) for k, v in load.remaps
-                  if isinstance(k, str) and isinstance(v, str) and k and v}
-        return replace(port, name=remaps.get(resolved, resolved), handle_ns="", default=_default(port, full))
-    return replace(port, name=_in(port.name, full), handle_ns=handle, default=_default(port, full))
+    if not isinstance(handle, str):
+        return replace(port, name=_in(port.name, full), handle_ns=handle, default=_default(port, full))
+    remaps = {names.join(handle, k): names.join(handle, v) for k, v in load.remaps
+              if isinstance(k, str) and isinstance(v, str) and k and v}
+
+    def placed(name: Value) -> Value:
+        if not isinstance(name, str):
+            return _in(name, full)
+        resolved = names.join(full, name[1:].lstrip("/")) if name.startswith("~") else names.join(handle, name)
+        return remaps.get(resolved, resolved)
+
+    absolute = isinstance(port.name, str)
+    return replace(port, name=placed(port.name), handle_ns="" if absolute else handle, default=_default(port, full),
+                   info_of=placed(port.info_of) if port.info_of is not None else None)
 
 
 def _default(port: Port, full: str) -> Value | None:

@@ -337,7 +337,7 @@ class _Walker:
         if owner == IMAGE_TRANSPORT:
             self.add(kind, call, topic, "sensor_msgs/Image", handle)
             if name.endswith("Camera"):
-                self.add(kind, call, camera_info(topic), "sensor_msgs/CameraInfo", handle)
+                self.add(kind, call, camera_info(topic), "sensor_msgs/CameraInfo", handle, info_of=topic)
             return
         queue = self.value(args[1]) if len(args) > 1 and name in ("advertise", "subscribe") else None
         self.add(kind, call, topic, self.port_type(call, args, name), handle,
@@ -420,7 +420,8 @@ class _Walker:
         return template_arg or self.unknown(call, "message type not resolved")
 
     def add(self, kind: str, call: ci.Cursor, name: Value, type_: Value, handle: Value,
-            default: Value | None = None, queue: Value | None = None, qos: tuple[tuple[str, str], ...] = ()) -> None:
+            default: Value | None = None, queue: Value | None = None, qos: tuple[tuple[str, str], ...] = (),
+            info_of: Value | None = None) -> None:
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
                 self.add(kind, call, option, type_, handle, default, queue, qos)
@@ -433,7 +434,8 @@ class _Walker:
                 file, loc.line, "cpp-private-name",
                 f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
                 "(the node dies at start-up); use a NodeHandle(\"~\") instead", "error", loc.column))
-        self.result.ports.append(Port(kind, name, type_, file, loc.line, loc.column, handle, default, qos, queue))
+        self.result.ports.append(Port(kind, name, type_, file, loc.line, loc.column, handle, default, qos, queue,
+                                      info_of=info_of))
 
     # -- when the AST is incomplete -------------------------------------------------------------
     def token_fallback(self, tu: ci.TranslationUnit) -> None:
