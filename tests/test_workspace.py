@@ -158,3 +158,22 @@ def test_catkin_executables_read_the_libraries_of_their_package_they_link(tmp_pa
     exes = Workspace([tmp_path], sink).packages["tracking"].executables
     assert [s.name for s in exes["tracker"].sources] == ["main.cpp", "ros.cpp", "core.cpp", "debayer.cpp"]
     assert [s.name for s in exes["lost"].sources] == ["gone"]
+
+
+def test_catkin_library_sources_of_classes_the_node_never_names_are_not_its_code(tmp_path: Path) -> None:
+    """tf2_ros's library defines Buffer, TransformListener and StaticTransformBroadcaster:
+    static_transform_publisher, which names only the broadcaster, does not subscribe /tf; a source
+    defining a class named by another source it reads is read too (transitively)."""
+    package(tmp_path, "tfkit", {
+        "CMakeLists.txt": "project(tfkit)\nadd_library(tfkit src/buffer.cpp src/listener.cpp src/static.cpp "
+                          "src/util.cpp)\nadd_executable(static_publisher src/main.cpp)\n"
+                          "target_link_libraries(static_publisher tfkit)\n",
+        "package.xml": MANIFEST.format("tfkit"),
+        "src/main.cpp": "int main() { tfkit::StaticBroadcaster b; }\n",
+        "src/static.cpp": "StaticBroadcaster::StaticBroadcaster() { Util u; }\n",
+        "src/util.cpp": "Util::Util() {}\n",
+        "src/buffer.cpp": "Buffer::Buffer() {}\n",
+        "src/listener.cpp": "Listener::Listener(Buffer& b) {}\n",
+    })
+    exe = Workspace([tmp_path], DiagnosticSink()).packages["tfkit"].executables["static_publisher"]
+    assert [s.name for s in exe.sources] == ["main.cpp", "static.cpp", "util.cpp"]

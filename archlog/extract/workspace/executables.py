@@ -65,9 +65,11 @@ class ExecutableFinder:
         """Packages often build the node's code into a library of their own that the executable
         links (target_link_libraries, followed transitively within the package): its sources belong
         to the executable, except, in ROS 2, those defining a node class the executable's own
-        sources never name, and in ROS 1, those exporting a plugin (a nodelet) whose class no source
-        read with the executable names (a nodelet loaded by its plugin name, as image_proc's node
-        loads "image_proc/debayer" through nodelet::Loader, runs under its own name: system/nodelets.py)."""
+        sources never name, and in ROS 1, those exporting a plugin (a nodelet) or defining the
+        constructors of classes that no source read with the executable names (tf2_ros's library
+        holds Buffer, TransformListener...: static_transform_publisher uses StaticTransformBroadcaster
+        only; a nodelet loaded by its plugin name, as image_proc's node loads "image_proc/debayer"
+        through nodelet::Loader, runs under its own name: system/nodelets.py)."""
         for exe in package.executables.values():
             if exe.lang != "cpp" or exe.cls is not None:
                 continue
@@ -76,12 +78,12 @@ class ExecutableFinder:
             if package.ament:
                 exe.sources += [s for s in linked if all(re.search(rf"\b{c}\b", own) for c in _node_classes(s))]
                 continue
-            exported = {s: exported_plugins(s) for s in linked}
-            plain = [s for s in linked if not exported[s]]
+            classes = {s: exported_plugins(s) or _constructed_classes(s) for s in linked}
+            plain = [s for s in linked if not classes[s]]
             exe.sources += plain
             text = "\n".join([own, *(_text(s) for s in plain)])
-            waiting = [s for s in linked if exported[s]]
-            while named := [s for s in waiting if any(_names(text, cls) for cls in exported[s])]:
+            waiting = [s for s in linked if classes[s]]
+            while named := [s for s in waiting if any(_names(text, cls) for cls in classes[s])]:
                 exe.sources += named
                 waiting = [s for s in waiting if s not in named]
                 text += "\n".join(_text(s) for s in named)
@@ -260,6 +262,14 @@ def _text(path: Path) -> str:
         return sandbox.read_text(path, "source")
     except sandbox.Refused:
         return ""
+
+
+_CONSTRUCTOR = re.compile(r"\b(\w+)::\1\s*\(")
+
+
+def _constructed_classes(source: Path) -> list[str]:
+    """Classes whose constructors a C++ file defines."""
+    return sorted(set(_CONSTRUCTOR.findall(_text(source))))
 
 
 def _node_classes(source: Path) -> list[str]:
