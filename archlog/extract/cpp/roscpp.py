@@ -42,6 +42,7 @@ from archlog.extract.cpp.handles import (
     is_handle_type,
 )
 from archlog.extract.cpp.loader import LOADER, loaded_nodelets
+from archlog.extract.cpp.param_guards import Branches, initial_value, tested_variable
 from archlog.extract.cpp.rclcpp.durations import Durations
 from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
 from archlog.extract.cpp.rclcpp.walker import RclcppWalker
@@ -118,6 +119,7 @@ class _Walker:
         self.kept: list[ci.Cursor] = []
         self.durations = Durations(self)
         self.handles = Handles(self)
+        self.branches = Branches([])
         self.rclcpp = RclcppWalker(self, self.durations) if ros2 else None
 
     @staticmethod
@@ -165,9 +167,11 @@ class _Walker:
         if self.rclcpp is not None:
             self.rclcpp.prepare(cursors)
         self.kept, self.spans = self.scope.relevant(cursors)
-        for cursor in self.kept:
-            if cursor.kind == K.CALL_EXPR:
-                self.call(cursor)
+        self.branches = Branches(self.kept)
+        calls = [c for c in self.kept if c.kind == K.CALL_EXPR]
+        reads = [c for c in calls if c.spelling in PARAM_READS]  # first: a port's guard may test what they read
+        for cursor in reads + [c for c in calls if c.spelling not in PARAM_READS]:
+            self.call(cursor)
 
     def workspace_code(self, decl: ci.Cursor) -> bool:
         """A declaration in the file or in a header of the workspace."""
@@ -382,8 +386,10 @@ class _Walker:
         if len(args) > 1 and isinstance(pname, str) and not (has_default and len(args) == 2):
             target = next((c for c in args[1].walk_preorder() if c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)), None)
             key = self.key(target.referenced) if target is not None else None
-            if key is not None:
-                fallback = default if default is not None else self.unknown(call, "parameter without default")
+            if key is not None and target is not None:
+                start = initial_value(target.referenced) if target.referenced.kind == K.FIELD_DECL else None
+                fallback = default if default is not None else self.value(start) if start is not None else \
+                    self.unknown(call, "parameter without default")
                 self.param_vars[key] = ParamRef(pname, fallback, handle, self.shown(call), call.location.line)
 
     def duration(self, expr: ci.Cursor) -> Value:
@@ -435,7 +441,16 @@ class _Walker:
                 f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
                 "(the node dies at start-up); use a NodeHandle(\"~\") instead", "error", loc.column))
         self.result.ports.append(Port(kind, name, type_, file, loc.line, loc.column, handle, default, qos, queue,
-                                      info_of=info_of))
+                                      self.param_condition(call), info_of=info_of))
+
+    def param_condition(self, call: ci.Cursor) -> tuple[Value, str | None] | None:
+        """The parameter the innermost if/else around a port's call tests, and the value it needs."""
+        branch = self.branches.innermost(call)
+        tested = tested_variable(branch[0]) if branch is not None else None
+        ref = self.param_vars.get(self.key(tested[0])) if tested is not None else None
+        if branch is None or tested is None or not isinstance(ref, ParamRef):
+            return None
+        return ref, "true" if branch[1] != tested[1] else "false"
 
     # -- when the AST is incomplete -------------------------------------------------------------
     def token_fallback(self, tu: ci.TranslationUnit) -> None:
