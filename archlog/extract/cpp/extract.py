@@ -86,7 +86,7 @@ class CppEnvironment:
 
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
-            [d for d in ("/usr/include/eigen3",) if Path(d).is_dir()]
+            [d for d in ("/usr/include/eigen3", "/usr/include/opencv4") if Path(d).is_dir()]
         includes = [str(p) for p in self.workspace_includes if p.is_dir() and sandbox.current().inside(p)]
         includes += [str(self.generated)] if self.generated else []
         self.args = ["-x", "c++", "-std=c++17", "-Wno-everything", "-ferror-limit=0",

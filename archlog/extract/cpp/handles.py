@@ -40,6 +40,8 @@ class HandleContext(Protocol):
     """What reading handles needs of the walker: keys and values of cursors, and the value all
     call sites of a function agree on for a parameter."""
 
+    kept: list[ci.Cursor]
+
     def key(self, decl: ci.Cursor | None) -> CursorKey: ...
     def value(self, expr: ci.Cursor, depth: int = 0) -> Value: ...
     def unknown(self, cursor: ci.Cursor, why: str = "") -> Unknown: ...
@@ -80,22 +82,22 @@ class Handles:
             return ns
         return f"~{ns}" if parent == "~" else names.canonical(f"{parent}/{ns}")
 
-    def reset_ns(self, field: ci.Cursor) -> Value:
-        """A (smart pointer) handle member that the inline methods of its class set with
-        `field.reset(new ros::NodeHandle(...))` (nodelet_topic_tools::NodeletLazy's nh_ and pnh_,
-        in a header not otherwise read): the namespace they agree on, else the node's."""
+    def reset_ns(self, field: ci.Cursor, depth: int) -> Value:
+        """A handle member (or a smart pointer to one) that the code read sets, `field = getPrivate
+        NodeHandle()` or `field.reset(new ros::NodeHandle(...))` (also in the inline methods of its
+        class, as nodelet_topic_tools::NodeletLazy's pnh_ in a header not otherwise read): the
+        namespace they agree on, else the node's."""
         found: set[Value] = set()
-        for call in field.semantic_parent.walk_preorder() if field.semantic_parent is not None else []:
-            if call.kind == K.CALL_EXPR and call.spelling == "reset" and (args := written_args(call)):
-                target = next(call.get_children(), None)
-                if target is not None and any(c.referenced == field for c in target.walk_preorder()
-                                              if c.kind == K.MEMBER_REF_EXPR):
-                    made = next((c for c in args[0].walk_preorder() if c.kind == K.CALL_EXPR
-                                 and (c.spelling in NODELET_HANDLES or c.spelling == "NodeHandle")), None)
-                    if made is not None:
-                        found.add(NODELET_HANDLES[made.spelling] if made.spelling in NODELET_HANDLES
-                                  else self.ctor_ns(made))
-        return found.pop() if len(found) == 1 else ""
+        inline = list(field.semantic_parent.walk_preorder()) if field.semantic_parent is not None else []
+        for call in inline + self.ctx.kept:
+            if call.kind != K.CALL_EXPR or call.spelling not in ("reset", "operator="):
+                continue
+            parts = list(call.get_children())
+            if len(parts) < 2 or not any(c.referenced == field for c in parts[0].walk_preorder()
+                                         if c.kind == K.MEMBER_REF_EXPR):
+                continue
+            found.add(self.handle_of(parts[-1], depth + 1))
+        return found.pop() if len(found) == 1 and not isinstance(next(iter(found)), Unknown) else ""
 
     def member_inits(self, ctor: ci.Cursor) -> None:
         children = list(ctor.get_children())
@@ -113,9 +115,12 @@ class Handles:
                     self.namespaces[key] = self.handle_ns(decl)
                 if key in self.namespaces:
                     return self.namespaces[key]
-                if decl is not None and decl.kind == K.FIELD_DECL:
-                    self.namespaces[key] = self.reset_ns(decl)
+                if decl is not None and decl.kind == K.FIELD_DECL and depth < 4:
+                    self.namespaces[key] = ""  # while it is looked for
+                    self.namespaces[key] = self.reset_ns(decl, depth)
                     return self.namespaces[key]
+                if decl is not None and decl.kind == K.FIELD_DECL:
+                    return ""
                 if decl is not None and decl.kind == K.PARM_DECL and depth < 4:
                     return self.ctx.from_call_sites(decl, expr, lambda arg: self.handle_of(arg, depth + 1),
                                                     "NodeHandle")
