@@ -10,6 +10,7 @@ import clang.cindex as ci
 
 from archlog.extract.cpp.cache import cache_dir
 from archlog.extract.cpp.clang_ast import CursorKey, K, qualified
+from archlog.extract.cpp.handles import METHODS
 from archlog.extract.cpp.stubs import API_DIR
 
 _CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)
@@ -39,7 +40,8 @@ class Scope:
                 continue
             seen.add(decl_key)
             definition = decl.get_definition()
-            if definition is None or not self.workspace_header(definition):
+            if definition is None or not self.workspace_header(definition) or \
+                    (qualified(decl.semantic_parent), decl.spelling) in METHODS:  # an API the walker reads as such
                 continue
             body = list(definition.walk_preorder())
             found += body
