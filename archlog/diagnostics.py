@@ -114,6 +114,10 @@ CODES: dict[str, Code] = {
     **_codes("Models and configured ports", {
         "no-model": ("warning", "A node has neither source nor model: its ports are unknown.",
                      "Describe it in a YAML model passed with --model (see archlog/models/)."),
+        "nodelet-unknown": ("warning", "An executable loads a nodelet into its own process (nodelet::Loader::load) "
+                            "whose ports are unknown: the plugin has no source or model, or its name is not known "
+                            "statically.", "Add the plugin's package to the analysed paths, or describe the node "
+                            "with --model."),
         "model-drift": ("note", "A node's source and archlog's shipped model of it disagree on port names (the one "
                         "with fewer resolved ports is not used).",
                         "Check which is right; fix the source or pass a corrected model with --model."),

@@ -18,7 +18,7 @@ M/{load_nodelet,unload_nodelet,list}, and everything of the `nodelet load` loade
 scored separately, credited to ros-nodelet-core ("nodelet infrastructure").
 
     python bench/debian_nodes.py [--debsrc /work/debsrc] [--only CASE,...] [--package SRC,...]
-                                 [--output bench/results/debian_nodes.json]
+                                 [--output bench/results/debian_nodes.json] [--observed-dir DIR]
 
 Needs Debian 12's ROS 1 binary packages (see INSTALL) and the source packages extracted in --debsrc
 (`apt-get source` with a deb-src entry; see the results JSON for the folders used).
@@ -396,12 +396,21 @@ def score(case: Case, observed: dict, diff: dict) -> dict:
     return result
 
 
-def run_case(case: Case, debsrc: Path, work: Path) -> dict:
+def run_case(case: Case, debsrc: Path, work: Path, observed_dir: Path | None = None) -> dict:
+    """Observe the case (or, with `observed_dir`, reuse the observation saved there by an earlier
+    run for the same launch file) and score archlog's recovery against it."""
     launch = FIXTURES / f"{case.name}.launch"
     if not launch.is_file() or launch.read_text() != case.launch_text:
         launch.write_text(case.launch_text)
     started = time.monotonic()
-    observed = observe_case(case, launch, work)
+    saved = observed_dir / f"{case.name}.observed.json" if observed_dir else None
+    if saved is not None and saved.is_file() and json.loads(saved.read_text()).get("_launch") == case.launch_text:
+        observed = json.loads(saved.read_text())
+    else:
+        observed = observe_case(case, launch, work)
+        if saved is not None:
+            saved.parent.mkdir(parents=True, exist_ok=True)
+            saved.write_text(json.dumps({**observed, "_launch": case.launch_text}, indent=1))
     obs_file = work / f"{case.name}.observed.json"
     obs_file.write_text(json.dumps({k: v for k, v in observed.items() if not k.startswith("_")}, indent=1))
     sources = [case.package] + case.extra_sources
@@ -416,7 +425,7 @@ def run_case(case: Case, debsrc: Path, work: Path) -> dict:
     result.update(case=case.name, package=case.package, sources=[SOURCES[s] for s in sources],
                   seconds=round(time.monotonic() - started, 1), alive=bool(set(observed["nodes"])))
     if not observed["nodes"] or set(result["nodes_expected"]) - set(observed["nodes"]):
-        result["logs"] = observed["_logs"]
+        result["logs"] = observed.get("_logs")
     return result
 
 
@@ -472,6 +481,8 @@ def main() -> int:
     ap.add_argument("--package", default="")
     ap.add_argument("--output", type=Path, default=HERE / "results" / "debian_nodes.json")
     ap.add_argument("--write-launch", action="store_true", help="only write the launch files")
+    ap.add_argument("--observed-dir", type=Path, help="keep each observation there, and reuse a kept one "
+                    "(same launch file) instead of launching again: recovery changes are scored in seconds")
     opts = ap.parse_args()
     chosen = [c for c in CASES if (not opts.only or c.name in opts.only.split(","))
               and (not opts.package or c.package in opts.package.split(","))]
@@ -484,7 +495,7 @@ def main() -> int:
     with tempfile.TemporaryDirectory(prefix="archlog-debian-nodes-") as tmp:
         for c in chosen:
             try:
-                r = run_case(c, opts.debsrc, Path(tmp))
+                r = run_case(c, opts.debsrc, Path(tmp), opts.observed_dir)
             except Exception as exc:
                 r = {"case": c.name, "package": c.package, "error": str(exc)[-3000:]}
                 print(f"{c.name}: ERROR {str(exc)[-500:]}", file=sys.stderr)

@@ -1,6 +1,6 @@
 """Extraction on CodeQL-style fixtures, compared with their .expected files: rospy/rclpy in
 corpus/python, roscpp in corpus/cpp_ros1, rclcpp in corpus/cpp_ros2 (a file registering a
-component is read as that component: only its class is the node).
+component, or exporting a nodelet, is read as that class: only it is the node).
 
 `pytest --update-goldens` rewrites the .expected files that differ (then review the diff)."""
 
@@ -18,7 +18,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
 from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
-from archlog.extract.workspace.executables import registered_components
+from archlog.extract.workspace.executables import exported_plugins, registered_components
 
 FOLDERS = ("python", "cpp_ros1", "cpp_ros2")
 FIXTURES = sorted(p for folder in FOLDERS for p in (ROOT / "corpus" / folder).iterdir() if p.suffix != ".expected")
@@ -31,9 +31,9 @@ def cpp_environment() -> CppEnvironment:
 
 def extract(fixture: Path, sink: DiagnosticSink) -> NodeSummary:
     if fixture.suffix == ".cpp":
-        components = registered_components(fixture.read_text())
+        classes = [c for c, _line in registered_components(fixture.read_text())] + exported_plugins(fixture)
         return extract_cpp([fixture], "fixtures", fixture.name, cpp_environment(), {fixture: fixture.name}, sink,
-                           components[0][0] if components else None)
+                           classes[0] if classes else None)
     return extract_python(fixture, "fixtures", fixture.name, fixture.name, sink)
 
 

@@ -1,5 +1,6 @@
 """Nodelets: plugin XML and PLUGINLIB_EXPORT_CLASS map pkg/Type to a class; launch `nodelet load`
-instances get that class's ports, with the manager's handles and their own remaps."""
+instances get that class's ports, with the manager's handles and their own remaps; the nodelet
+mechanism's own ports (manager services, bonds) are the manager's and the loaders'."""
 
 from __future__ import annotations
 
@@ -59,13 +60,34 @@ def test_nodelet_instances_get_their_class_ports(tmp_path: Path) -> None:
     (pkg / "src" / "nodelets.cpp").write_text(SOURCE)
     (pkg / "cams.launch").write_text(LAUNCH)
     result = analyse([tmp_path], [str(pkg / "cams.launch")], {}, [])
-    ports = sorted((n, t, ty) for rel in ("publisher", "subscriber") for _p, n, t, ty in result.store.rows(rel))
-    assert ports == [("/cam/blur", "/cam/blur/blurred", "sensor_msgs/Image"),
-                     ("/cam/blur", "/cam/image_raw", "sensor_msgs/Image"),
-                     ("/cam/edges", "/cam/edges", "sensor_msgs/Image")]
+    ports = sorted((rel, n, t, ty) for rel in ("publisher", "subscriber") for _p, n, t, ty in result.store.rows(rel))
+    bond = [(rel, node, "/manager/bond", "bond/Status") for rel in ("publisher", "subscriber")
+            for node in ("/cam/blur", "/manager")]
+    assert ports == sorted([("publisher", "/cam/blur", "/cam/blur/blurred", "sensor_msgs/Image"),
+                            ("subscriber", "/cam/blur", "/cam/image_raw", "sensor_msgs/Image"),
+                            ("publisher", "/cam/edges", "/cam/edges", "sensor_msgs/Image"), *bond])
     assert sorted(result.store.rows("nodelet")) == [("/cam/blur", "vision/Blur", "/manager"),
                                                    ("/cam/edges", "vision/Edges", "")]
-    assert [d.code for d in result.diagnostics.items] == []  # the manager too has a model (nodelet.yaml)
+    services = {(rel, n, s, ty) for rel in ("service_server", "service_client") for _p, n, s, ty in result.store.rows(rel)}
+    assert services == {("service_server", "/manager", "/manager/load_nodelet", "nodelet/NodeletLoad"),
+                        ("service_server", "/manager", "/manager/unload_nodelet", "nodelet/NodeletUnload"),
+                        ("service_server", "/manager", "/manager/list", "nodelet/NodeletList"),
+                        ("service_client", "/cam/blur", "/manager/load_nodelet", "nodelet/NodeletLoad"),
+                        ("service_client", "/cam/blur", "/manager/unload_nodelet", "nodelet/NodeletUnload")}
+    assert result.diagnostics.items == []  # the manager runs the nodelet mechanism: not opaque
+
+
+def test_manager_without_bonded_loaders_has_no_bond(tmp_path: Path) -> None:
+    """`--no-bond` loaders and `standalone` processes do not bond: the manager has only its services."""
+    (tmp_path / "a.launch").write_text("""<launch>
+  <node pkg="nodelet" type="nodelet" name="manager" args="manager"/>
+  <node pkg="nodelet" type="nodelet" name="x" args="load some/Thing manager --no-bond"/>
+</launch>""")
+    result = analyse([tmp_path], [str(tmp_path / "a.launch")], {}, [])
+    topics = sorted((n, t) for rel in ("publisher", "subscriber") for _p, n, t, _ty in result.store.rows(rel))
+    assert topics == []
+    clients = sorted((n, s) for _p, n, s, _ty in result.store.rows("service_client"))
+    assert clients == [("/x", "/manager/load_nodelet"), ("/x", "/manager/unload_nodelet")]
 
 
 def test_plugin_descriptions_with_several_libraries() -> None:
@@ -74,12 +96,74 @@ def test_plugin_descriptions_with_several_libraries() -> None:
     nodelet_plugins.xml), one with a <class_libraries> wrapper; every class of every library is read."""
     fixture = Path(__file__).resolve().parent.parent / "corpus" / "workspace" / "nodelet_libraries"
     result = analyse([fixture], [str(fixture / "main.launch")], {}, [])
-    ports = sorted((n, t) for rel in ("publisher", "subscriber") for _p, n, t, _ty in result.store.rows(rel))
+    ports = sorted((n, t) for rel in ("publisher", "subscriber") for _p, n, t, _ty in result.store.rows(rel)
+                   if not t.endswith("/bond"))
     assert ports == [("/a", "/a/out_a"), ("/b", "/b/out_b"), ("/c", "/in_c"), ("/d", "/in_d")]
     assert sorted(result.store.rows("nodelet")) == [("/a", "filters/FilterA", "/manager"),
                                                    ("/b", "filters/FilterB", "/manager"),
                                                    ("/c", "wrapped/C", ""), ("/d", "wrapped/D", "")]
-    assert [d.code for d in result.diagnostics.items] == []  # the manager too has a model (nodelet.yaml)
+    assert result.diagnostics.items == []
+
+
+def test_plugin_named_under_another_prefix_than_its_package(tmp_path: Path) -> None:
+    """pcl_ros declares its nodelets as pcl/VoxelGrid: `nodelet load pcl/VoxelGrid` runs the class
+    of package pcl_ros (here vision_ros declares vision/Blur)."""
+    pkg = tmp_path / "src" / "vision_ros"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "package.xml").write_text(MANIFEST.replace("<name>vision</name>", "<name>vision_ros</name>"))
+    (pkg / "nodelets.xml").write_text(PLUGINS)
+    (pkg / "CMakeLists.txt").write_text("project(vision_ros)\nadd_library(vision_nodelets src/nodelets.cpp)\n")
+    (pkg / "src" / "nodelets.cpp").write_text(SOURCE)
+    (pkg / "cams.launch").write_text(LAUNCH)
+    result = analyse([tmp_path], [str(pkg / "cams.launch")], {}, [])
+    ports = sorted((n, t) for _p, n, t, _ty in result.store.rows("publisher") if not t.endswith("/bond"))
+    assert ports == [("/cam/blur", "/cam/blur/blurred"), ("/cam/edges", "/cam/edges")]
+    assert result.diagnostics.items == []
+
+
+LOADER_MAIN = """#include <nodelet/loader.h>
+#include <ros/ros.h>
+void loadSide(nodelet::Loader& manager, const std::string& side) {
+  nodelet::M_string remappings;
+  nodelet::V_string my_argv;
+  remappings["image"] = ros::names::resolve(side + "/image_raw");
+  manager.load(ros::this_node::getName() + "_blur_" + side, "vision/Blur", remappings, my_argv);
+  remappings.clear();
+  manager.load(ros::this_node::getName() + "_edges_" + side, "vision/Edges", remappings, my_argv);
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "pipeline");
+  nodelet::Loader manager(false);
+  loadSide(manager, "left");
+  loadSide(manager, "right");
+  ros::spin();
+}
+"""
+
+
+def test_executable_loading_nodelets_in_process_has_their_ports(tmp_path: Path) -> None:
+    """A node executable that loads nodelets through nodelet::Loader (image_proc's, stereo_image_proc's
+    way) has their ports under the names it gives them, with the remappings of each load; a helper
+    called once per side loads once per call site. The library exporting them is not its own code."""
+    pkg = tmp_path / "src" / "vision"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "package.xml").write_text(MANIFEST)
+    (pkg / "nodelets.xml").write_text(PLUGINS)
+    (pkg / "CMakeLists.txt").write_text("project(vision)\nadd_library(vision_nodelets src/nodelets.cpp)\n"
+                                        "add_executable(pipeline src/pipeline.cpp)\n"
+                                        "target_link_libraries(pipeline vision_nodelets)\n")
+    (pkg / "src" / "nodelets.cpp").write_text(SOURCE)
+    (pkg / "src" / "pipeline.cpp").write_text(LOADER_MAIN)
+    (pkg / "run.launch").write_text('<launch><node pkg="vision" type="pipeline" name="pipe" ns="stereo"/></launch>')
+    result = analyse([tmp_path], [str(pkg / "run.launch")], {}, [])
+    ports = sorted((rel, n, t) for rel in ("publisher", "subscriber") for _p, n, t, _ty in result.store.rows(rel))
+    # two Edges nodelets (one per side, no remapping) publish the same topic
+    assert ports == [("publisher", "/stereo/pipe", "/stereo/edges"), ("publisher", "/stereo/pipe", "/stereo/edges"),
+                     ("publisher", "/stereo/pipe", "/stereo/pipe_blur_left/blurred"),
+                     ("publisher", "/stereo/pipe", "/stereo/pipe_blur_right/blurred"),
+                     ("subscriber", "/stereo/pipe", "/stereo/left/image_raw"),
+                     ("subscriber", "/stereo/pipe", "/stereo/right/image_raw")]
+    assert result.diagnostics.items == []
 
 
 def test_a_nodelet_that_hands_its_handle_to_an_object_of_its_file() -> None:

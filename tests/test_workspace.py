@@ -135,7 +135,8 @@ def test_ament_executables_get_the_sources_of_the_libraries_they_link(tmp_path: 
 
 def test_catkin_executables_read_the_libraries_of_their_package_they_link(tmp_path: Path) -> None:
     """A ROS 1 node whose code sits in a library of its own package (transitively); a library
-    source exporting a nodelet the node never names is not its code; a source named without its
+    source exporting a nodelet whose class the node never names is not its code (one it loads by
+    plugin name runs under its own name: test_nodelets); a source named without its
     extension is found as CMake finds it, and a missing one is kept (reported when it is read)."""
     package(tmp_path, "tracking", {
         "CMakeLists.txt": "project(tracking)\nadd_library(core src/core.cpp)\n"
@@ -148,7 +149,8 @@ def test_catkin_executables_read_the_libraries_of_their_package_they_link(tmp_pa
         "nodelets.xml": "<library path='lib/libtracking_ros'><class name='tracking/debayer' type='t::Debayer' "
                         "base_class_type='nodelet::Nodelet'/><class name='tracking/rectify' type='t::Rectify' "
                         "base_class_type='nodelet::Nodelet'/></library>",
-        "src/main.cpp": 'int main() { loader.load("tracking/debayer"); }\n', "src/ros.cpp": "", "src/core.cpp": "",
+        "src/main.cpp": 'int main() { loader.load("tracking/rectify"); t::Debayer d; }\n', "src/ros.cpp": "",
+        "src/core.cpp": "",
         "src/debayer.cpp": "PLUGINLIB_EXPORT_CLASS(t::Debayer, nodelet::Nodelet)\n",
         "src/rectify.cpp": "PLUGINLIB_EXPORT_CLASS(t::Rectify, nodelet::Nodelet)\n",
     })
@@ -156,3 +158,22 @@ def test_catkin_executables_read_the_libraries_of_their_package_they_link(tmp_pa
     exes = Workspace([tmp_path], sink).packages["tracking"].executables
     assert [s.name for s in exes["tracker"].sources] == ["main.cpp", "ros.cpp", "core.cpp", "debayer.cpp"]
     assert [s.name for s in exes["lost"].sources] == ["gone"]
+
+
+def test_catkin_library_sources_of_classes_the_node_never_names_are_not_its_code(tmp_path: Path) -> None:
+    """tf2_ros's library defines Buffer, TransformListener and StaticTransformBroadcaster:
+    static_transform_publisher, which names only the broadcaster, does not subscribe /tf; a source
+    defining a class named by another source it reads is read too (transitively)."""
+    package(tmp_path, "tfkit", {
+        "CMakeLists.txt": "project(tfkit)\nadd_library(tfkit src/buffer.cpp src/listener.cpp src/static.cpp "
+                          "src/util.cpp)\nadd_executable(static_publisher src/main.cpp)\n"
+                          "target_link_libraries(static_publisher tfkit)\n",
+        "package.xml": MANIFEST.format("tfkit"),
+        "src/main.cpp": "int main() { tfkit::StaticBroadcaster b; }\n",
+        "src/static.cpp": "StaticBroadcaster::StaticBroadcaster() { Util u; }\n",
+        "src/util.cpp": "Util::Util() {}\n",
+        "src/buffer.cpp": "Buffer::Buffer() {}\n",
+        "src/listener.cpp": "Listener::Listener(Buffer& b) {}\n",
+    })
+    exe = Workspace([tmp_path], DiagnosticSink()).packages["tfkit"].executables["static_publisher"]
+    assert [s.name for s in exe.sources] == ["main.cpp", "static.cpp", "util.cpp"]

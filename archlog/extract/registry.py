@@ -62,16 +62,36 @@ def register(lang: str, kind: InputKind) -> None:
 def extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnostics: DiagnosticSink,
             progress: Progress) -> Summaries:
     """Summaries of the executables the configuration runs (all of them when `wanted` is None) whose
-    language is an input kind; `progress(done, total)` is called as they finish."""
+    language is an input kind, and of the nodelets they load into their own process;
+    `progress(done, total)` is called as they finish."""
+    summaries = _extract(workspace, wanted, diagnostics, progress)
+    loaded = {kind for s in summaries.values() for n in s.loads if (kind := plugin_kind(n.plugin))} - summaries.keys()
+    if loaded and wanted is not None:
+        summaries.update(_extract(workspace, loaded, diagnostics, progress))
+    return summaries
+
+
+def plugin_kind(plugin: object) -> tuple[str, str] | None:
+    """(package, Type) of a plugin name pkg/Type, as a launch file's `nodelet load` runs it."""
+    if isinstance(plugin, str) and plugin.count("/") == 1 and all(plugin.split("/")):
+        pkg, name = plugin.split("/")
+        return pkg, name
+    return None
+
+
+def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnostics: DiagnosticSink,
+             progress: Progress) -> Summaries:
     summaries: Summaries = {}
     inline: dict[str, Callable[[Executable], NodeSummary]] = {}
     isolated: dict[str, Callable[[Executable], IsolatedJob]] = {}
     jobs: list[IsolatedJob] = []
+    aliases: dict[tuple[str, str], tuple[str, str]] = {}
     for package in workspace.packages.values():
         for exe in package.executables.values():
             kind = INPUT_KINDS.get(exe.lang)
-            if kind is None or wanted is not None and (package.name, exe.name) not in wanted:
+            if kind is None or wanted is not None and not wanted.intersection(exe.kinds):
                 continue
+            aliases.update((alias, exe.kinds[0]) for alias in exe.kinds[1:])
             if kind.start_isolated is not None:
                 if exe.lang not in isolated:
                     isolated[exe.lang] = kind.start_isolated(workspace, diagnostics)
@@ -90,6 +110,7 @@ def extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnosti
         summaries[(job.package, job.executable)] = summary
         for diag in found:
             diagnostics.add(diag.file, diag.line, diag.code, diag.message, diag.severity, diag.column)
+    summaries.update((alias, summaries[own]) for alias, own in aliases.items() if own in summaries)
     return summaries
 
 

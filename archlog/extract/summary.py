@@ -27,7 +27,7 @@ class Port:
     qos: tuple[tuple[str, str], ...] = ()
     queue: Value | None = None
     condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
-    camera_info: bool = False  # an image_transport camera port: also camera_info beside the remapped image topic
+    info_of: Value | None = None  # image_transport: the image topic (as written) whose remapped sibling this is
 
 
 @dataclass(frozen=True)
@@ -97,6 +97,19 @@ class PluginSlot:
     line: int
 
 
+@dataclass(frozen=True)
+class LoadedNodelet:
+    """A nodelet an executable loads into its own process (nodelet::Loader::load): the plugin
+    (pkg/Type), the nodelet's name (a FullNodeName when built from ros::this_node::getName()) and
+    the remappings given with it, as written; its ports are the executable's (system/nodelets.py)."""
+
+    plugin: Value
+    name: Value
+    remaps: tuple[tuple[Value, Value], ...]
+    file: str
+    line: int
+
+
 @dataclass
 class NodeSummary:
     """The ports of one node executable and its default name (ros::init / rospy.init_node)."""
@@ -114,3 +127,4 @@ class NodeSummary:
     publishes: list[Publish] = field(default_factory=list)  # behavior: how each publish call is reached
     writes: list[StateWrite] = field(default_factory=list)
     plugins: tuple[PluginSlot, ...] = ()
+    loads: list[LoadedNodelet] = field(default_factory=list)  # nodelets run in this process

@@ -10,13 +10,15 @@ from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.registry import Summaries
-from archlog.extract.summary import NodeSummary, Port
+from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.messages import message_files
+from archlog.system.camera_info import placed_camera_info
 from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels
+from archlog.system.nodelets import is_manager, loaded_ports, loader_ports, manager_summary
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
 from archlog.values import ParamRef
@@ -68,7 +70,10 @@ _COMPARED = ("publisher", "subscriber", "service_server", "service_client", "act
 def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: DiagnosticSink) -> NodeSummary:
     """A node both read from source and modelled by archlog: the source, unless it resolves fewer
     ports than the model (code in a library not read, names not known, a file that did not compile):
-    then the model. Where the two disagree on a resolved name, a model-drift note."""
+    then the model. Where the two disagree on a resolved name, a model-drift note. A source that
+    loads nodelets into its process is used: their ports are placed per instance (nodelets.py)."""
+    if source.loads:
+        return source
     ours, theirs = _resolved(source), _resolved(model)
     chosen = model if len(ours) < len(theirs) else source
     actions = {n for k, n in ours | theirs if k.startswith("action")}  # an action's topics are the action
@@ -107,30 +112,20 @@ def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
     return found
 
 
-def _camera_info_ports(node: LaunchNode, ports: list[Port]) -> list[Port]:
-    """image_transport's camera ports: camera_info beside the image topic as resolved and remapped
-    (CameraSubscriber / CameraPublisher take the sibling of the remapped image topic)."""
-    remaps = names.resolve_remaps([(src, dst) for src, dst, _ in node.remaps], node.namespace, node.name)
-    found = []
-    for port in ports:
-        if port.camera_info and isinstance(port.name, str) and isinstance(port.handle_ns, str):
-            image = names.remap(names.resolve(names.join(port.handle_ns, port.name) if port.handle_ns else port.name,
-                                              node.namespace, node.name), remaps)
-            found.append(replace(port, name=names.join(names.namespace_of(image), "camera_info"),
-                                 type="sensor_msgs/CameraInfo", camera_info=False))
-    return found
-
-
 def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config: LaunchConfig,
              workspace: Workspace, diagnostics: DiagnosticSink, missing: set[tuple[str, str]]) -> NodeSummary | None:
     """What one instance runs, with its configured ports and those of the plugins its parameters
-    choose (the slots of its model, also when its source is read); a kind with neither is reported once."""
-    summary = summaries.get(node.kind)
+    choose (the slots of its model, also when its source is read); a kind with neither is reported once.
+    A nodelet manager runs the nodelet mechanism, whatever the source of `nodelet` says."""
+    summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
+    if summary is not None and summary.loads:
+        summary = replace(summary, ports=summary.ports + loaded_ports(node, summary, summaries, diagnostics))
+    if summary is not None and any(p.info_of is not None for p in summary.ports):
+        summary = replace(summary, ports=[placed_camera_info(p, node) for p in summary.ports])
     model = models.user.get(node.kind) or models.builtin.get(node.kind)
     slots = summary.plugins if summary is not None and summary.plugins else model.plugins if model else ()
-    extra = configured_ports(node, config, workspace, diagnostics) + \
-        plugin_ports(node, slots, models.classes, config, diagnostics) + \
-        _camera_info_ports(node, summary.ports if summary is not None else [])
+    extra = configured_ports(node, config, workspace, diagnostics) + loader_ports(node) + \
+        plugin_ports(node, slots, models.classes, config, diagnostics)
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
             NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")

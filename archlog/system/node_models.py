@@ -20,7 +20,7 @@ entry's line and its valid models are still used.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from functools import lru_cache
 from pathlib import Path
@@ -173,11 +173,14 @@ def _classes(data: dict, shown: str, diagnostics: DiagnosticSink, classes: dict[
 def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: DiagnosticSink) -> None:
     default = port.get("default")
     condition = port.get("if")
-    summary.ports.append(Port(kind, _name(port["name"], shown, port["__line__"]), str(port.get("type", "")),
-                              shown, port["__line__"], 0, "", None if default is None else str(default),
-                              qos=() if "qos" not in port else _qos(port["qos"]),
-                              condition=None if condition is None else _condition(condition, shown),
-                              camera_info=bool(port.get("camera_info"))))
+    name = _name(port["name"], shown, port["__line__"])
+    image = Port(kind, name, str(port.get("type", "")), shown, port["__line__"], 0, "",
+                 None if default is None else str(default), qos=() if "qos" not in port else _qos(port["qos"]),
+                 condition=None if condition is None else _condition(condition, shown))
+    summary.ports.append(image)
+    if port.get("camera_info") and isinstance(name, str):  # placed beside the remapped image per instance
+        summary.ports.append(replace(image, name="camera_info", type="sensor_msgs/CameraInfo", default=None,
+                                     info_of=name))
 
 
 def _qos(spec: str | dict) -> tuple[tuple[str, str], ...]:

@@ -30,7 +30,10 @@ def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
         extra = f" default {json.dumps(plain(p.default))}" if p.default is not None else ""
         extra += "".join(f" {k}={v}" for k, v in p.qos)
         handle = f" handle {json.dumps(plain(p.handle_ns))}" if p.handle_ns else ""
+        extra += f" if {json.dumps(plain(p.condition[0]))}={p.condition[1]}" if p.condition else ""
         lines.append(f"{p.line}: {p.kind} {json.dumps(plain(p.name))} {json.dumps(plain(p.type))}{handle}{extra}")
+    lines += [f"{n.line}: load {json.dumps(plain(n.plugin))} as {json.dumps(plain(n.name))}"
+              + "".join(f" {json.dumps(plain(k))}:={json.dumps(plain(v))}" for k, v in n.remaps) for n in summary.loads]
     lines += [f"diagnostic {d.line}: {d.severity} {d.code}" for d in diagnostics]
     lines += [describe_publish(p) for p in summary.publishes]
     lines += [f"write {w.line} {w.var}={w.value}" + (f" by {_site(w.source, w.file)}" if w.source else "")

@@ -86,7 +86,7 @@ class CppEnvironment:
 
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
-            [d for d in ("/usr/include/eigen3",) if Path(d).is_dir()]
+            [d for d in ("/usr/include/eigen3", "/usr/include/opencv4") if Path(d).is_dir()]
         includes = [str(p) for p in self.workspace_includes if p.is_dir() and sandbox.current().inside(p)]
         includes += [str(self.generated)] if self.generated else []
         self.args = ["-x", "c++", "-std=c++17", "-Wno-everything", "-ferror-limit=0",
@@ -124,11 +124,16 @@ class CppEnvironment:
 def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvironment,
                 shown: dict[Path, str], diagnostics: DiagnosticSink, cls: str | None = None) -> NodeSummary:
     """The summary of one executable (or of one nodelet class): every source file read, from the
-    cache when unchanged."""
+    cache when unchanged. A nodelet's files are read after the one that names its class, with the
+    base classes found there (their methods, defined in other files of the library, are the node's
+    code too)."""
     summary = NodeSummary(package, executable, "cpp")
     cache = ResultCache("cpp")
     index: ci.Index | None = None
     behaviors: list[FileBehavior] = []
+    if cls is not None:
+        last = cls.rsplit("::", 1)[-1]
+        sources = sorted(sources, key=lambda s: re.search(rf"\b{re.escape(last)}\b", _text(s)) is None)
     for source in sources:
         name = shown.get(source, str(source))
         refused = unreadable(source, "source")
@@ -156,9 +161,18 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             cache.put(cache_key, result)
         _merge(summary, result, diagnostics)
         behaviors.append(result.behavior)
+        if cls is not None and len(result.classes) > len(cls.split("|")):
+            cls = "|".join(result.classes)
     summary.publishes, summary.writes = link_files(behaviors)
     _settle_behavior(summary)
     return summary
+
+
+def _text(source: Path) -> str:
+    try:
+        return sandbox.read_text(source, "source")
+    except sandbox.Refused:  # reported when the file is read
+        return ""
 
 
 def _settle_behavior(summary: NodeSummary) -> None:
@@ -514,6 +528,7 @@ def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
 
 def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink) -> None:
     summary.ports += [p for p in result.ports if p not in summary.ports]  # a header's code is read with each file
+    summary.loads += [n for n in result.loads if n not in summary.loads]
     if result.default_name is not None and summary.default_name is None:
         summary.default_name, summary.anonymous = result.default_name, result.anonymous
         summary.name_file, summary.name_line = result.name_file, result.name_line

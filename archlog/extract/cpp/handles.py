@@ -16,12 +16,14 @@ NODE_HANDLE = "ros::NodeHandle"
 IMAGE_TRANSPORT = "image_transport::ImageTransport"
 HANDLE_TYPES = (NODE_HANDLE, IMAGE_TRANSPORT)
 # (class, method) -> port kind
+NODELET_LAZY = "nodelet_topic_tools::NodeletLazy"
 METHODS = {
     (NODE_HANDLE, "advertise"): "publisher", (NODE_HANDLE, "subscribe"): "subscriber",
     (NODE_HANDLE, "advertiseService"): "service_server", (NODE_HANDLE, "serviceClient"): "service_client",
     (IMAGE_TRANSPORT, "advertise"): "publisher", (IMAGE_TRANSPORT, "subscribe"): "subscriber",
     (IMAGE_TRANSPORT, "advertiseCamera"): "publisher", (IMAGE_TRANSPORT, "subscribeCamera"): "subscriber",
     ("message_filters::Subscriber", "subscribe"): "subscriber",
+    (NODELET_LAZY, "advertise"): "publisher",  # advertise<T>(nh, topic, queue): a lazy nodelet's publisher
 }
 # nodelet::Nodelet accessors for the manager-provided handles
 NODELET_HANDLES = {"getNodeHandle": "", "getMTNodeHandle": "", "getPrivateNodeHandle": "~",
@@ -37,6 +39,8 @@ def is_handle_type(type_: ci.Type) -> bool:
 class HandleContext(Protocol):
     """What reading handles needs of the walker: keys and values of cursors, and the value all
     call sites of a function agree on for a parameter."""
+
+    kept: list[ci.Cursor]
 
     def key(self, decl: ci.Cursor | None) -> CursorKey: ...
     def value(self, expr: ci.Cursor, depth: int = 0) -> Value: ...
@@ -78,6 +82,23 @@ class Handles:
             return ns
         return f"~{ns}" if parent == "~" else names.canonical(f"{parent}/{ns}")
 
+    def reset_ns(self, field: ci.Cursor, depth: int) -> Value:
+        """A handle member (or a smart pointer to one) that the code read sets, `field = getPrivate
+        NodeHandle()` or `field.reset(new ros::NodeHandle(...))` (also in the inline methods of its
+        class, as nodelet_topic_tools::NodeletLazy's pnh_ in a header not otherwise read): the
+        namespace they agree on, else the node's."""
+        found: set[Value] = set()
+        inline = list(field.semantic_parent.walk_preorder()) if field.semantic_parent is not None else []
+        for call in inline + self.ctx.kept:
+            if call.kind != K.CALL_EXPR or call.spelling not in ("reset", "operator="):
+                continue
+            parts = list(call.get_children())
+            if len(parts) < 2 or not any(c.referenced == field for c in parts[0].walk_preorder()
+                                         if c.kind == K.MEMBER_REF_EXPR):
+                continue
+            found.add(self.handle_of(parts[-1], depth + 1))
+        return found.pop() if len(found) == 1 and not isinstance(next(iter(found)), Unknown) else ""
+
     def member_inits(self, ctor: ci.Cursor) -> None:
         children = list(ctor.get_children())
         for member, init in zip(children, children[1:]):
@@ -93,6 +114,10 @@ class Handles:
                 if key not in self.namespaces and decl is not None and decl.kind == K.VAR_DECL:
                     self.namespaces[key] = self.handle_ns(decl)
                 if key in self.namespaces:
+                    return self.namespaces[key]
+                if decl is not None and decl.kind == K.FIELD_DECL and depth < 4:
+                    self.namespaces[key] = ""  # while it is looked for
+                    self.namespaces[key] = self.reset_ns(decl, depth)
                     return self.namespaces[key]
                 if decl is not None and decl.kind == K.FIELD_DECL:
                     return ""

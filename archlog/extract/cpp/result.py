@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cpp.behavior import FileBehavior
-from archlog.extract.summary import Port
+from archlog.extract.summary import LoadedNodelet, Port
 from archlog.values import Value
 
 
@@ -26,3 +26,5 @@ class FileResult:
     depends: list[tuple[str, int]] = field(default_factory=list)
     missing: list[str] = field(default_factory=list)
     behavior: FileBehavior = field(default_factory=FileBehavior)
+    loads: list[LoadedNodelet] = field(default_factory=list)
+    classes: list[str] = field(default_factory=list)  # a nodelet's class and the bases this file knows of

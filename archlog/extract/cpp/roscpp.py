@@ -37,9 +37,12 @@ from archlog.extract.cpp.handles import (
     IMAGE_TRANSPORT,
     METHODS,
     NODE_HANDLE,
+    NODELET_LAZY,
     Handles,
     is_handle_type,
 )
+from archlog.extract.cpp.loader import LOADER, loaded_nodelets
+from archlog.extract.cpp.param_guards import Branches, initial_value, tested_variable
 from archlog.extract.cpp.rclcpp.durations import Durations
 from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
 from archlog.extract.cpp.rclcpp.walker import RclcppWalker
@@ -90,11 +93,19 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     `ros2`: the file is ROS 2 code (rclcpp/walker.py reads its API)."""
     walker = _Walker(source, shown, cls, ros2, workspace or (str(source.parent),))
     walker.walk(tu.cursor)
+    walker.result.classes = walker.scope.classes
+    walker.members(walker.scope.members)
     if incomplete_ast:
         walker.token_fallback(tu)
     walker.result.behavior = read_behavior(walker, walker.kept, walker.port_calls, walker.named_callbacks,
                                            sandbox.read_bytes(source, "source") if incomplete_ast else None)
     return walker.result
+
+
+def _made_class(call: ci.Cursor) -> str:
+    """The class a make_shared<T>(...) / make_unique<T>(...) call constructs."""
+    made = call.type.get_canonical().get_template_argument_type(0)
+    return qualified(made.get_declaration()) if made.kind != ci.TypeKind.INVALID else ""
 
 
 class _Walker:
@@ -115,6 +126,7 @@ class _Walker:
         self.kept: list[ci.Cursor] = []
         self.durations = Durations(self)
         self.handles = Handles(self)
+        self.branches = Branches([])
         self.rclcpp = RclcppWalker(self, self.durations) if ros2 else None
 
     @staticmethod
@@ -162,9 +174,11 @@ class _Walker:
         if self.rclcpp is not None:
             self.rclcpp.prepare(cursors)
         self.kept, self.spans = self.scope.relevant(cursors)
-        for cursor in self.kept:
-            if cursor.kind == K.CALL_EXPR:
-                self.call(cursor)
+        self.branches = Branches(self.kept)
+        calls = [c for c in self.kept if c.kind == K.CALL_EXPR]
+        reads = [c for c in calls if c.spelling in PARAM_READS]  # first: a port's guard may test what they read
+        for cursor in reads + [c for c in calls if c.spelling not in PARAM_READS]:
+            self.call(cursor)
 
     def workspace_code(self, decl: ci.Cursor) -> bool:
         """A declaration in the file or in a header of the workspace."""
@@ -296,6 +310,8 @@ class _Walker:
             namespace = self.value(args[0])
             for port_kind, suffix, port_type in UNDER_NAMESPACE[owner]:
                 self.add(port_kind, call, concat(namespace, suffix), port_type, "")
+        elif name in ("make_shared", "make_unique") and (made := _made_class(call)) in CONSTRUCTED:
+            self.constructed(call, made, args)
         elif owner in ("ros::Rate", "ros::WallRate") and ref.kind == K.CONSTRUCTOR and args:
             hz = self.value(args[0])
             self.add("timer", call, period(hz) if isinstance(hz, str) else self.unknown(call, "rate not constant"),
@@ -305,6 +321,8 @@ class _Walker:
             self.result.name_file, self.result.name_line = self.shown(call), call.location.line
             self.result.anonymous = len(args) > 3 and "AnonymousName" in " ".join(
                 t.spelling for t in args[3].get_tokens())
+        elif owner == LOADER and name == "load" and len(args) >= 2:
+            self.result.loads += loaded_nodelets(self, call, args)
         elif (owner, name) in METHODS and args:
             self.method(call, ref, owner, name, args)
         elif owner == NODE_HANDLE and args and name in PARAM_READS | PARAM_WRITES:
@@ -326,12 +344,16 @@ class _Walker:
             self.add(kind, call, self.value(args[1]) if len(args) > 1 else self.unknown(call), type_,
                      self.handles.handle_of(args[0]))
             return
+        if owner == NODELET_LAZY:
+            self.add(kind, call, self.value(args[1]) if len(args) > 1 else self.unknown(call),
+                     self.port_type(call, args, name), self.handles.handle_of(args[0]))
+            return
         handle = self.handles.handle_of(next(call.get_children()))
         topic = self.value(args[0])
         if owner == IMAGE_TRANSPORT:
             self.add(kind, call, topic, "sensor_msgs/Image", handle)
             if name.endswith("Camera"):
-                self.add(kind, call, camera_info(topic), "sensor_msgs/CameraInfo", handle)
+                self.add(kind, call, camera_info(topic), "sensor_msgs/CameraInfo", handle, info_of=topic)
             return
         queue = self.value(args[1]) if len(args) > 1 and name in ("advertise", "subscribe") else None
         self.add(kind, call, topic, self.port_type(call, args, name), handle,
@@ -353,6 +375,17 @@ class _Walker:
                 return  # default-constructed: ports come from a later subscribe()/start()
             self.add(kind, call, self.value(args[position]), type_, handle)
 
+    def members(self, fields: list[ci.Cursor]) -> None:
+        """A nodelet's members (of its class and bases) that are library objects with fixed ports
+        (a tf listener, say): each instance constructs them, so their ports are the node's."""
+        for field in fields:
+            owner = qualified(field.type.get_declaration())
+            for kind, fixed, _index in CONSTRUCTED.get(owner, []):
+                if fixed is not None and field.location.file is not None:
+                    loc = field.location
+                    self.result.ports.append(Port(kind, fixed, FIXED_TYPES[fixed], self.shown(field), loc.line,
+                                                  loc.column))
+
     def param(self, call: ci.Cursor, args: list[ci.Cursor], handle: Value, method: str) -> None:
         pname = self.value(args[0])
         if method in PARAM_WRITES:
@@ -365,8 +398,10 @@ class _Walker:
         if len(args) > 1 and isinstance(pname, str) and not (has_default and len(args) == 2):
             target = next((c for c in args[1].walk_preorder() if c.kind in (K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)), None)
             key = self.key(target.referenced) if target is not None else None
-            if key is not None:
-                fallback = default if default is not None else self.unknown(call, "parameter without default")
+            if key is not None and target is not None:
+                start = initial_value(target.referenced) if target.referenced.kind == K.FIELD_DECL else None
+                fallback = default if default is not None else self.value(start) if start is not None else \
+                    self.unknown(call, "parameter without default")
                 self.param_vars[key] = ParamRef(pname, fallback, handle, self.shown(call), call.location.line)
 
     def duration(self, expr: ci.Cursor) -> Value:
@@ -403,7 +438,8 @@ class _Walker:
         return template_arg or self.unknown(call, "message type not resolved")
 
     def add(self, kind: str, call: ci.Cursor, name: Value, type_: Value, handle: Value,
-            default: Value | None = None, queue: Value | None = None, qos: tuple[tuple[str, str], ...] = ()) -> None:
+            default: Value | None = None, queue: Value | None = None, qos: tuple[tuple[str, str], ...] = (),
+            info_of: Value | None = None) -> None:
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
                 self.add(kind, call, option, type_, handle, default, queue, qos)
@@ -416,7 +452,17 @@ class _Walker:
                 file, loc.line, "cpp-private-name",
                 f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
                 "(the node dies at start-up); use a NodeHandle(\"~\") instead", "error", loc.column))
-        self.result.ports.append(Port(kind, name, type_, file, loc.line, loc.column, handle, default, qos, queue))
+        self.result.ports.append(Port(kind, name, type_, file, loc.line, loc.column, handle, default, qos, queue,
+                                      self.param_condition(call), info_of=info_of))
+
+    def param_condition(self, call: ci.Cursor) -> tuple[Value, str | None] | None:
+        """The parameter the innermost if/else around a port's call tests, and the value it needs."""
+        branch = self.branches.innermost(call)
+        tested = tested_variable(branch[0]) if branch is not None else None
+        ref = self.param_vars.get(self.key(tested[0])) if tested is not None else None
+        if branch is None or tested is None or not isinstance(ref, ParamRef):
+            return None
+        return ref, "true" if branch[1] != tested[1] else "false"
 
     # -- when the AST is incomplete -------------------------------------------------------------
     def token_fallback(self, tu: ci.TranslationUnit) -> None:

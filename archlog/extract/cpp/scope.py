@@ -1,5 +1,6 @@
 """Which code of a translation unit the C++ walker reads: the file's own, the definitions in the
-workspace's headers that it uses (transitively), and for a nodelet class only its methods."""
+workspace's headers that it uses (transitively), and for a nodelet class only its methods and
+those of its base classes (the class as exported may be a typedef of the class defined)."""
 
 from __future__ import annotations
 
@@ -9,17 +10,22 @@ import clang.cindex as ci
 
 from archlog.extract.cpp.cache import cache_dir
 from archlog.extract.cpp.clang_ast import CursorKey, K, qualified
+from archlog.extract.cpp.handles import METHODS
 from archlog.extract.cpp.stubs import API_DIR
 
 _CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)
 
 
 class Scope:
-    """The file read, the workspace folders whose headers' code is read, and the class read alone."""
+    """The file read, the workspace folders whose headers' code is read, and the class read alone
+    (`cls`: "A" or, when other files found its bases, "A|ns::Base|..."); `classes` is the class
+    with the bases this file knows of, once `relevant` has run."""
 
     def __init__(self, source: str, workspace: tuple[str, ...], cls: str | None) -> None:
         self.source, self.cls = source, cls
         self.workspace = tuple(folder.rstrip("/") + "/" for folder in workspace)
+        self.classes: list[str] = cls.split("|") if cls else []
+        self.members: list[ci.Cursor] = []  # the data members of those classes this file sees
 
     def header_code(self, cursors: list[ci.Cursor], key: Callable[[ci.Cursor | None], CursorKey]) -> list[ci.Cursor]:
         """The cursors of definitions in the workspace's own headers that the file's code uses
@@ -34,7 +40,8 @@ class Scope:
                 continue
             seen.add(decl_key)
             definition = decl.get_definition()
-            if definition is None or not self.workspace_header(definition):
+            if definition is None or not self.workspace_header(definition) or \
+                    (qualified(decl.semantic_parent), decl.spelling) in METHODS:  # an API the walker reads as such
                 continue
             body = list(definition.walk_preorder())
             found += body
@@ -55,12 +62,37 @@ class Scope:
         (with the spans of their lines)."""
         if self.cls is None:
             return cursors, None
+        self.classes, self.members = _with_bases(self.classes, cursors)
         kept: list[ci.Cursor] = []
         spans: list[tuple[int, int]] = []
         for cursor in cursors:
             if cursor.kind in (K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_DECL) and cursor.is_definition():
                 owner = cursor.semantic_parent
-                if cursor.kind == K.FUNCTION_DECL or qualified(owner) == self.cls:
+                if cursor.kind == K.FUNCTION_DECL or qualified(owner) in self.classes:
                     kept += list(cursor.walk_preorder())
                     spans.append((cursor.extent.start.line, cursor.extent.end.line))
         return kept, spans
+
+
+def _with_bases(classes: list[str], cursors: list[ci.Cursor]) -> tuple[list[str], list[ci.Cursor]]:
+    """The classes, the classes their typedefs in the file name, and all their base classes; and
+    the data members of the definitions found."""
+    found, members, defined = list(classes), list[ci.Cursor](), set[str]()
+    pending = [c.underlying_typedef_type.get_declaration() for c in cursors
+               if c.kind in (K.TYPEDEF_DECL, K.TYPE_ALIAS_DECL) and qualified(c) in classes]
+    pending += [c.referenced for c in cursors if c.kind in (K.CLASS_DECL, K.STRUCT_DECL, K.TYPE_REF)
+                and c.referenced is not None and qualified(c.referenced) in classes]
+    while pending and len(found) < 64:
+        decl = pending.pop()
+        definition = decl.get_definition() if decl is not None else None
+        if definition is None:
+            continue
+        if (name := qualified(definition)) not in found:
+            found.append(name)
+        if name in defined:
+            continue
+        defined.add(name)
+        members += [c for c in definition.get_children() if c.kind == K.FIELD_DECL]
+        pending += [base.type.get_declaration() for base in definition.get_children()
+                    if base.kind == K.CXX_BASE_SPECIFIER]
+    return found, members

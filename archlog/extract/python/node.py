@@ -41,17 +41,20 @@ _RCLPY_METHODS = {
     "create_service": ("service_server", 0, 1), "create_client": ("service_client", 0, 1),
 }
 _RCLPY_ACTIONS = {"rclpy.action.ActionServer": "action_server", "rclpy.action.ActionClient": "action_client"}
-# tf broadcasters and listeners: qualified name -> ports they create
-_TF = {
+# library objects with fixed ports (tf broadcasters and listeners, the diagnostics updater):
+# qualified name -> ports they create
+_FIXED = {
     "tf.TransformBroadcaster": [("publisher", "/tf")],
     "tf2_ros.TransformBroadcaster": [("publisher", "/tf")],
     "tf2_ros.StaticTransformBroadcaster": [("publisher", "/tf_static")],
     "tf.TransformListener": [("subscriber", "/tf"), ("subscriber", "/tf_static")],
     "tf2_ros.TransformListener": [("subscriber", "/tf"), ("subscriber", "/tf_static")],
+    "diagnostic_updater.Updater": [("publisher", "/diagnostics")],
 }
 _PARAM_READS = {"rospy.get_param": True, "rospy.search_param": False, "rospy.has_param": False}
 _PARAM_WRITES = {"rospy.set_param", "rospy.delete_param"}
-_TF_MESSAGE = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage"}
+_FIXED_TYPES = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage",
+                "/diagnostics": "diagnostic_msgs/DiagnosticArray"}
 _RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "get_parameter", "get_parameter_or",
                "create_timer"}
 _ROS_WORDS = re.compile(r"rospy\.|rclpy|Publisher|Subscriber|Service|create_")
@@ -192,9 +195,9 @@ class NodeReader(ValueFolder):
             kind, name_kw, type_kw = _ROSPY[func]
             self.add(kind, call, self.value(arg(call, 0, name_kw)), self.message_type(arg(call, 1, type_kw), False),
                      queue=self.queue(call, func))
-        elif func in _TF:
-            for kind, topic in _TF[func]:
-                self.add(kind, call, topic, _TF_MESSAGE[topic])
+        elif func in _FIXED:
+            for kind, topic in _FIXED[func]:
+                self.add(kind, call, topic, _FIXED_TYPES[topic])
         elif func in _PARAM_READS and call.args:
             default = arg(call, 1, "default") if _PARAM_READS[func] else None
             self.add("param_read", call, self.value(call.args[0]), "",

@@ -65,47 +65,28 @@ class ExecutableFinder:
         """Packages often build the node's code into a library of their own that the executable
         links (target_link_libraries, followed transitively within the package): its sources belong
         to the executable, except, in ROS 2, those defining a node class the executable's own
-        sources never name, and in ROS 1, those exporting a plugin (a nodelet) that no source read
-        with the executable names, by class or by plugin name (image_proc's node loads
-        "image_proc/debayer", not the library's other nodelets)."""
-        plugins = {} if package.ament else self._plugin_names(package)
+        sources never name, and in ROS 1, those exporting a plugin (a nodelet) or defining the
+        constructors of classes that no source read with the executable names (tf2_ros's library
+        holds Buffer, TransformListener...: static_transform_publisher uses StaticTransformBroadcaster
+        only; a nodelet loaded by its plugin name, as image_proc's node loads "image_proc/debayer"
+        through nodelet::Loader, runs under its own name: system/nodelets.py)."""
         for exe in package.executables.values():
             if exe.lang != "cpp" or exe.cls is not None:
                 continue
             own = "\n".join(_text(s) for s in exe.sources)
-            pending, seen, linked = list(package.links.get(exe.target, [])), set(), list[Path]()
-            while pending:
-                library = pending.pop(0)
-                if library in package.libraries and library not in seen and library != exe.target:
-                    seen.add(library)
-                    linked += [s for s in package.libraries[library] if s not in exe.sources and s not in linked]
-                    pending += package.links.get(library, [])
+            linked = [s for s in _linked(package, exe.target) if s not in exe.sources]
             if package.ament:
                 exe.sources += [s for s in linked if all(re.search(rf"\b{c}\b", own) for c in _node_classes(s))]
                 continue
-            exported = {s: _exported_plugins(s) for s in linked}
-            plain = [s for s in linked if not exported[s]]
+            classes = {s: exported_plugins(s) or _constructed_classes(s) for s in linked}
+            plain = [s for s in linked if not classes[s]]
             exe.sources += plain
             text = "\n".join([own, *(_text(s) for s in plain)])
-            waiting = [s for s in linked if exported[s]]
-            while named := [s for s in waiting if any(_names(text, cls, plugins.get(cls)) for cls in exported[s])]:
+            waiting = [s for s in linked if classes[s]]
+            while named := [s for s in waiting if any(_names(text, cls) for cls in classes[s])]:
                 exe.sources += named
                 waiting = [s for s in waiting if s not in named]
                 text += "\n".join(_text(s) for s in named)
-
-    def _plugin_names(self, package: Package) -> dict[str, str]:
-        """Plugin class (as exported, no leading ::) -> plugin name, from the package's plugin XML
-        files (unreadable ones are reported where nodelets are read)."""
-        found: dict[str, str] = {}
-        for raw in package.plugin_xml:
-            try:
-                root = parse_xml_elements(Path(raw.replace("${prefix}", str(package.path))), "build")
-            except (sandbox.Refused, etree.XMLSyntaxError):
-                continue
-            for cls in root.iter("class"):
-                if cls.get("type") and cls.get("name"):
-                    found[cls.get("type", "").lstrip(":")] = cls.get("name", "")
-        return found
 
     def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int,
                    asker: tuple[Path, int] | None = None) -> None:
@@ -174,9 +155,10 @@ class ExecutableFinder:
                         continue
                     name, type_ = cls.get("name") or cls.get("type", ""), cls.get("type", "")
                     sources = package.libraries.get(target) or _exporting(package.path, type_)
+                    sources = sources + [s for s in _linked(package, target) if s not in sources]
                     plugin = name.split("/", 1)[-1]
                     package.executables[plugin] = Executable(package.name, plugin, "cpp", sources,
-                                                             cls.sourceline or 0, type_)
+                                                             cls.sourceline or 0, type_, plugin=name)
 
     def _registered_components(self, package: Package, command: str, args: tuple[str, ...], line: int) -> None:
         """rclcpp_components_register_node(lib PLUGIN ns::Class [EXECUTABLE exe]) and
@@ -261,6 +243,18 @@ class ExecutableFinder:
                     package.executables[path.name] = Executable(package.name, path.name, "python", [path])
 
 
+def _linked(package: Package, target: str) -> list[Path]:
+    """The sources of the package's libraries a target links, transitively."""
+    pending, seen, linked = list(package.links.get(target, [])), set(), list[Path]()
+    while pending:
+        library = pending.pop(0)
+        if library in package.libraries and library not in seen and library != target:
+            seen.add(library)
+            linked += [s for s in package.libraries[library] if s not in linked]
+            pending += package.links.get(library, [])
+    return linked
+
+
 def _text(path: Path) -> str:
     """A source file's text for indexing; empty when the sandbox refuses it (the extractor that
     reads it for its node reports why)."""
@@ -270,20 +264,27 @@ def _text(path: Path) -> str:
         return ""
 
 
+_CONSTRUCTOR = re.compile(r"\b(\w+)::\1\s*\(")
+
+
+def _constructed_classes(source: Path) -> list[str]:
+    """Classes whose constructors a C++ file defines."""
+    return sorted(set(_CONSTRUCTOR.findall(_text(source))))
+
+
 def _node_classes(source: Path) -> list[str]:
     """Node classes a C++ file defines: constructors whose base initializer is a Node."""
     return sorted(set(_NODE_CONSTRUCTOR.findall(_text(source))))
 
 
-def _exported_plugins(source: Path) -> list[str]:
+def exported_plugins(source: Path) -> list[str]:
     """Classes a C++ file exports as plugins (PLUGINLIB_EXPORT_CLASS, PLUGINLIB_DECLARE_CLASS)."""
     return sorted({(m.group(1) or m.group(2)).lstrip(":") for m in _EXPORT.finditer(_text(source))})
 
 
-def _names(text: str, cls: str, plugin: str | None) -> bool:
-    """Whether a text names a plugin class (by its last component) or its plugin name (in quotes)."""
-    return bool(re.search(rf"\b{re.escape(cls.rsplit('::', 1)[-1])}\b", text)) or \
-        plugin is not None and f'"{plugin}"' in text
+def _names(text: str, cls: str) -> bool:
+    """Whether a text names a plugin class (by its last component; not inside a plugin name pkg/Type)."""
+    return bool(re.search(rf"(?<![\w/]){re.escape(cls.rsplit('::', 1)[-1])}\b", text))
 
 
 def registered_components(text: str) -> list[tuple[str, int]]:

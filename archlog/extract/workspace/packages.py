@@ -25,6 +25,15 @@ class Executable:
     line: int = 0
     cls: str | None = None
     target: str = ""  # the CMake target it is built from
+    plugin: str = ""  # a nodelet's name as its plugin description declares it (pkg/Type)
+
+    @property
+    def kinds(self) -> list[tuple[str, str]]:
+        """What launch files run it as: (package, name), and for a nodelet declared under another
+        prefix than its package's (pcl_ros's `pcl/VoxelGrid`) that (prefix, Type) too."""
+        declared = tuple(self.plugin.split("/", 1)) if "/" in self.plugin else None
+        own = (self.package, self.name)
+        return [own] if declared is None or declared == own else [own, (declared[0], declared[1])]
 
 
 @dataclass

@@ -1,0 +1,14 @@
+#!/usr/bin/env python3
+"""Logs the size of each blurred image."""
+import rospy
+from sensor_msgs.msg import Image
+
+
+def show(msg):
+    rospy.loginfo('%dx%d', msg.width, msg.height)
+
+
+if __name__ == '__main__':
+    rospy.init_node('viewer')
+    rospy.Subscriber('pipeline/image', Image, show)
+    rospy.spin()
