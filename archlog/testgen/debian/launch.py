@@ -7,7 +7,7 @@ SPEC: {"files": [launch files], "args": {name: value}, "nodes": [resolved names]
 The launch files are read once with roslaunch's own loader; then, for every line
 {"params": {resolved name: value}} on stdin, the configuration's parameters and these (which win)
 are set on the master and the kept nodes are started (the caller kills them before the next line).
-Writes N to SPEC.json.done when the Nth start is done; stops everything when stdin closes.
+Writes "N PID..." (the started processes) to SPEC.json.done when the Nth start is done; stops everything when stdin closes.
 """
 
 import contextlib
@@ -47,7 +47,7 @@ def main(spec_path):
             node.output = "screen"
         started = [launcher.launch(node) for node in nodes]
         with open(spec_path + ".done", "w") as done:
-            done.write(str(number))
+            done.write(" ".join(map(str, [number] + [proc.pid for proc in started])))
     launcher.stop()
 
 
