@@ -5,6 +5,7 @@ is published, so that it is near the time it is sent. One strategy per type, sha
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from hypothesis import strategies as st
@@ -17,6 +18,7 @@ INTS = {"byte": (-2**7, 2**7 - 1), "char": (0, 2**8 - 1), "int8": (-2**7, 2**7 -
         "int16": (-2**15, 2**15 - 1), "uint16": (0, 2**16 - 1), "int32": (-2**31, 2**31 - 1),
         "uint32": (0, 2**32 - 1), "int64": (-2**63, 2**63 - 1), "uint64": (0, 2**64 - 1)}
 NSECS = (0, 999_999_999)
+SPECIALS = (math.nan, math.inf, -math.inf, -0.0)
 
 
 class Strategies:
@@ -71,8 +73,9 @@ class Strategies:
             return st.integers(max(lo, low) if low is not None else lo, min(hi, high) if high is not None else hi)
         if base in ("float32", "float64"):
             specials = options.get("specials", self.settings.specials) and low is None and high is None
-            return st.floats(low, high, allow_nan=specials, allow_infinity=specials,
-                             width=32 if base == "float32" else 64)
+            floats = st.floats(low, high, allow_nan=specials, allow_infinity=specials, width=32 if base == "float32" else 64)
+            # Hypothesis draws NaN and infinities rarely; a quarter of the draws are one of them (or -0.0)
+            return st.one_of(floats, floats, floats, st.sampled_from(SPECIALS)) if specials else floats
         if base == "string":
             return st.text(max_size=int(options.get("max_size", 16)))
         if base == "time":

@@ -37,7 +37,7 @@ class Outcome:
 
 
 def systems() -> list[Path]:
-    return sorted(p.parent for p in CORPUS.glob("*/buggy/case.json"))
+    return sorted(p.parent.parent for p in CORPUS.glob("*/buggy/case.json"))
 
 
 def prepare(variant: Path, work: Path) -> tuple[Path, dict]:
