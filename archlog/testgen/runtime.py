@@ -47,12 +47,11 @@ with contextlib.suppress(ImportError, ValueError):  # each example runs real pro
     _engine.MAX_SHRINKING_SECONDS = int(os.environ.get("ARCHLOG_TESTGEN_SHRINK_SECONDS", "300"))
 
 DEBIAN = Path(__file__).resolve().parent / "debian"
-BRIDGE_NODE = "/archlog_testgen_bridge"
 _POLL = 0.05
 STEP_SETTLE = 0.1  # seconds after a step's messages before the properties are checked
 
 
-class SystemError_(RuntimeError):
+class StartError(RuntimeError):
     """The configuration could not be started (roscore, roslaunch or the bridge failed); the message
     carries the log tail."""
 
@@ -97,7 +96,7 @@ class Session:
                 break
             except (OSError, xmlrpc.client.Error, RuntimeError):
                 if self.core.poll() is not None or time.monotonic() > deadline:
-                    raise SystemError_(f"roscore did not start:\n{processes.tail(self.tmp / 'roscore.log')}") from None
+                    raise StartError(f"roscore did not start:\n{processes.tail(self.tmp / 'roscore.log')}") from None
                 time.sleep(0.1)
         spec = self.tmp / "bridge.json"
         spec.write_text(json.dumps({"inputs": self.model["inputs"], "outputs": self.model["outputs"]}))
@@ -110,13 +109,12 @@ class Session:
     def _read_bridge(self) -> None:
         assert self.bridge is not None and self.bridge.stdout is not None
         for line in self.bridge.stdout:
-            event = json.loads(line)
-            self.events.put(event)
+            self.events.put(json.loads(line))
 
     def send(self, command: dict[str, Any]) -> None:
         assert self.bridge is not None and self.bridge.stdin is not None
         if self.bridge.poll() is not None:
-            raise SystemError_(f"the bridge exited:\n{processes.tail(self.tmp / 'bridge.log')}")
+            raise StartError(f"the bridge exited:\n{processes.tail(self.tmp / 'bridge.log')}")
         self.bridge.stdin.write((json.dumps(command) + "\n").encode())
         self.bridge.stdin.flush()
 
@@ -149,7 +147,7 @@ class Session:
             if pids and not all(map(processes.alive, pids)):
                 break  # a node died starting: the properties say so
             if self.launcher.poll() is not None or time.monotonic() > deadline:
-                raise SystemError_(f"the nodes under test did not come up:\n{processes.tail(self.log)}")
+                raise StartError(f"the nodes under test did not come up:\n{processes.tail(self.log)}")
             time.sleep(_POLL)
         if pids and not all(map(processes.alive, pids)):
             return
@@ -315,8 +313,9 @@ class ArchitectureMachine(RuleBasedStateMachine):
         """Lose the next message of a topic: the topic's sequence skips one (what the lost message held
         cannot matter, so it is not drawn)."""
         topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        seq = self._next(topic)
         if self.failure is None:
-            self.actions.append({"op": "drop", "topic": topic, "seq": self._next(topic)})
+            self.actions.append({"op": "drop", "topic": topic, "seq": seq})
 
     @precondition(lambda self: bool(self.last))
     @rule(data=st.data())
@@ -385,11 +384,11 @@ class ArchitectureMachine(RuleBasedStateMachine):
         return self.counters[topic]
 
     def _send(self, topic: str, msg: Any, settle: bool = True) -> None:
+        self.last[topic] = msg  # even after a failure: what may be drawn next must not depend on timing
         if self.failure is not None:  # the example has failed: the steps left are drawn but do nothing
             return
         self.first_sent.setdefault(topic, time.time())  # before: the answer may come back at once
         self.session.send({"op": "publish", "topic": topic, "msg": msg})
-        self.last[topic] = msg
         self.actions.append({"op": "publish", "topic": topic, "msg": msg})
         self.properties.sent.append({"topic": topic, "msg": msg})
         if settle:
