@@ -11,7 +11,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
-from conftest import requires_ros
+from conftest import finding_keys, requires_ros, run_case
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from support.testgen_corpus import CORPUS, Outcome, prepare, run_generated, systems
@@ -122,6 +122,13 @@ def test_unknown_node_is_a_usage_error(tmp_path: Path) -> None:
                              "--launch", "base_safety/launch/limiter.launch", "--nodes", "/nobody",
                              "--output", str(tmp_path)], capture_output=True, text=True)
     assert result.returncode == 2 and "no node /nobody" in result.stderr and "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize("system", systems(), ids=lambda p: p.name)
+def test_static_rules_cannot_tell_the_twins_apart(system: Path) -> None:
+    """The planted defects are behavioral: the rules report the same (rule, subject) on both twins."""
+    keys = [{(rule, subject) for rule, _f, _l, subject in finding_keys(run_case(system / v)[1])} for v in ("buggy", "clean")]
+    assert keys[0] == keys[1]
 
 
 # -- the generated tests against the running corpus systems (Debian's ROS 1) -------------------
