@@ -151,8 +151,6 @@ CODES: dict[str, Code] = {
         "testgen-message": ("warning", "A message type of an input or output has no definition, or a line of its "
                             ".msg file does not parse; its topic (or field) gets no strategy.",
                             "Index the package that defines it (pass its folder) or fix the .msg line."),
-        "testgen-settings": ("error", "The testgen settings file does not parse or names an unknown setting.",
-                             "Fix the line named; `archlog testgen --help` lists the settings."),
     }),
     **_codes("Reports", {
         "unused-suppression": ("warning", "An inline suppression matches no finding.", "Remove it."),

@@ -23,7 +23,8 @@ from archlog.testgen.settings import SettingsError, load_settings
 from archlog.testgen.strategies import INTS, Strategies
 
 SPECS = message_specs(Workspace([CORPUS / "empty_array" / "buggy"], DiagnosticSink()),
-                      ["sensor_msgs/NavSatFix", "sensor_msgs/LaserScan", "geometry_msgs/PoseStamped"], DiagnosticSink())
+                      dict.fromkeys(["sensor_msgs/NavSatFix", "sensor_msgs/LaserScan", "geometry_msgs/PoseStamped"],
+                                    ("test", 1)), DiagnosticSink())
 
 
 def test_specs_follow_nested_types_from_share_dirs() -> None:

@@ -42,6 +42,10 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
               if n in chosen and (nodes or t not in published) and isinstance(ty, str)}
     outputs = {str(t): str(ty) for _p, n, t, ty in ports["publisher"]
                if n in chosen and (nodes or t not in subscribed) and isinstance(ty, str)}
+    where: dict[str, tuple[str, int]] = {}  # input type -> file and line of a subscriber using it
+    for pid, n, t, ty in ports["subscriber"]:
+        if t in inputs and n in chosen:
+            where.setdefault(str(ty), (store.location(pid) or ("", 0, 0))[:2])
     whole = from_facts(store)
     interface = Architecture(frozenset(chosen), *(frozenset(r for r in getattr(whole, kind) if r[0] in chosen)
                                                   for kind in ("publishers", "subscribers", "services")))
@@ -60,7 +64,7 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
         "periodic": periodic,
         "requires": requires,
         "params": dict(sorted(params.items())),
-        "specs": message_specs(analysis.workspace, sorted(set(inputs.values())), analysis.diagnostics),
+        "specs": message_specs(analysis.workspace, where, analysis.diagnostics),
     }
 
 

@@ -22,19 +22,19 @@ _FIELD = re.compile(r"^(?P<type>[A-Za-z][\w/]*)(?P<array>\[(?P<size>\d*)\])?\s+(
 Specs = dict[str, dict]
 
 
-def message_specs(workspace: Workspace, types: list[str], diagnostics: DiagnosticSink) -> Specs:
-    """The definitions of `types` and of every message type nested in them; a type without a
-    definition is a diagnostic (its topic gets no strategy)."""
+def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagnostics: DiagnosticSink) -> Specs:
+    """The definitions of `types` (each with the file and line of a port using it) and of every message
+    type nested in them; a type without a definition is a diagnostic there (its topic gets no strategy)."""
     files = message_files(workspace)
     specs: Specs = {}
-    todo = list(types)
+    todo = list(types.items())
     while todo:
-        name = todo.pop()
+        name, where = todo.pop()
         if name in specs or name in BUILTIN:
             continue
         kind_path = files.get(name)
         if kind_path is None or kind_path[0] != "msg":
-            diagnostics.add("", 0, "testgen-message", f"no definition found for message type {name}", "warning")
+            diagnostics.add(*where, "testgen-message", f"no definition found for message type {name}")
             specs[name] = {"fields": [], "constants": {}, "missing": True}
             continue
         path = kind_path[1]
@@ -44,8 +44,9 @@ def message_specs(workspace: Workspace, types: list[str], diagnostics: Diagnosti
             diagnostics.add(workspace.display(path), 1, exc.code, f"not read: {exc}", "warning")
             specs[name] = {"fields": [], "constants": {}, "missing": True}
             continue
-        specs[name] = parse_msg(text, name.split("/")[0], workspace.display(path), diagnostics)
-        todo += [base for _n, base, _a in specs[name]["fields"] if base not in BUILTIN]
+        shown = workspace.display(path)
+        specs[name] = parse_msg(text, name.split("/")[0], shown, diagnostics)
+        todo += [(base, (shown, 1)) for _n, base, _a in specs[name]["fields"] if base not in BUILTIN]
     return specs
 
 
