@@ -70,7 +70,11 @@ class Strategies:
             return st.booleans()
         if base in INTS:
             lo, hi = INTS[base]
-            return st.integers(max(lo, low) if low is not None else lo, min(hi, high) if high is not None else hi)
+            lo, hi = max(lo, low) if low is not None else lo, min(hi, high) if high is not None else hi
+            # a quarter of the draws are a boundary: the ends of the range, 0, 1, -1
+            edges = sorted({v for v in (lo, hi, 0, 1, -1) if lo <= v <= hi})
+            ints = st.integers(lo, hi)
+            return st.one_of(ints, ints, ints, st.sampled_from(edges))
         if base in ("float32", "float64"):
             specials = options.get("specials", self.settings.specials) and low is None and high is None
             floats = st.floats(low, high, allow_nan=specials, allow_infinity=specials, width=32 if base == "float32" else 64)
