@@ -357,6 +357,33 @@ def behavior(paths, launches, args, models, rule_paths, config_path, profile, ne
         print_behavior(model, Console(soft_wrap=True))
 
 
+@main.command()
+@_system_options
+@click.option("--nodes", "nodes", multiple=True, metavar="NAME", help="Test these nodes in isolation (repeatable).")
+@click.option("--settings", "settings_path", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="Testgen settings (TOML): fields, parameters, property switches.")
+@click.option("--name", help="Name of the generated files [default: the first launch file's name].")
+@click.option("--output", required=True, type=click.Path(file_okay=False, path_type=Path), help="Folder to write to.")
+def testgen(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, nodes,
+            settings_path, name, output) -> None:
+    """Generate a property-based integration test (Hypothesis, pytest) for the configuration."""
+    from archlog.testgen.command import testgen_command
+
+    analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
+                                      near_miss_threshold, env, quiet=True)
+    testgen_command(analysis, Session(analysis.store, ruleset, config).ctl, list(paths), list(launches),
+                    _arg_pairs(args), list(nodes), settings_path, name, output)
+
+
+@main.command()
+@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+def replay(file) -> None:
+    """Run a replay file written by a failing generated test again (exit 1 when a property fails)."""
+    from archlog.testgen.replay import replay_file
+
+    sys.exit(0 if replay_file(file) else 1)
+
+
 @main.command("test-rules")
 @click.argument("folders", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False, path_type=Path))
 @click.option("--update", is_flag=True, help="Write the .expected files that differ from the current results "

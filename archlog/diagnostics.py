@@ -153,6 +153,11 @@ CODES: dict[str, Code] = {
                             "the budget; what it had read before stays.", "Raise the limit named in [budget] of "
                             "archlog.toml (docs/security.md) if the input is honest."),
     }),
+    **_codes("Generated tests", {
+        "testgen-message": ("warning", "A message type of an input or output has no definition, or a line of its "
+                            ".msg file does not parse; its topic (or field) gets no strategy.",
+                            "Index the package that defines it (pass its folder) or fix the .msg line."),
+    }),
     **_codes("Reports", {
         "unused-suppression": ("warning", "An inline suppression matches no finding.", "Remove it."),
     }),

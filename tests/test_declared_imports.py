@@ -19,6 +19,8 @@ ROOT = Path(__file__).resolve().parent.parent
 # subprocesses: their imports come from Debian's packages (debian-packages.txt), not from PyPI.
 DEBIAN_PYTHON = {
     "archlog/extract/cpp/gencpp_driver.py",
+    "archlog/testgen/debian/bridge.py",
+    "archlog/testgen/debian/launch.py",
     "bench/debian_nodes/feeder.py",
     "tests/support/roslaunch_oracle.py",
     "tests/support/topic_monitor.py",

@@ -7,11 +7,8 @@ is run as a subprocess; the master is read over XML-RPC with the stdlib.
 from __future__ import annotations
 
 import contextlib
-import os
 import re
 import shutil
-import signal
-import socket
 import subprocess
 import tempfile
 import threading
@@ -23,11 +20,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from archlog import observe
+from archlog.testgen import processes
 
 ROSCORE = Path("/usr/bin/roscore")
 ROSLAUNCH = Path("/usr/bin/roslaunch")
 ROSTOPIC = Path("/usr/bin/rostopic")
-SYSTEM_PYTHON = Path("/usr/bin/python3")  # the one Debian's rospy imports under
+SYSTEM_PYTHON = processes.SYSTEM_PYTHON
 MONITOR = Path(__file__).resolve().parent / "topic_monitor.py"
 
 _POLL = 0.2  # seconds between master polls
@@ -197,111 +195,24 @@ def live_system(
         shutil.rmtree(tmp, ignore_errors=True)  # errors already carry the log tail
 
 
-# -- processes ---------------------------------------------------------------
-
-
-def _free_port() -> int:
-    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
+# -- processes (archlog.testgen.processes) ----------------------------------
 
 
 def _ros_env(tmp: Path, master_uri: str, workspace_src: Path) -> dict[str, str]:
-    env = {k: v for k, v in os.environ.items()
-           if k not in ("ROS_IP", "ROS_NAMESPACE", "PYTHONPATH", "PYTHONHOME")}
-    env.update(
-        ROS_MASTER_URI=master_uri,
-        ROS_HOSTNAME="127.0.0.1",
-        ROS_HOME=str(tmp),  # also the marker _kill_leftovers looks for
-        ROS_LOG_DIR=str(tmp / "log"),
-        ROS_PACKAGE_PATH=str(workspace_src),
-        PATH="/usr/bin:" + env.get("PATH", ""),  # `#!/usr/bin/env python3` must find Debian's
-        PYTHONUNBUFFERED="1",
-    )
-    return env
-
-
-def _spawn(cmd: list[str], env: dict[str, str], log: Path) -> subprocess.Popen:
-    with open(log, "wb") as out:
-        return subprocess.Popen(cmd, env=env, stdin=subprocess.DEVNULL, stdout=out,
-                                stderr=subprocess.STDOUT, start_new_session=True)
-
-
-def _stop(proc: subprocess.Popen | None, grace: float) -> None:
-    """SIGINT the process group, SIGKILL it after ``grace`` seconds, reap."""
-    if proc is None:
-        return
-    for sig, wait in ((signal.SIGINT, grace), (signal.SIGKILL, 1.0)):
-        if proc.poll() is not None:
-            break
-        try:
-            os.killpg(proc.pid, sig)
-        except ProcessLookupError:
-            break
-        with contextlib.suppress(subprocess.TimeoutExpired):
-            proc.wait(wait)
-    with contextlib.suppress(ProcessLookupError):  # the leader may be gone while group members linger
-        os.killpg(proc.pid, signal.SIGKILL)
-
-
-def _stop_together(procs: list[subprocess.Popen | None], grace: float) -> None:
-    """`_stop` for several processes at once: SIGINT every group, one shared grace, SIGKILL the rest."""
-    alive = [p for p in procs if p is not None and p.poll() is None]
-    for proc in alive:
-        with contextlib.suppress(ProcessLookupError):
-            os.killpg(proc.pid, signal.SIGINT)
-    end = time.monotonic() + grace
-    while any(p.poll() is None for p in alive) and time.monotonic() < end:
-        time.sleep(0.05)
-    for proc in procs:
-        _stop(proc, 0.0)
+    return processes.ros_env(tmp, master_uri, str(workspace_src))
 
 
 def _kill_leftovers(tmp: Path) -> None:
-    """SIGKILL any process still carrying our ROS_HOME.
-
-    roslaunch starts every node (and roscore its master and rosout) in a
-    session of its own, so killpg on the launcher does not reach them.
-    """
-    marker = f"ROS_HOME={tmp}".encode()
-    pids = [pid for pid in _pids_with_env(marker) if pid != os.getpid()]
-    for pid in pids:
-        with contextlib.suppress(ProcessLookupError):
-            os.kill(pid, signal.SIGKILL)
-    end = time.monotonic() + 2.0
-    while pids and time.monotonic() < end:
-        pids = [p for p in pids if _alive(p)]
-        time.sleep(0.05)
+    processes.kill_leftovers(f"ROS_HOME={tmp}".encode())
 
 
-def _pids_with_env(entry: bytes) -> list[int]:
-    """Pids of live processes whose environment contains ``entry`` (KEY=value)."""
-    found = []
-    for d in Path("/proc").iterdir():
-        if not d.name.isdigit():
-            continue
-        try:
-            if entry in (d / "environ").read_bytes().split(b"\0"):
-                found.append(int(d.name))
-        except OSError:
-            continue
-    return found
+_free_port, _stop, _stop_together, _tail = processes.free_port, processes.stop, processes.stop_together, processes.tail
+_pids_with_env, _alive = processes.pids_with_env, processes.alive
 
 
-def _alive(pid: int) -> bool:
-    try:
-        with open(f"/proc/{pid}/stat", "rb") as f:
-            return f.read().rsplit(b")", 1)[1].split()[0] != b"Z"
-    except (OSError, IndexError):
-        return False
-
-
-def _tail(log: Path, lines: int = 40) -> str:
-    try:
-        text = log.read_text(errors="replace")
-    except OSError:
-        return "(no log)"
-    return "\n".join(_ANSI.sub("", text).splitlines()[-lines:])
+def _spawn(cmd: list[str], env: dict[str, str], log: Path) -> subprocess.Popen:
+    log.unlink(missing_ok=True)
+    return processes.spawn(cmd, env, log)
 
 
 # -- master ------------------------------------------------------------------

@@ -1,0 +1,108 @@
+"""What a generated test needs to know of the recovered configuration, as plain JSON-able data:
+the nodes under test, their open inputs and outputs with types, the recovered interface, the
+periodic outputs and the inputs each output requires, the parameters the nodes read, and the
+message definitions of the inputs' types (outputs are recorded by the bridge with the installed
+message classes)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import clingo
+
+from archlog.analysis import Analysis, resolve_launch
+from archlog.observe import Architecture, from_facts
+from archlog.reports.behavior import behavior_model
+from archlog.testgen.msgspec import message_specs
+from archlog.values import Unknown
+
+INFRA_TOPICS = frozenset({"/rosout", "/rosout_agg", "/clock"})
+
+
+class ModelError(ValueError):
+    """The configuration cannot be tested as asked (an unknown node name, nothing to feed or watch)."""
+
+
+def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launches: list[str],
+               args: dict[str, str], nodes: list[str] | None = None) -> dict[str, Any]:
+    """The model of the configuration, or of `nodes` in isolation (then every input of theirs is open)."""
+    store = analysis.store
+    everyone = sorted(str(r[0]) for r in store.rows("node"))
+    chosen = everyone if not nodes else [n if n.startswith("/") else f"/{n}" for n in nodes]
+    unknown = sorted(set(chosen) - set(everyone))
+    if unknown:
+        raise ModelError(f"no node {', '.join(unknown)} in the configuration (nodes: {', '.join(everyone)})")
+    ports = {rel: [(str(p), str(n), t, ty) for p, n, t, ty in store.rows(rel)
+                   if not isinstance(t, Unknown) and t not in INFRA_TOPICS]
+             for rel in ("publisher", "subscriber")}
+    published = {t for _p, _n, t, _ty in ports["publisher"]}
+    subscribed = {t for _p, _n, t, _ty in ports["subscriber"]}
+    inputs = {str(t): str(ty) for _p, n, t, ty in ports["subscriber"]
+              if n in chosen and (nodes or t not in published) and isinstance(ty, str)}
+    outputs = {str(t): str(ty) for _p, n, t, ty in ports["publisher"]
+               if n in chosen and (nodes or t not in subscribed) and isinstance(ty, str)}
+    where: dict[str, tuple[str, int]] = {}  # input type -> file and line of a subscriber using it
+    for pid, n, t, ty in ports["subscriber"]:
+        if t in inputs and n in chosen:
+            where.setdefault(str(ty), (store.location(pid) or ("", 0, 0))[:2])
+    whole = from_facts(store)
+    interface = Architecture(frozenset(chosen), *(frozenset(r for r in getattr(whole, kind) if r[0] in chosen)
+                                                  for kind in ("publishers", "subscribers", "services")))
+    periodic, requires = _behavior(analysis, ctl, chosen, outputs, inputs)
+    params = {str(name): (None if isinstance(default, Unknown) else str(default))
+              for _p, n, name, default in store.rows("param_read") if str(n) in chosen and not isinstance(name, Unknown)}
+    return {
+        "paths": [str(p.resolve()) for p in paths],
+        "launch": [str(resolve_launch(spec, analysis.workspace).resolve()) for spec in launches],
+        "args": dict(args),
+        "nodes": chosen,
+        "isolated": bool(nodes),
+        "inputs": dict(sorted(inputs.items())),
+        "outputs": dict(sorted(outputs.items())),
+        "interface": interface.to_json(),
+        "periodic": periodic,
+        "requires": requires,
+        "params": dict(sorted(params.items())),
+        "specs": message_specs(analysis.workspace, where, analysis.diagnostics),
+    }
+
+
+def _behavior(analysis: Analysis, ctl: clingo.Control, chosen: list[str], outputs: dict[str, str],
+              inputs: dict[str, str]) -> tuple[dict[str, float], dict[str, list[str]]]:
+    """Watched outputs published only by timers or loops of known period, with no guard and no
+    required input (topic -> the slowest period); and the open inputs each watched output requires."""
+    periodic: dict[str, float] = {}
+    requires: dict[str, list[str]] = {}
+    for node in behavior_model(analysis.store, ctl):
+        if node["node"] not in chosen:
+            continue
+        for output in node["outputs"]:
+            topic = output["name"]
+            if topic not in outputs:
+                continue
+            required = [t for t in output["requires"] if t in inputs]
+            if required:
+                requires[topic] = required
+            periods = [_trigger_period(t) for call in output["calls"] for t in call["triggers"]]
+            if periods and None not in periods and not output["requires"] \
+                    and not any(call["guards"] for call in output["calls"]):
+                periodic[topic] = max(p for p in periods if p is not None)
+    return periodic, requires
+
+
+def _trigger_period(trigger: dict) -> float | None:
+    """A loop's period, or a timer's (its port is named "PERIOD s" in the behavior model)."""
+    if trigger["kind"] == "loop":
+        return _seconds(trigger.get("period"))
+    if trigger["kind"] == "timer":
+        return _seconds(str(trigger.get("by", "")).removesuffix(" s"))
+    return None
+
+
+def _seconds(value: object) -> float | None:
+    try:
+        seconds = float(str(value))
+    except ValueError:
+        return None
+    return seconds if seconds > 0 else None

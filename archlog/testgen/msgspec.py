@@ -1,0 +1,91 @@
+"""ROS 1 message definitions (.msg) as plain data for strategies: fields with their base type and
+array shape, and constants. Definitions come from archlog's message index (the workspace's
+packages and the installed share dirs); a line that does not parse is a diagnostic with its file
+and line, and its field is left out."""
+
+from __future__ import annotations
+
+import re
+
+from archlog import sandbox
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.workspace.index import Workspace
+from archlog.extract.workspace.messages import message_files
+
+BUILTIN = ("bool", "byte", "char", "int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uint64",
+           "float32", "float64", "string", "time", "duration")
+_FIELD = re.compile(r"^(?P<type>[A-Za-z][\w/]*)(?P<array>\[(?P<size>\d*)\])?\s+(?P<name>[A-Za-z]\w*)"
+                    r"(?:\s*=\s*(?P<value>.*))?$")
+
+# type -> {"fields": [[name, base type, array size (None: scalar, -1: variable)]],
+#          "constants": {name: [base type, value]}}
+Specs = dict[str, dict]
+
+
+def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagnostics: DiagnosticSink) -> Specs:
+    """The definitions of `types` (each with the file and line of a port using it) and of every message
+    type nested in them; a type without a definition is a diagnostic there (its topic gets no strategy)."""
+    files = message_files(workspace)
+    specs: Specs = {}
+    todo = list(types.items())
+    while todo:
+        name, where = todo.pop()
+        if name in specs or name in BUILTIN:
+            continue
+        kind_path = files.get(name)
+        if kind_path is None or kind_path[0] != "msg":
+            diagnostics.add(*where, "testgen-message", f"no definition found for message type {name}")
+            specs[name] = {"fields": [], "constants": {}, "missing": True}
+            continue
+        path = kind_path[1]
+        try:
+            text = sandbox.read_text(path, "message")
+        except sandbox.Refused as exc:
+            diagnostics.add(workspace.display(path), 1, exc.code, f"not read: {exc}", "warning")
+            specs[name] = {"fields": [], "constants": {}, "missing": True}
+            continue
+        shown = workspace.display(path)
+        specs[name] = parse_msg(text, name.split("/")[0], shown, diagnostics)
+        todo += [(base, (shown, 1)) for _n, base, _a in specs[name]["fields"] if base not in BUILTIN]
+    return specs
+
+
+def parse_msg(text: str, package: str, shown: str, diagnostics: DiagnosticSink) -> dict:
+    """One .msg file: fields (nested types made `pkg/Name`; `Header` is std_msgs/Header) and constants."""
+    fields: list[list] = []
+    constants: dict[str, list] = {}
+    for number, raw in enumerate(text.splitlines(), 1):
+        line = raw.split("#", 1)[0].strip() if "=" not in raw.split("#", 1)[0] else raw.strip()
+        if not line:
+            continue
+        found = _FIELD.match(line)
+        if not found:
+            diagnostics.add(shown, number, "testgen-message", f"not a field or constant: {line!r}", "warning")
+            continue
+        base = _qualified(found["type"], package)
+        if found["value"] is not None:
+            value = found["value"] if base == "string" else found["value"].split("#", 1)[0].strip()
+            constants[found["name"]] = [base, _constant(base, value)]
+            continue
+        size = None if not found["array"] else int(found["size"]) if found["size"] else -1
+        fields.append([found["name"], base, size])
+    return {"fields": fields, "constants": constants}
+
+
+def _qualified(name: str, package: str) -> str:
+    if name in BUILTIN:
+        return name
+    if name == "Header":
+        return "std_msgs/Header"
+    return name if "/" in name else f"{package}/{name}"
+
+
+def _constant(base: str, value: str) -> object:
+    if base == "string":
+        return value
+    if base == "bool":
+        return value.lower() in ("true", "1")
+    try:
+        return float(value) if base.startswith("float") else int(value, 0)
+    except ValueError:
+        return value

@@ -1,0 +1,532 @@
+"""What a generated test runs on: the configuration under test on a private ROS 1 master, fed and
+watched through a bridge, and the Hypothesis state machine the generated module extends.
+
+A `Session` owns one master (its own port on 127.0.0.1, its own process group, ROS_HOME in a
+temporary folder) and one bridge node for a whole test run; every example launches the nodes
+under test with Debian's roslaunch (the chosen nodes only, parameters drawn for the example set
+first) and stops them afterwards, so no example sees another's state. With `reuse` the nodes stay
+up across examples (for nodes declared stateless) and are relaunched only when one died. ROS runs
+only under /usr/bin/python3: the launcher and the bridge are scripts in `debian/`.
+"""
+
+from __future__ import annotations
+
+import atexit
+import contextlib
+import importlib.util
+import json
+import math
+import os
+import queue
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import xmlrpc.client
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from hypothesis import note
+from hypothesis import strategies as st
+from hypothesis.errors import InvalidArgument
+from hypothesis.stateful import RuleBasedStateMachine, initialize, invariant, precondition, rule
+
+from archlog import observe
+from archlog.testgen import processes
+from archlog.testgen.settings import Settings
+from archlog.testgen.strategies import Strategies, fill_counters, stale
+
+with contextlib.suppress(ImportError, ValueError):  # each example runs real processes: shrinking is bounded in time
+    from hypothesis.internal.conjecture import engine as _engine
+
+    _engine.MAX_SHRINKING_SECONDS = int(os.environ.get("ARCHLOG_TESTGEN_SHRINK_SECONDS", "300"))
+
+DEBIAN = Path(__file__).resolve().parent / "debian"
+_POLL = 0.05
+STEP_SETTLE = 0.1  # seconds after a step's messages before the properties are checked
+
+
+class StartError(RuntimeError):
+    """The configuration could not be started (roscore, roslaunch or the bridge failed); the message
+    carries the log tail."""
+
+
+@dataclass
+class Event:
+    """A message received on a watched output: its topic, receive time (wall clock) and content."""
+
+    topic: str
+    time: float
+    msg: Any
+
+
+@dataclass
+class Session:
+    """One private master and bridge, and the nodes under test launched on it."""
+
+    model: dict[str, Any]
+    tmp: Path = field(default_factory=lambda: Path(tempfile.mkdtemp(prefix="archlog-testgen-")))
+    core: subprocess.Popen | None = None
+    bridge: subprocess.Popen | None = None
+    launcher: subprocess.Popen | None = None
+    events: queue.Queue = field(default_factory=queue.Queue)
+    launched_params: dict[str, Any] | None = None
+    launches: int = 0  # starts asked of the launcher
+
+    def __post_init__(self) -> None:
+        self.uri = f"http://127.0.0.1:{processes.free_port()}"
+        package_path = ":".join(self.model["paths"])
+        self.env = processes.ros_env(self.tmp, self.uri, package_path)
+        self.master = observe.master(self.uri)
+
+    # -- master and bridge, once per run -------------------------------------------------
+
+    def start(self, timeout: float = 30.0) -> None:
+        deadline = time.monotonic() + timeout
+        self.core = processes.spawn([str(processes.ROSCORE), "-p", self.uri.rsplit(":", 1)[1]], self.env,
+                                    self.tmp / "roscore.log")
+        while True:
+            try:
+                observe.call(self.master.getSystemState)
+                break
+            except (OSError, xmlrpc.client.Error, RuntimeError):
+                if self.core.poll() is not None or time.monotonic() > deadline:
+                    raise StartError(f"roscore did not start:\n{processes.tail(self.tmp / 'roscore.log')}") from None
+                time.sleep(0.1)
+        spec = self.tmp / "bridge.json"
+        spec.write_text(json.dumps({"inputs": self.model["inputs"], "outputs": self.model["outputs"]}))
+        with open(self.tmp / "bridge.log", "ab") as log:
+            self.bridge = subprocess.Popen([str(processes.SYSTEM_PYTHON), str(DEBIAN / "bridge.py"), str(spec)],
+                                           env=self.env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=log,
+                                           start_new_session=True)
+        threading.Thread(target=self._read_bridge, daemon=True).start()
+
+    def _read_bridge(self) -> None:
+        assert self.bridge is not None and self.bridge.stdout is not None
+        for line in self.bridge.stdout:
+            self.events.put(json.loads(line))
+
+    def send(self, command: dict[str, Any]) -> None:
+        assert self.bridge is not None and self.bridge.stdin is not None
+        if self.bridge.poll() is not None:
+            raise StartError(f"the bridge exited:\n{processes.tail(self.tmp / 'bridge.log')}")
+        self.bridge.stdin.write((json.dumps(command) + "\n").encode())
+        self.bridge.stdin.flush()
+
+    def close(self) -> None:
+        atexit.unregister(self.close)
+        if os.environ.get("ARCHLOG_TESTGEN_STATS"):  # for benchmarks: how many examples ran
+            Path(os.environ["ARCHLOG_TESTGEN_STATS"]).write_text(json.dumps({"launches": self.launches}))
+        with contextlib.suppress(OSError, xmlrpc.client.Error):
+            self.stop_nodes()
+        processes.stop_together([self.launcher, self.bridge, self.core], 2.0)
+        processes.kill_leftovers(f"ROS_HOME={self.tmp}".encode())
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+    # -- the nodes under test, per example ----------------------------------------------------
+
+    def launch(self, params: dict[str, Any], timeout: float = 30.0) -> None:
+        """Start the nodes under test with `params` set; wait until they are registered and the bridge
+        is connected to them."""
+        self.stop_nodes()
+        if self.launcher is None or self.launcher.poll() is not None:
+            self._start_launcher()
+        assert self.launcher is not None and self.launcher.stdin is not None
+        self.launches += 1
+        (self.tmp / "launch.json.done").unlink(missing_ok=True)
+        self.launcher.stdin.write((json.dumps({"params": params}) + "\n").encode())
+        self.launcher.stdin.flush()
+        self.launched_params = params
+        deadline = time.monotonic() + timeout
+        while (pids := self.launched()) is None or not all(self.node_alive(n) for n in self.model["nodes"]):
+            if pids and not all(map(processes.alive, pids)):
+                break  # a node died starting: the properties say so
+            if self.launcher.poll() is not None or time.monotonic() > deadline:
+                raise StartError(f"the nodes under test did not come up:\n{processes.tail(self.log)}")
+            time.sleep(_POLL)
+        if pids and not all(map(processes.alive, pids)):
+            return
+        self.send({"op": "wait", "timeout": 5.0})
+        deadline = time.monotonic() + 15.0
+        while self.events.get(timeout=max(deadline - time.monotonic(), 0.1))["ev"] != "ready":
+            pass
+
+    def _start_launcher(self) -> None:
+        spec = self.tmp / "launch.json"
+        spec.write_text(json.dumps({"files": self.model["launch"], "args": self.model["args"],
+                                    "nodes": self.model["nodes"] if self.model["isolated"] else None}))
+        self.launcher = processes.spawn([str(processes.SYSTEM_PYTHON), str(DEBIAN / "launch.py"), str(spec)],
+                                        self.env, self.log, stdin=subprocess.PIPE)
+        self.launches = 0
+
+    def launched(self) -> list[int] | None:
+        """The processes of the last start, once the launcher reported it done."""
+        try:
+            number, *pids = map(int, (self.tmp / "launch.json.done").read_text().split())
+        except (OSError, ValueError):
+            return None
+        return pids if number == self.launches else None
+
+    @property
+    def log(self) -> Path:
+        return self.tmp / "launch.log"
+
+    def stop_nodes(self) -> None:
+        """Kill the nodes under test (no clean shutdown: the next example starts afresh)."""
+        for node in self.model["nodes"]:
+            uri = self._node_uri(node)
+            pid = self._pid(uri) if uri else None
+            if pid:
+                with contextlib.suppress(ProcessLookupError, PermissionError):
+                    os.kill(pid, signal.SIGKILL)
+
+    def node_alive(self, node: str) -> bool:
+        """The node is registered on the master and its process answers there."""
+        uri = self._node_uri(node)
+        return uri is not None and self._pid(uri) is not None
+
+    def _node_uri(self, node: str) -> str | None:
+        answer: Any = self.master.lookupNode(observe.CALLER_ID, node)
+        return answer[2] if answer[0] == 1 else None
+
+    def _pid(self, uri: str) -> int | None:
+        try:
+            answer: Any = observe.master(uri).getPid(observe.CALLER_ID)
+        except (OSError, xmlrpc.client.Error):
+            return None
+        return answer[2] if answer[0] == 1 else None
+
+    def graph(self) -> observe.Architecture:
+        """The live graph of the nodes under test."""
+        live = observe.read_master(self.master)
+        nodes = set(self.model["nodes"])
+        return observe.Architecture(live.nodes & nodes, *(frozenset(r for r in getattr(live, kind) if r[0] in nodes)
+                                                          for kind in ("publishers", "subscribers", "services")))
+
+
+_SESSIONS: dict[str, Session] = {}
+
+
+def shared_session(model: dict[str, Any]) -> Session:
+    """The session of this model for the whole run (started on first use, closed at exit)."""
+    key = json.dumps(model, sort_keys=True)
+    if key not in _SESSIONS:
+        session = Session(model)
+        _SESSIONS[key] = session
+        atexit.register(session.close)
+        session.start()
+    return _SESSIONS[key]
+
+
+def close_sessions() -> None:
+    """Stop every session of this process (a test module's fixture calls it)."""
+    while _SESSIONS:
+        _SESSIONS.popitem()[1].close()
+
+
+class Properties:
+    """The user's properties: hooks called with every message received on a watched output
+    (`on_<topic>`, the topic's name with non-word characters as `_`) and after every step
+    (`invariant`). `history` holds every event received so far in the example, `sent` every
+    message sent; assert in the hooks."""
+
+    def __init__(self) -> None:
+        self.history: list[Event] = []
+        self.sent: list[dict[str, Any]] = []
+
+    def invariant(self) -> None:
+        """Called after every step."""
+
+
+def load_properties(path: Path) -> type[Properties]:
+    """The `Properties` class of the user's file (the built-in empty one if the file is gone)."""
+    if not path.is_file():
+        return Properties
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.Properties
+
+
+def hook_name(topic: str) -> str:
+    return "on_" + "".join(c if c.isalnum() else "_" for c in topic.strip("/"))
+
+
+class ArchitectureMachine(RuleBasedStateMachine):
+    """The state machine a generated module extends with one `publish_<topic>` rule per open input.
+
+    Steps: publish a drawn message; the temporal mutations (drop one message of a topic's
+    sequence, resend the last one, send two in swapped order, a burst, a stale stamp); spin. After
+    every step the built-in properties and the user's are checked; the last step is followed by
+    `settle` seconds and a final check. A failure is raised at the end of the example (so that what
+    Hypothesis draws never depends on the system's timing); the steps after it do nothing. Every
+    message actually sent is kept in `actions`, written as a replay file when a property fails."""
+
+    model: dict[str, Any] = {}
+    settings: Settings = Settings()
+    properties_class: type[Properties] = Properties
+    replay_path: Path | None = None
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.session = shared_session(self.model)
+        self.strategies = Strategies(self.model["specs"], self.settings)
+        self.properties = self.properties_class()
+        self.actions: list[dict[str, Any]] = []
+        self.counters: dict[str, int] = {}
+        self.last: dict[str, dict[str, Any]] = {}
+        self.first_sent: dict[str, float] = {}
+        self.started = 0.0
+        self.failure: str | None = None
+        self.periodic: dict[str, float] = {}  # the periodic outputs seen at their period after launch
+
+    # -- set-up -------------------------------------------------------------------------
+
+    @initialize(data=st.data())
+    def launch(self, data: st.DataObject) -> None:
+        params = {name: data.draw(param_strategy(options, self.model["params"].get(name)), label=name)
+                  for name, options in sorted(self.settings.params.items())}
+        self.actions.append({"op": "params", "params": params})
+        run(self.session, params, self.settings.reuse)
+        self.started = time.time()
+        if self.settings.properties["periodic"]:
+            try:
+                self.periodic = confirm_periods(self)
+            except AssertionError as exc:
+                self.failure = str(exc)
+
+    # -- steps --------------------------------------------------------------------------
+
+    def publish(self, topic: str, msg: Any) -> None:
+        """Send `msg` on `topic` as the next of the topic's sequence."""
+        self._send(topic, fill_counters(msg, self._next(topic)))
+
+    @precondition(lambda self: bool(self.model["inputs"]))
+    @rule(data=st.data())
+    def drop(self, data: st.DataObject) -> None:
+        """Lose the next message of a topic: the topic's sequence skips one (what the lost message held
+        cannot matter, so it is not drawn)."""
+        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        seq = self._next(topic)
+        if self.failure is None:
+            self.actions.append({"op": "drop", "topic": topic, "seq": seq})
+
+    @precondition(lambda self: bool(self.last))
+    @rule(data=st.data())
+    def resend(self, data: st.DataObject) -> None:
+        """Send the last message of a topic again, unchanged (a duplicate)."""
+        topic = data.draw(st.sampled_from(sorted(self.last)), label="topic")
+        self._send(topic, self.last[topic])
+
+    @precondition(lambda self: bool(self.model["inputs"]))
+    @rule(data=st.data())
+    def reorder(self, data: st.DataObject) -> None:
+        """Draw the next two messages of a topic and send them in swapped order."""
+        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        strategy = self.strategies.message(self.model["inputs"][topic])
+        first, second = (fill_counters(data.draw(strategy, label=n), self._next(topic)) for n in ("first", "second"))
+        self._send(topic, second, settle=False)
+        self._send(topic, first)
+
+    @precondition(lambda self: bool(self.model["inputs"]))
+    @rule(data=st.data(), count=st.integers(2, 3))
+    def burst(self, data: st.DataObject, count: int) -> None:
+        """Send `count` messages of a topic back to back."""
+        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        msg = data.draw(self.strategies.message(self.model["inputs"][topic]), label="msg")
+        for n in range(count):
+            self._send(topic, fill_counters(msg, self._next(topic)), settle=n == count - 1)
+
+    @precondition(lambda self: bool(self.model["inputs"]))
+    @rule(data=st.data(), age=st.floats(1.0, 3600.0))
+    def send_stale(self, data: st.DataObject, age: float) -> None:
+        """Send the next message of a topic with its Header stamps `age` seconds in the past."""
+        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        msg = data.draw(self.strategies.message(self.model["inputs"][topic]), label="msg")
+        self._send(topic, stale(fill_counters(msg, self._next(topic)), age))
+
+    @rule(seconds=st.floats(0.05, 1.0))
+    def spin(self, seconds: float) -> None:
+        """Let the system run (a delay between messages)."""
+        if self.failure is None:
+            self.actions.append({"op": "spin", "seconds": seconds})
+            time.sleep(seconds)
+
+    @invariant()
+    def properties_hold(self) -> None:
+        """Check after every step; a failure is kept and raised at the end of the example, so that the
+        steps drawn do not depend on when the system's reaction arrives."""
+        if self.started and self.failure is None:
+            self._check(final=False)
+
+    def teardown(self) -> None:
+        try:
+            if self.started and self.failure is None:  # long enough for a periodic output's silence to show
+                time.sleep(max([self.settings.settle, *(_allowed(self, p) for p in self.periodic.values())]))
+                self._check(final=True)
+            if self.failure is not None and sys.exc_info()[0] is None:  # not while a step's exception unwinds
+                self._report(self.failure)
+                raise AssertionError(self.failure)
+        finally:
+            if not self.settings.reuse:
+                self.session.stop_nodes()
+
+    # -- sending and checking -------------------------------------------------------------
+
+    def _next(self, topic: str) -> int:
+        self.counters[topic] = self.counters.get(topic, 0) + 1
+        return self.counters[topic]
+
+    def _send(self, topic: str, msg: Any, settle: bool = True) -> None:
+        self.last[topic] = msg  # even after a failure: what may be drawn next must not depend on timing
+        if self.failure is not None:  # the example has failed: the steps left are drawn but do nothing
+            return
+        self.first_sent.setdefault(topic, time.time())  # before: the answer may come back at once
+        self.session.send({"op": "publish", "topic": topic, "msg": msg})
+        self.actions.append({"op": "publish", "topic": topic, "msg": msg})
+        self.properties.sent.append({"topic": topic, "msg": msg})
+        if settle:
+            time.sleep(STEP_SETTLE)
+
+    def _check(self, final: bool) -> None:
+        try:
+            check_properties(self, final)
+        except AssertionError as exc:
+            self.failure = f"{exc} (after step {len(self.actions)})"
+
+    def _report(self, reason: str) -> None:
+        lines = [f"property failed: {reason}", "messages sent (after mutation):"]
+        lines += [f"  {json.dumps(a)}" for a in self.actions]
+        lines.append(f"nodes' output (tail of {self.session.log}):\n{processes.tail(self.session.log, 15)}")
+        try:
+            note("\n".join(lines))
+        except InvalidArgument:  # outside a Hypothesis test: a replay
+            print("\n".join(lines))
+        if self.replay_path is not None:
+            self.replay_path.parent.mkdir(parents=True, exist_ok=True)
+            self.replay_path.write_text(json.dumps({"model": self.model, "settings": self.settings.to_dict(),
+                                                    "actions": self.actions, "reason": reason}, indent=1) + "\n")
+
+
+def run(session: Session, params: dict[str, Any], reuse: bool) -> None:
+    """Launch the nodes under test (in `reuse` mode only if they are down or their parameters changed)."""
+    up = reuse and session.launches > 0 and session.launched_params == params \
+        and all(session.node_alive(n) for n in session.model["nodes"])
+    if not up:
+        session.launch(params)
+    _drain(session)
+
+
+def _drain(session: Session) -> list[dict[str, Any]]:
+    drained = []
+    while True:
+        try:
+            drained.append(session.events.get_nowait())
+        except queue.Empty:
+            return drained
+
+
+def param_strategy(options: dict[str, Any], default: str | None) -> st.SearchStrategy:
+    """Values for a parameter: the listed ones, or a number between min and max typed like its default."""
+    if "values" in options:
+        return st.sampled_from(options["values"])
+    integer = default is not None and default.lstrip("-").isdigit()
+    low, high = options.get("min"), options.get("max")
+    return st.integers(low, high) if integer else st.floats(low, high, allow_nan=False)
+
+
+def check_properties(machine: ArchitectureMachine, final: bool) -> None:
+    """The built-in properties switched on in the settings, then the user's; AssertionError names the
+    first that fails."""
+    session, model, settings = machine.session, machine.model, machine.settings
+    _record(machine)
+    if settings.properties["alive"]:
+        dead = [n for n in model["nodes"] if not session.node_alive(n)]
+        assert not dead, f"node(s) died: {', '.join(dead)}"
+    now = time.time()
+    for topic, period in machine.periodic.items():
+        _check_period(machine, topic, period, now)
+    if settings.properties["requires"] and final:
+        for topic, inputs in model["requires"].items():
+            sent = [machine.first_sent[i] for i in inputs if i in machine.first_sent]
+            if len(sent) < len(inputs):
+                continue
+            bound = settings.response_bound + model["periodic"].get(topic, 0.0)
+            after = [e for e in machine.properties.history if e.topic == topic and e.time >= max(sent)]
+            if now - max(sent) >= bound:
+                assert after, f"{topic} requires {', '.join(inputs)}, which was published, but nothing came " \
+                              f"on {topic} within {bound:.1f} s"
+    if settings.properties["interface"] and final:
+        want = observe.Architecture.from_json(model["interface"])
+        differences = {kind: row for kind, row in observe.compare(want, session.graph()).items()
+                       if row["only_recovered"] or row["only_observed"]}
+        assert not differences, "the live interface differs from the recovered one: " + "; ".join(
+            f"{kind}: only recovered {row['only_recovered']}, only observed {row['only_observed']}"
+            for kind, row in differences.items())
+    machine.properties.invariant()
+
+
+def _record(machine: ArchitectureMachine) -> None:
+    """Add the messages received since the last call to the history, checking each as it comes."""
+    for event in _drain(machine.session):
+        if event["ev"] == "error":
+            raise AssertionError(f"the bridge could not publish on {event['topic']}: {event['error']}")
+        if event["ev"] != "msg" or event["t"] < machine.started:
+            continue
+        received = Event(event["topic"], event["t"], event["msg"])
+        machine.properties.history.append(received)
+        _check_requires(machine, received)
+        hook: Callable[[Event], None] | None = getattr(machine.properties, hook_name(received.topic), None)
+        if hook is not None:
+            hook(received)
+
+
+def _check_requires(machine: ArchitectureMachine, event: Event) -> None:
+    """An output that requires an input must be silent until the input was published."""
+    if not machine.settings.properties["requires"]:
+        return
+    for required in machine.model["requires"].get(event.topic, []):
+        sent = machine.first_sent.get(required)
+        assert sent is not None and sent <= event.time, \
+            f"{event.topic} was published before its required input {required} ever was"
+
+
+def confirm_periods(machine: ArchitectureMachine) -> dict[str, float]:
+    """The recovered periodic outputs that show their period before any input is sent (three messages
+    in a row, each within the period and its tolerance); only these are checked, so that a publication
+    the extraction thought unconditional (a guard it missed) cannot fail falsely. Waits at most three
+    periods and 0.3 s."""
+    wanted = machine.model["periodic"]
+    if not wanted:
+        return {}
+    end = time.time() + 3 * max(wanted.values()) + 0.3
+    confirmed: dict[str, float] = {}
+    while time.time() < end and len(confirmed) < len(wanted):
+        time.sleep(_POLL)
+        _record(machine)
+        for topic, period in wanted.items():
+            times = [e.time for e in machine.properties.history if e.topic == topic]
+            if len(times) >= 3 and max(b - a for a, b in zip(times[-3:], times[-2:])) <= _allowed(machine, period):
+                confirmed[topic] = period
+    return confirmed
+
+
+def _allowed(machine: ArchitectureMachine, period: float) -> float:
+    """The longest silence allowed on an output of this period: the tolerance, and a quarter second
+    for scheduling on a loaded machine."""
+    return period * (1 + machine.settings.period_tolerance) + 0.25
+
+
+def _check_period(machine: ArchitectureMachine, topic: str, period: float, now: float) -> None:
+    """A confirmed periodic output is never silent for longer than its period and tolerance."""
+    times = [e.time for e in machine.properties.history if e.topic == topic] + [now]
+    worst = max(b - a for a, b in zip(times, times[1:]))
+    allowed = _allowed(machine, period)
+    assert worst <= allowed or math.isclose(worst, allowed), \
+        f"{topic} is recovered as published every {period} s, was, then was silent for {worst:.2f} s"

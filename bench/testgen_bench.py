@@ -1,0 +1,80 @@
+"""Generated property-based tests on the corpus/testgen systems (issue 20): examples per second on
+each fixed twin, and for each planted defect the median over seeds of the time and the number of
+examples (launches of the nodes under test, shrinking included) until the failure is reported.
+
+    python bench/testgen_bench.py [--seeds 5] [--examples 30] [--shrink-seconds 60] [SYSTEM...]
+    python bench/testgen_bench.py --debian N [--debsrc /work/debsrc]
+
+Needs Debian's ROS 1 (roslaunch, rospy) and g++. Prints a Markdown table. With --debian, runs the
+generated test of Debian's robot_state_publisher and joint_state_publisher (their source packages
+in --debsrc, the launch files of bench/debian_nodes) for N examples each: a failure there is a
+false failure of the generator.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tests"))
+
+from support.testgen_corpus import prepare, run_generated, systems  # noqa: E402
+
+DEBIAN = {"robot_state_publisher": "ros-robot-state-publisher-*", "joint_state_publisher": "ros-joint-state-publisher-*"}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("names", nargs="*", metavar="SYSTEM", help="corpus/testgen systems (default: all)")
+    parser.add_argument("--seeds", type=int, default=5)
+    parser.add_argument("--examples", type=int, default=30, help="examples per run (fixed twins, and the search "
+                        "budget on the buggy systems)")
+    parser.add_argument("--shrink-seconds", type=int, default=60)
+    parser.add_argument("--debian", type=int, metavar="N", help="examples of each Debian node instead")
+    parser.add_argument("--debsrc", type=Path, default=Path("/work/debsrc"))
+    options = parser.parse_args()
+    if options.debian:
+        debian(options.debian, options.debsrc)
+        return
+    chosen = [s for s in systems() if not options.names or s.name in options.names]
+    print("| system | fixed twin: examples/s | defect found (seeds) | median s to report | median examples "
+          "| max messages after shrinking |")
+    print("|---|---|---|---|---|---|")
+    for system in chosen:
+        with tempfile.TemporaryDirectory() as tmp:
+            out, _case = prepare(system / "clean", Path(tmp) / "clean")
+            clean = run_generated(out, options.examples, seed=0)
+            rate = f"{clean.examples / clean.seconds:.2f}" + ("" if clean.passed else " (FAILED)")
+            out, _case = prepare(system / "buggy", Path(tmp) / "buggy")
+            runs = [run_generated(out, options.examples, seed, options.shrink_seconds) for seed in range(options.seeds)]
+        found = [r for r in runs if not r.passed and r.replay is not None]
+        seconds = statistics.median(r.seconds for r in found) if found else float("nan")
+        examples = statistics.median(r.examples for r in found) if found else float("nan")
+        worst = max((r.messages() for r in found), default=0)
+        print(f"| {system.name} | {rate} | {len(found)}/{len(runs)} | {seconds:.1f} | {examples:.0f} | {worst} |",
+              flush=True)
+
+
+def debian(examples: int, debsrc: Path) -> None:
+    print("| node | examples | passed | examples/s |")
+    print("|---|---|---|---|")
+    for node, source in DEBIAN.items():
+        with tempfile.TemporaryDirectory() as tmp:
+            out = Path(tmp)
+            package = next(p for p in debsrc.glob(source) if p.is_dir())
+            subprocess.run([sys.executable, "-m", "archlog", "testgen", str(package), "--launch",
+                            str(ROOT / "bench" / "debian_nodes" / f"{node}.launch"), "--output", str(out)],
+                           check=True, capture_output=True)
+            outcome = run_generated(out, examples, seed=0, timeout=3600)
+        print(f"| {node} | {outcome.examples} | {outcome.passed} | {outcome.examples / outcome.seconds:.2f} |", flush=True)
+        if not outcome.passed:
+            print(outcome.output[-3000:])
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,35 @@
+#!/usr/bin/env python3
+"""Nearest obstacle: the closest range of the latest scan, published at 10 Hz."""
+import rospy
+from sensor_msgs.msg import LaserScan
+from std_msgs.msg import Float32
+
+
+class Nearest:
+    def __init__(self):
+        self.scan = None
+        self.pub = rospy.Publisher("nearest", Float32, queue_size=10)
+        rospy.Subscriber("scan", LaserScan, self.on_scan, queue_size=10)
+
+    def on_scan(self, msg):
+        self.scan = msg
+
+    def step(self):
+        scan, self.scan = self.scan, None
+        if scan is None:
+            return
+        if scan.ranges:
+            self.pub.publish(Float32(min(scan.ranges)))
+
+
+def main():
+    rospy.init_node("nearest_obstacle")
+    node = Nearest()
+    rate = rospy.Rate(20)
+    while not rospy.is_shutdown():
+        node.step()
+        rate.sleep()
+
+
+if __name__ == "__main__":
+    main()
