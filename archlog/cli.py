@@ -367,6 +367,7 @@ def behavior(paths, launches, args, models, rule_paths, config_path, profile, ne
 def testgen(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, nodes,
             settings_path, name, output) -> None:
     """Generate a property-based integration test (Hypothesis, pytest) for the configuration."""
+    from archlog.queries.session import Session
     from archlog.testgen.command import testgen_command
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
