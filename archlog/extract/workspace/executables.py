@@ -81,12 +81,13 @@ class ExecutableFinder:
             classes = {s: exported_plugins(s) or _constructed_classes(s) for s in linked}
             plain = [s for s in linked if not classes[s]]
             exe.sources += plain
-            text = "\n".join([own, *(_text(s) for s in plain)])
+            headers = [package.path / "include", *package.include_dirs]
+            text = "\n".join(_with_headers(s, headers) for s in exe.sources)
             waiting = [s for s in linked if classes[s]]
             while named := [s for s in waiting if any(_names(text, cls) for cls in classes[s])]:
                 exe.sources += named
                 waiting = [s for s in waiting if s not in named]
-                text += "\n".join(_text(s) for s in named)
+                text += "\n".join(_with_headers(s, headers) for s in named)
 
     def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int,
                    asker: tuple[Path, int] | None = None) -> None:
@@ -262,6 +263,21 @@ def _text(path: Path) -> str:
         return sandbox.read_text(path, "source")
     except sandbox.Refused:
         return ""
+
+
+_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
+
+
+def _with_headers(source: Path, folders: list[Path], depth: int = 3) -> str:
+    """A source's text with the package headers it includes (a class a source names only in a
+    member its header declares is named by that source)."""
+    text = _text(source)
+    if depth:
+        for include in _INCLUDE.findall(text):
+            found = next((f / include for f in [source.parent, *folders] if (f / include).is_file()), None)
+            if found is not None and found != source:
+                text += "\n" + _with_headers(found, folders, depth - 1)
+    return text
 
 
 _CONSTRUCTOR = re.compile(r"\b(\w+)::\1\s*\(")
