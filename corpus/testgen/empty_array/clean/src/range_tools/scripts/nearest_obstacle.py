@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Nearest obstacle: the closest range of the latest scan, published at 10 Hz."""
+"""Nearest obstacle: the closest range of each scan, published from the node's 20 Hz loop."""
 import rospy
 from sensor_msgs.msg import LaserScan
 from std_msgs.msg import Float32
@@ -7,19 +7,18 @@ from std_msgs.msg import Float32
 
 class Nearest:
     def __init__(self):
-        self.scan = None
+        self.scans = []
         self.pub = rospy.Publisher("nearest", Float32, queue_size=10)
         rospy.Subscriber("scan", LaserScan, self.on_scan, queue_size=10)
 
     def on_scan(self, msg):
-        self.scan = msg
+        self.scans.append(msg)
 
     def step(self):
-        scan, self.scan = self.scan, None
-        if scan is None:
-            return
-        if scan.ranges:
-            self.pub.publish(Float32(min(scan.ranges)))
+        scans, self.scans = self.scans, []
+        for scan in scans:  # every scan received since the last step
+            if scan.ranges:
+                self.pub.publish(Float32(min(scan.ranges)))
 
 
 def main():
