@@ -205,12 +205,14 @@ def _param_topics(store: FactStore, system: System) -> None:
     a topic parameter (its last segment ends in `topic`, or some port takes its name from a parameter
     of that last segment), whose value is a graph name: that name resolved as the node would."""
     topic_params = {str(key).rsplit("/", 1)[-1] for _port, key in store.rows("port_name_param")}
-    for node in (i.launch for i in system.instances):
-        for name, (value, _elem) in system.config.params.items():
-            last = name.rsplit("/", 1)[-1]
-            if name.startswith(node.name + "/") and "/" not in name[len(node.name) + 1:] and \
-                    isinstance(value, str) and names.is_valid(value) and value != "/" and \
-                    (last.endswith("topic") or last in topic_params):
+    nodes: dict[str, list[LaunchNode]] = {}
+    for instance in system.instances:  # a name given twice is reported elsewhere; both instances count here
+        nodes.setdefault(instance.launch.name, []).append(instance.launch)
+    for name, (value, _elem) in system.config.params.items():
+        owner, _, last = name.rpartition("/")
+        if isinstance(value, str) and names.is_valid(value) and value != "/" and \
+                (last.endswith("topic") or last in topic_params):
+            for node in nodes.get(owner, ()):
                 store.add("param_topic", name, node.name, names.resolve(value, node.namespace, node.name))
 
 
