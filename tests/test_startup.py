@@ -10,12 +10,11 @@ import pytest
 
 HEAVY = ("clang", "clingo", "lxml", "numpy", "rich", "rapidfuzz")
 PROBE = """
+import contextlib
 import sys
 from archlog.cli import main
-try:
+with contextlib.suppress(SystemExit):
     main([{flag!r}], prog_name="archlog")
-except SystemExit:
-    pass
 print("loaded:", ",".join(m for m in {heavy!r} if m in sys.modules))
 """
 

@@ -63,8 +63,8 @@ class Result:
         return self.read_all()
 
     def read_all(self) -> list[tuple[Cell, ...]]:
-        while self._more():
-            pass
+        """Read the rows not read yet; every row."""
+        self._read.extend(self._source)
         return self._read
 
     def sorted_rows(self) -> list[tuple[Cell, ...]]:

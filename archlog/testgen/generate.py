@@ -78,7 +78,7 @@ from archlog.testgen.runtime import Event, Properties as Generated
 class Properties(Generated):
 {hooks}
     def invariant(self) -> None:
-        pass
+        """Assert here what must hold after every step (self.history holds what was seen)."""
 '''
 
 HOOK = '''    def {hook}(self, event: Event) -> None:

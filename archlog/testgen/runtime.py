@@ -153,8 +153,8 @@ class Session:
             return
         self.send({"op": "wait", "timeout": 5.0})
         deadline = time.monotonic() + 15.0
-        while self.events.get(timeout=max(deadline - time.monotonic(), 0.1))["ev"] != "ready":
-            pass
+        events = iter(lambda: self.events.get(timeout=max(deadline - time.monotonic(), 0.1)), None)
+        next(event for event in events if event["ev"] == "ready")  # the events before it say nothing here
 
     def _start_launcher(self) -> None:
         spec = self.tmp / "launch.json"
