@@ -127,6 +127,10 @@ CODES: dict[str, Code] = {
         "robot-description": ("warning", "A robot description (URDF/xacro) cannot be read or expanded.",
                               "Fix the description; xacro expressions are evaluated by archlog's restricted "
                               "evaluator."),
+        "tf-args": ("warning", "A node that broadcasts the transform its command line gives (static_transform_publisher) "
+                    "has arguments that are not `x y z yaw pitch roll frame child` nor `x y z qx qy qz qw frame child`; "
+                    "the transform it broadcasts is unknown, so no transform can be reported missing.",
+                    "Give the six or seven numbers, then the parent and the child frame."),
         "plugin-no-model": ("note", "A robot description loads a gazebo plugin that archlog has no model of "
                             "(archlog/models/plugins/), or a node's parameters make it load a pluginlib class "
                             "that no model file's `classes:` describes; the ports it creates are unknown.",

@@ -28,6 +28,7 @@ class Port:
     queue: Value | None = None
     condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
     info_of: Value | None = None  # image_transport: the image topic (as written) whose remapped sibling this is
+    after_tf: tuple[str, ...] = ()  # the node creates it only after these transform waits (TransformWait.id) end
 
 
 @dataclass(frozen=True)
@@ -82,6 +83,32 @@ class StateWrite:
 
 
 @dataclass(frozen=True)
+class Transform:
+    """A transform a node broadcasts on tf, from frame `parent` to frame `child` (as written: a frame or a
+    parameter naming it). With `after`, only once the node has received a message on one of those
+    topics (as written); with `condition`, only when it holds (as a port's)."""
+
+    parent: Value
+    child: Value
+    file: str
+    line: int
+    after: tuple[Value, ...] = ()
+    condition: tuple[Value, str | None] | None = None
+
+
+@dataclass(frozen=True)
+class TransformWait:
+    """A node blocks until tf can transform frame `source` into frame `target` (costmap_2d's
+    constructor does); ports marked with `id` in their `after_tf` are created only after that."""
+
+    id: str
+    target: Value
+    source: Value
+    file: str
+    line: int
+
+
+@dataclass(frozen=True)
 class PluginSlot:
     """Where a node loads pluginlib classes its parameters choose (node models only): the class named
     by parameter `param`, its namespace `namespace`/the class's own name (as move_base's planners), or,
@@ -95,6 +122,7 @@ class PluginSlot:
     default: object
     file: str
     line: int
+    after_tf: tuple[str, ...] = ()  # the node loads these plugins only after these transform waits end
 
 
 @dataclass(frozen=True)
@@ -128,3 +156,11 @@ class NodeSummary:
     writes: list[StateWrite] = field(default_factory=list)
     plugins: tuple[PluginSlot, ...] = ()
     loads: list[LoadedNodelet] = field(default_factory=list)  # nodelets run in this process
+    # tf (node models): what it broadcasts, with `tf_declared` when that is all it broadcasts (besides the
+    # transforms of the robot description parameter `tf_description`, or of its command line with
+    # `tf_args`, as robot_state_publisher and static_transform_publisher), and what it waits for
+    transforms: tuple[Transform, ...] = ()
+    tf_waits: tuple[TransformWait, ...] = ()
+    tf_declared: bool = False
+    tf_description: str | None = None
+    tf_args: bool = False

@@ -108,10 +108,13 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
     pairs = [(src, dst) for src, dst, _ in node.remaps]
     remaps = names.resolve_remaps(pairs[::-1] if node.ros2 else pairs, node.namespace, node.name)
     ports = [e for p in summary.ports if _present(p, node, config) for e in _each(p, node, config)]
+    waits = _transforms(store, node, summary, config, remaps)
     sites: Sites = {}
     for port in [q for p in ports for q in [p, *action_topics(p)]]:
         pid = store.new_id("p")
         store.locate(pid, port.file, port.line, port.column)
+        for wait in port.after_tf:
+            store.add("port_after_tf", pid, waits[wait])
         sites.setdefault(Site(port.file, port.line), []).append((port.kind, pid))
         for policy, value in port.qos:
             store.add("qos", pid, policy, value)
@@ -141,6 +144,41 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
                 store.add(port.kind, pid, node.name, after, _type_name(_single(_bind(port.type, node, config))))
             store.add("port_source_name", pid, before)
     add_behavior(store, node.name, summary, sites, lambda value: _single(_bind(value, node, config)))
+
+
+def _transforms(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig,
+                remaps: dict[str, str]) -> dict[str, str]:
+    """tf facts of one instance: the transforms it broadcasts (frames bound to its parameters, the
+    topics that start a broadcast resolved as its ports' names are) and those it waits for; returns
+    the fact id of each wait by its model id."""
+    if summary.tf_declared:
+        store.add("tf_declared", node.name)
+    for transform in summary.transforms:
+        if not _holds(transform.condition, node, config):
+            continue
+        after = [_resolve(option, "", node, config, remaps) for value in transform.after
+                 for option in _options(_bind(value, node, config)) if option != ""]
+        if transform.after and not after:
+            continue  # started only by inputs the configuration does not give it
+        tid = store.new_id("t")
+        store.locate(tid, transform.file, transform.line)
+        store.add("tf_broadcast", tid, node.name, _frame(transform.parent, node, config),
+                  _frame(transform.child, node, config))
+        if all(isinstance(topic, str) for topic in after):  # an unknown one might be anything: no condition
+            for topic in after:
+                store.add("tf_broadcast_after", tid, names.remap(str(topic), remaps))
+    waits = {}
+    for wait in summary.tf_waits:
+        waits[wait.id] = wid = store.new_id("t")
+        store.locate(wid, wait.file, wait.line)
+        store.add("tf_wait", wid, node.name, _frame(wait.target, node, config), _frame(wait.source, node, config))
+    return waits
+
+
+def _frame(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
+    """A frame id bound for the instance, without the leading slash tf2 ignores."""
+    frame = _single(_bind(value, node, config))
+    return frame.lstrip("/") if isinstance(frame, str) else frame
 
 
 # actionlib (ROS 1): the topics under an action's namespace, as seen from the server
@@ -262,12 +300,17 @@ def _each(port: Port, node: LaunchNode, config: LaunchConfig) -> list[Port]:
 def _present(port: Port, node: LaunchNode, config: LaunchConfig) -> bool:
     """A port with a condition exists when the condition's value (bound for this instance) matches;
     an unknown value keeps the port."""
-    if port.condition is None:
+    return _holds(port.condition, node, config)
+
+
+def _holds(condition: tuple[Value, str | None] | None, node: LaunchNode, config: LaunchConfig) -> bool:
+    """A model's condition bound for the instance: no condition, a match, or an unknown value."""
+    if condition is None:
         return True
-    value = _single(_bind(port.condition[0], node, config))
-    if port.condition[1] is None:  # `set: true`
+    value = _single(_bind(condition[0], node, config))
+    if condition[1] is None:  # `set: true`
         return value != UNSET
-    return isinstance(value, Unknown) or value.lower() == port.condition[1].lower()
+    return isinstance(value, Unknown) or value.lower() == condition[1].lower()
 
 
 def _type_name(type_: str | Unknown) -> str | Unknown:

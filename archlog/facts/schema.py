@@ -139,6 +139,21 @@ RELATIONS: tuple[Relation, ...] = (
          ("source", "id", "the subscriber or service port whose callback writes it; `none` at start-up")),
     _rel("behavior", "loop_period", "The period of the loop a periodic publish call sits in.",
          ("call", "id", "the publish call"), ("period", "str", "seconds, or unknown")),
+    _rel("transforms", "tf_broadcast", "A transform a node instance broadcasts on tf (its model's `tf_broadcasts`, "
+         "the joints of its robot description, its static_transform_publisher arguments).",
+         ("id", "id", "the broadcast; `location` gives the model entry, the joint or the launch element"), _NODE,
+         ("parent", "str", "the parent frame (without a leading slash)"), ("child", "str", "the child frame")),
+    _rel("transforms", "tf_broadcast_after", "A broadcast that starts only once its node has received a message on "
+         "one of these topics (amcl's map -> odom after a scan); a broadcast without rows starts at once.",
+         ("id", "id", "the broadcast"), ("topic", "name", "a topic that starts it (resolved, remapped)")),
+    _rel("transforms", "tf_declared", "A node instance whose broadcasts archlog knows completely: the tf_broadcast rows "
+         "are all it broadcasts. Any other node that publishes /tf or /tf_static may broadcast anything.", _NODE),
+    _rel("transforms", "tf_wait", "A node instance blocks until tf can transform one frame into another (costmap_2d "
+         "waits in its constructor for global_frame <- robot_base_frame); frames bound to its parameters.",
+         ("id", "id", "the wait; `location` gives the model entry"), _NODE,
+         ("target", "str", "the frame transformed into"), ("source", "str", "the frame transformed from")),
+    _rel("transforms", "port_after_tf", "A port its node creates only after a wait ends: it exists in the code, but at "
+         "run time only once the transform is available.", _PORT, ("wait", "id", "the tf_wait")),
     _rel("provenance", "location", "Where a port, launch element or node comes from.",
          ("id", "id", "port or element id"), ("file", "str", "file, relative to the first indexed path when inside it"),
          ("line", "int", "1-based line"), ("column", "int", "1-based column, 0 when unknown")),
@@ -168,6 +183,7 @@ def _derived(source: str, name: str, doc: str, *cols: tuple[str, str, str]) -> R
 _PRELUDE = "prelude.lp"
 _AL601 = "AL601_required_input_unreachable.lp"
 _AL401 = "AL401_unused_remap.lp"
+_AL701 = "AL701_transform_never_available.lp"
 _SUB = ("sub", "id", "the subscriber port")
 
 # Relations the shipped rules derive that Python code reads from the grounded program (reports,
@@ -237,6 +253,13 @@ DERIVED: tuple[Relation, ...] = (
              "`outside` list).", ("elem", "id", "the remap"), _NODE),
     _derived(_AL601, "near_publisher", "A candidate for a starved input: a published near-miss name, or a topic of "
              "its type published to nobody (AL601's `near` list).", _SUB, ("topic", "name", "the candidate topic")),
+    _derived(_AL701, "tf_live", "A broadcast that starts: at once, or after an input some node publishes (or might: "
+             "an unknown or opaque publisher).", ("id", "id", "the tf_broadcast")),
+    _derived(_AL701, "tf_unavailable", "A wait no broadcast in the configuration can ever end: no chain of live "
+             "broadcasts links its two frames, and every node that publishes tf declares what it broadcasts.",
+             ("wait", "id", "the tf_wait")),
+    _derived(_AL701, "tf_blocked_port", "A port created only after a wait that never ends: the code creates it, the "
+             "running system never does.", _PORT, ("wait", "id", "the tf_wait")),
     _derived("AL102_near_miss_topic.lp", "near_also", "Another candidate as near as the one AL102 names for a "
              "dangling port (AL102's `also` list: the finding's related locations).", _PORT,
              ("other", "id", "the other candidate port")),

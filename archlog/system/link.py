@@ -21,6 +21,7 @@ from archlog.system.node_models import NodeModels
 from archlog.system.nodelets import is_manager, loaded_ports, loader_ports, manager_summary
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
+from archlog.system.transforms import configured_transforms
 from archlog.values import ParamRef
 
 
@@ -115,7 +116,8 @@ def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
 def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config: LaunchConfig,
              workspace: Workspace, diagnostics: DiagnosticSink, missing: set[tuple[str, str]]) -> NodeSummary | None:
     """What one instance runs, with its configured ports and those of the plugins its parameters
-    choose (the slots of its model, also when its source is read); a kind with neither is reported once.
+    choose (the slots of its model, also when its source is read), and its transforms; a kind with
+    neither source nor model is reported once.
     A nodelet manager runs the nodelet mechanism, whatever the source of `nodelet` says."""
     summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
     if summary is not None and summary.loads:
@@ -129,6 +131,8 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
             NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")
+    if summary is not None:
+        summary = _with_transforms(summary, model, node, config, workspace, diagnostics)
     if summary is None and node.kind not in missing:
         kind = node.kind
         missing.add(kind)
@@ -138,3 +142,18 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
                         f"executable: {kind[1]}, publishers: [{{name: TOPIC, type: PKG/TYPE}}], "
                         "subscribers: [], services: [], params: [{name: ~PARAM, default: VALUE}]}", "warning")
     return summary
+
+
+def _with_transforms(summary: NodeSummary, model: NodeSummary | None, node: LaunchNode, config: LaunchConfig,
+                     workspace: Workspace, diagnostics: DiagnosticSink) -> NodeSummary:
+    """The summary with its model's tf keys (also when its source is read: extraction does not recover
+    transforms) and the transforms its robot description or command line give."""
+    if model is not None and not summary.tf_declared and not summary.tf_waits:
+        summary = replace(summary, transforms=model.transforms, tf_waits=model.tf_waits,
+                          tf_declared=model.tf_declared, tf_description=model.tf_description, tf_args=model.tf_args)
+    if not (summary.tf_description or summary.tf_args):
+        return summary
+    configured = configured_transforms(node, summary, config, workspace, diagnostics)
+    if configured is None:  # not known statically: it may broadcast any transform
+        return replace(summary, tf_declared=False)
+    return replace(summary, transforms=summary.transforms + tuple(configured))

@@ -12,7 +12,9 @@ deadline: SECONDS, ...}` (rmw's default profile when no preset is named). An ima
 the sibling of the image topic as resolved and remapped (system/link.py). `plugins:` lists where a node
 loads pluginlib classes its parameters choose (see `PluginSlot`), and a file's `classes:` the ports
 such a class creates in the namespace its host gives it (system/plugin_slots.py). A model with
-`incomplete: REASON` lists only some ports, so its nodes count as opaque. The format's
+`incomplete: REASON` lists only some ports, so its nodes count as opaque. `tf_broadcasts` (with
+`tf_description`, `tf_args`) says which transforms the node broadcasts, `tf_waits` which ones it
+blocks for, and a port's or slot's `after_tf` which of those waits come before it. The format's
 JSON Schema is archlog/models/model.schema.json; a file that breaks it is reported at the offending
 entry's line and its valid models are still used.
 """
@@ -36,7 +38,7 @@ from archlog.extract.launch import bounded_yaml
 from archlog.extract.launch.model import Element
 from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.registry import Summaries
-from archlog.extract.summary import NodeSummary, PluginSlot, Port
+from archlog.extract.summary import NodeSummary, PluginSlot, Port, Transform, TransformWait
 from archlog.extract.workspace.index import Workspace
 from archlog.values import ParamList, ParamRef, Value
 
@@ -150,7 +152,9 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
                 _port(summary, kind, port, shown, diagnostics)
         summary.plugins = tuple(PluginSlot(str(slot.get("list", slot.get("param"))), str(slot["namespace"]),
                                            "list" in slot, _without_lines(slot.get("default")), shown,
-                                           slot["__line__"]) for slot in item.get("plugins") or [])
+                                           slot["__line__"], tuple(slot.get("after_tf", ())))
+                                for slot in item.get("plugins") or [])
+        _transforms(summary, item, shown, diagnostics)
         result.append((summary, instance))
     return result
 
@@ -170,13 +174,36 @@ def _classes(data: dict, shown: str, diagnostics: DiagnosticSink, classes: dict[
         classes.update(dict.fromkeys(lookup, plugin))
 
 
+def _transforms(summary: NodeSummary, item: dict, shown: str, diagnostics: DiagnosticSink) -> None:
+    """The model's tf keys: the transforms it broadcasts and those it waits for; a port or plugin slot
+    whose `after_tf` names no wait of the model is reported."""
+    summary.transforms = tuple(
+        Transform(_name(t["parent"], shown, t["__line__"]), _name(t["child"], shown, t["__line__"]), shown,
+                  t["__line__"], tuple(_name(a, shown, t["__line__"]) for a in t.get("after", ())),
+                  None if "if" not in t else _condition(t["if"], shown))
+        for t in item.get("tf_broadcasts") or [])
+    summary.tf_waits = tuple(TransformWait(str(w["id"]), _name(w["target"], shown, w["__line__"]),
+                                           _name(w["source"], shown, w["__line__"]), shown, w["__line__"])
+                             for w in item.get("tf_waits") or [])
+    summary.tf_declared = any(key in item for key in ("tf_broadcasts", "tf_description", "tf_args"))
+    summary.tf_description = item.get("tf_description")
+    summary.tf_args = bool(item.get("tf_args"))
+    waits = {w.id for w in summary.tf_waits}
+    marked = [(p.line, p.after_tf) for p in summary.ports] + [(s.line, s.after_tf) for s in summary.plugins]
+    for line, after in marked:
+        for wait in sorted(set(after) - waits):
+            diagnostics.add(shown, line, "model-schema", f"invalid model: after_tf names {wait}, which is not the id "
+                            "of one of its tf_waits", "error")
+
+
 def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: DiagnosticSink) -> None:
     default = port.get("default")
     condition = port.get("if")
     name = _name(port["name"], shown, port["__line__"])
     image = Port(kind, name, str(port.get("type", "")), shown, port["__line__"], 0, "",
                  None if default is None else str(default), qos=() if "qos" not in port else _qos(port["qos"]),
-                 condition=None if condition is None else _condition(condition, shown))
+                 condition=None if condition is None else _condition(condition, shown),
+                 after_tf=tuple(port.get("after_tf", ())))
     summary.ports.append(image)
     if port.get("camera_info") and isinstance(name, str):  # placed beside the remapped image per instance
         summary.ports.append(replace(image, name="camera_info", type="sensor_msgs/CameraInfo", default=None,

@@ -7,12 +7,14 @@ file's `classes:` entries say what each class creates in the namespace it is giv
 A plugin named by a single parameter lives in NAMESPACE/its class name (pluginlib's
 `ClassLoader::getName`), a list element in NAMESPACE/its `name`. A class without a model gets a
 `plugin-no-model` note at the launch element, so the ports it may create are not silently lost.
+A slot's `after_tf` marks every port of its plugins (the host loads them after those transform waits).
 """
 
 from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 from archlog import names
@@ -38,7 +40,7 @@ def plugin_ports(node: LaunchNode, slots: tuple[PluginSlot, ...], classes: dict[
                                 f"{node.name} loads the pluginlib class {class_name} ({slot.param}), which has no "
                                 "model (a `classes:` entry of a model file); the ports it creates are unknown")
                 continue
-            ports += _class_ports(plugin, namespace, node, config)
+            ports += [replace(port, after_tf=slot.after_tf) for port in _class_ports(plugin, namespace, node, config)]
     return ports
 
 

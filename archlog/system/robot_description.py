@@ -57,29 +57,49 @@ def plugin_models() -> dict[str, PluginModel]:
     return found
 
 
+@dataclass(frozen=True)
+class Description:
+    """A robot description as XML, the files it was expanded from and the element that sets it."""
+
+    doc: xml.dom.minidom.Document
+    files: list[Path]
+    elem: Element
+
+
 def spawned_ports(node: LaunchNode, words: list[str], config: LaunchConfig, workspace: Workspace,
                   diagnostics: DiagnosticSink) -> list[Port]:
     """The plugin ports of the description `spawn_model -urdf -param NAME` inserts."""
     _positional, option = split_options(words, {"-param", "-robot_namespace"})
     if "-param" not in option:
         return []
-    key = names.canonical(names.resolve(option["-param"], node.namespace, node.name))
+    found = description(option["-param"], node, config, workspace, diagnostics)
+    if found is None:
+        return []
+    return [port for plugin in found.doc.getElementsByTagName("plugin")
+            for port in _plugin_ports(plugin, option.get("-robot_namespace"), found.files, found.elem, workspace,
+                                      diagnostics)]
+
+
+def description(param: str, node: LaunchNode, config: LaunchConfig, workspace: Workspace,
+                diagnostics: DiagnosticSink) -> Description | None:
+    """The robot description a node reads from parameter `param` (resolved in its namespace), or None
+    (with a diagnostic) when the configuration does not set it or it cannot be read statically."""
+    key = names.canonical(names.resolve(param, node.namespace, node.name))
     if key not in config.params:
         diagnostics.add(node.elem.file, node.elem.line, "robot-description",
-                        f"spawn_model reads {key}, which this configuration does not set", "warning")
-        return []
+                        f"{node.name} reads {key}, which this configuration does not set", "warning")
+        return None
     value, elem = config.params[key]
     described = _expand(value, elem, workspace, diagnostics)
     if described is None:
-        return []
+        return None
     text, files = described
     try:
         doc = parse_xml(text)
     except Exception as exc:  # expat raises several types for broken XML
         diagnostics.add(elem.file, elem.line, "robot-description", f"robot description is not XML: {exc}", "warning")
-        return []
-    return [port for plugin in doc.getElementsByTagName("plugin")
-            for port in _plugin_ports(plugin, option.get("-robot_namespace"), files, elem, workspace, diagnostics)]
+        return None
+    return Description(doc, files, elem)
 
 
 def _expand(value: object, elem: Element, workspace: Workspace,
@@ -127,7 +147,7 @@ def _xacro(source: Path, mappings: dict[str, str], workspace: Workspace, elem: E
 def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: list[Path], elem: Element,
                   workspace: Workspace, diagnostics: DiagnosticSink) -> list[Port]:
     library = plugin.getAttribute("filename")
-    file, line = _where(library, files, elem, workspace)
+    file, line = where(f'"{library}"', files, elem, workspace)
     model = plugin_models().get(library)
     if model is None:
         diagnostics.add(file, line, "plugin-no-model", f"gazebo plugin {library or '(no filename)'} has no model "
@@ -171,12 +191,12 @@ def _text(plugin: xml.dom.minidom.Element, tag: str) -> str | None:
     return "".join(n.data for n in found[0].childNodes if n.nodeType == n.TEXT_NODE).strip() if found else None
 
 
-def _where(library: str, files: list[Path], elem: Element, workspace: Workspace) -> tuple[str, int]:
-    """The line naming the plugin in the description's files, else the launch element."""
+def where(needle: str, files: list[Path], elem: Element, workspace: Workspace) -> tuple[str, int]:
+    """The first line holding `needle` in the description's files, else the launch element."""
     for path in files:
         try:
             for number, line in enumerate(sandbox.read_text(path, "description").splitlines(), 1):
-                if f'"{library}"' in line:
+                if needle in line:
                     return workspace.display(path), number
         except sandbox.Refused:
             continue
