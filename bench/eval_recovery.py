@@ -49,6 +49,14 @@ What is compared (the same for all three sides):
 * an action server or client is expanded into its five topics (goal, cancel subscribed; status,
   feedback, result published by the server, reversed for a client), as the master sees them,
   unless the recovery already lists them.
+
+Ports conditional on a transform: a node may create some ports only once tf can give it a
+transform (move_base builds its costmaps, planners, services and action server only after each
+costmap has looked up global_frame <- robot_base_frame). When no chain of broadcasts in the
+configuration can ever provide that transform (AL701; `tf_blocked_port` facts), such a port is what
+the code would create but not what the running system can show. The first table counts every port
+(`archlog`, `archlog+models`); a second table (`archlog/tf`, `archlog+models/tf`) counts those
+conditional ports as not expected, and every port so left out is listed with the wait it needs.
 """
 
 from __future__ import annotations
@@ -222,10 +230,15 @@ def from_study_yaml(path: Path) -> dict[str, set]:
     return arch
 
 
-def recover(subject_src: Path, launches: list[str], env: dict[str, str], models: list[Path]) -> tuple[dict, dict]:
-    """archlog's recovery of one subject, in the compared shape, and what went with it."""
+def recover(subject_src: Path, launches: list[str], env: dict[str, str],
+            models: list[Path]) -> tuple[dict, dict, dict]:
+    """archlog's recovery of one subject in the compared shape: every port the code creates, and the
+    same without the ports created only after a transform the configuration can never provide
+    (`tf_blocked_port`, AL701); and what went with it."""
     from archlog import names
     from archlog.analysis import analyse
+    from archlog.rules.engine import Engine
+    from archlog.rules.ruleset import load_rules
     from archlog.values import Unknown
 
     start = time.perf_counter()
@@ -243,6 +256,10 @@ def recover(subject_src: Path, launches: list[str], env: dict[str, str], models:
                 os.environ[k] = v
     seconds = time.perf_counter() - start
     store = analysis.store
+    ctl = Engine(load_rules([])).ground(store)
+    blocked = {str(store.from_term(a.symbol.arguments[0])): str(store.from_term(a.symbol.arguments[1]))
+               for a in ctl.symbolic_atoms.by_signature("tf_blocked_port", 2)}
+    waits = {str(w): (str(n), str(target), str(source)) for w, n, target, source in store.rows("tf_wait")}
     nodes = {str(r[0]): (r[1], r[2]) for r in store.rows("node")}
     host: dict[str, str] = {}
     for node, _plugin, manager in store.rows("nodelet"):
@@ -259,28 +276,38 @@ def recover(subject_src: Path, launches: list[str], env: dict[str, str], models:
         for node, kind in nodes.items():
             if kind == ("gazebo_ros", "spawn_model"):
                 host[node] = controller_host
-    arch = _empty()
-    arch["nodes"] = {n for n in nodes if n not in controller_pkgs}
+    arch, expected = _empty(), _empty()
+    arch["nodes"] = expected["nodes"] = {n for n in nodes if n not in controller_pkgs}
     unknown_ports = defaultdict(list)
+    conditional: dict[str, list[str]] = defaultdict(list)  # wait -> ports counted as not expected
 
     def owner(node) -> str:
         return host.get(str(node), str(node))
 
+    def add(port, node, kind: str, name: str) -> None:
+        arch[kind].add((owner(node), name))
+        if str(port) in blocked:
+            conditional[blocked[str(port)]].append(f"{kind[:3]} {name}")
+        else:
+            expected[kind].add((owner(node), name))
+
     for kind, relation in (("publishers", "publisher"), ("subscribers", "subscriber")):
-        for _p, node, topic, _ty in store.rows(relation):
+        for port, node, topic, _ty in store.rows(relation):
             if isinstance(topic, Unknown):
                 unknown_ports[str(node)].append(f"{relation} {topic}")
             elif _keep_topic(topic):
-                arch[kind].add((owner(node), topic))
-    for _p, node, service, _ty in store.rows("service_server"):
+                add(port, node, kind, topic)
+    for port, node, service, _ty in store.rows("service_server"):
         if isinstance(service, Unknown):
             unknown_ports[str(node)].append(f"service_server {service}")
         elif _keep_service(str(node), service):
-            arch["services"].add((owner(node), service))
+            add(port, node, "services", service)
     for relation, server in (("action_server", True), ("action_client", False)):
-        for _p, node, action, _ty in store.rows(relation):
+        for port, node, action, _ty in store.rows(relation):
             if not isinstance(action, Unknown):
                 _action_topics(owner(node), action, server, arch)
+                if str(port) not in blocked:
+                    _action_topics(owner(node), action, server, expected)
     incomplete = defaultdict(list)
     for node, reason in store.rows("node_incomplete"):
         incomplete[str(node)].append(str(reason))
@@ -288,8 +315,10 @@ def recover(subject_src: Path, launches: list[str], env: dict[str, str], models:
                     "message": d.message} for d in analysis.diagnostics.items]
     extra = {"seconds": round(seconds, 1), "node_kinds": {n: list(k) for n, k in nodes.items()},
              "credited": host, "unknown_ports": dict(unknown_ports), "incomplete": dict(incomplete),
-             "diagnostics": diagnostics}
-    return arch, extra
+             "diagnostics": diagnostics,
+             "tf_conditional": {f"{waits[w][0]} waits for {waits[w][1]} <- {waits[w][2]}": sorted(set(ports))
+                                for w, ports in conditional.items()}}
+    return arch, expected, extra
 
 
 def _controller_instances(analysis) -> set[str]:
@@ -381,15 +410,18 @@ def by_node(pairs, kind: str) -> dict[str, list[str]]:
 
 
 TOOLS = ("archlog", "archlog+models", "study")
+# the same recoveries, a port created only after a transform the configuration can never provide
+# (tf_blocked_port: AL701's wait) counted as not expected
+TF_TOOLS = ("archlog/tf", "archlog+models/tf")
 
 
-def print_table(results: dict) -> None:
-    head = " | ".join(f"{t:>14} {'miss':>4} {'extra':>5} {'under%':>6} {'over%':>6}" for t in TOOLS)
+def print_table(results: dict, tools: tuple[str, ...] = TOOLS) -> None:
+    head = " | ".join(f"{t:>17} {'miss':>4} {'extra':>5} {'under%':>6} {'over%':>6}" for t in tools)
     print(f"\n{'subject':10} {'kind':12} {'obs':>4} | {head}")
     for subject, res in results.items():
         for kind in (*KINDS, "ports"):
-            cells = " | ".join(f"{r['recovered']:>14} {r['missing']:>4} {r['extra']:>5} {r['under']:>6} {r['over']:>6}"
-                               for r in (res[t][kind] for t in TOOLS))
+            cells = " | ".join(f"{r['recovered']:>17} {r['missing']:>4} {r['extra']:>5} {r['under']:>6} {r['over']:>6}"
+                               for r in (res[t][kind] for t in tools))
             print(f"{subject:10} {kind:12} {res['archlog'][kind]['observed']:>4} | {cells}")
     print("(recovered = ports recovered; under% = missing / observed; over% = extra / observed)")
 
@@ -407,7 +439,7 @@ def print_differences(subject: str, tool: str, res: dict) -> dict[str, int]:
             for node, name in res[kind][key]:
                 item = f"{kind[:3]} {name}"
                 if label == "missing" and tool != "study":
-                    cause = cause_of(subject, tool, node, name, kind)
+                    cause = cause_of(subject, tool.removesuffix("/tf"), node, name, kind)
                     counts[cause] += 1
                     item += f" [{cause}]"
                 grouped[node].append(item)
@@ -430,13 +462,14 @@ def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[s
         env = {k: str(v).replace("/ros_ws/src", str(src)) for k, v in (experiment.get("environment") or {}).items()}
         observed = from_study_yaml(meta / subject / "observed.architecture.yml")
         study = from_study_yaml(meta / subject / "recovered.architecture.yml")
-        ours, extra = recover(src, launches, env, [])
+        ours, ours_tf, extra = recover(src, launches, env, [])
         # The same, with archlog's shipped models passed as --model: user models take precedence
         # over what is extracted from sources, so a modelled node keeps its model even when its
         # package's source (whose ports may live in a linked library) is in the workspace.
-        modelled, extra_m = recover(src, launches, env, shipped)
+        modelled, modelled_tf, extra_m = recover(src, launches, env, shipped)
         results[subject] = {"archlog": score(ours, observed), "archlog+models": score(modelled, observed),
-                            "study": score(study, observed)}
+                            "study": score(study, observed), "archlog/tf": score(ours_tf, observed),
+                            "archlog+models/tf": score(modelled_tf, observed)}
         extras[subject] = extra | {"with_models": {k: v for k, v in extra_m.items() if k != "node_kinds"}}
         print(f"{subject}: archlog took {extra['seconds']} s ({extra_m['seconds']} s with models), "
               f"{len(extra['diagnostics'])} diagnostics")
@@ -447,11 +480,18 @@ def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[s
             for r in rows:
                 print(f"    {r[2]}: {' '.join(r[3:7])}")
     print_table(results)
+    print("\nThe same recoveries, with every port the node creates only after a transform that no chain of "
+          "broadcasts in the configuration provides (AL701) counted as not expected (the table above counts them):")
+    print_table(results, TF_TOOLS)
+    for subject in results:
+        for wait, ports in extras[subject]["tf_conditional"].items():
+            print(f"  {subject}: {wait}, which the configuration never provides: {len(ports)} ports not expected: "
+                  f"{', '.join(ports)}")
     print("\ncauses of archlog's misses:")
     for key, text in CAUSES.items():
         print(f"  {key}: {text}")
     for subject, res in results.items():
-        for tool in TOOLS:
+        for tool in TOOLS + TF_TOOLS:
             res[tool]["missing_by_cause"] = print_differences(subject, tool, res[tool])
         extra = extras[subject]
         print(f"\n{subject}: archlog nodes with unknown port names: {json.dumps(extra['unknown_ports'], indent=1)}")
@@ -463,8 +503,8 @@ def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[s
     if json_out:
         json_out.parent.mkdir(parents=True, exist_ok=True)
         small = {s: {tool: {k: r[tool][k] for k in (*KINDS, "ports", "missing_by_cause") if k in r[tool]}
-                     for tool in TOOLS}
-                 | {"seconds": extras[s]["seconds"],
+                     for tool in TOOLS + TF_TOOLS}
+                 | {"seconds": extras[s]["seconds"], "tf_conditional": extras[s]["tf_conditional"],
                     "diagnostics": sorted({f"{d['severity']} {d['code']}" for d in extras[s]["diagnostics"]})}
                  for s, r in results.items()}
         json_out.write_text(json.dumps(small, indent=1, default=list) + "\n")

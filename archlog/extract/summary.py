@@ -106,6 +106,7 @@ class TransformWait:
     source: Value
     file: str
     line: int
+    after_tf: tuple[str, ...] = ()  # the waits that come before this one
 
 
 @dataclass(frozen=True)

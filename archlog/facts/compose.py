@@ -167,11 +167,13 @@ def _transforms(store: FactStore, node: LaunchNode, summary: NodeSummary, config
         if all(isinstance(topic, str) for topic in after):  # an unknown one might be anything: no condition
             for topic in after:
                 store.add("tf_broadcast_after", tid, names.remap(str(topic), remaps))
-    waits = {}
+    waits = {wait.id: store.new_id("t") for wait in summary.tf_waits}
     for wait in summary.tf_waits:
-        waits[wait.id] = wid = store.new_id("t")
-        store.locate(wid, wait.file, wait.line)
-        store.add("tf_wait", wid, node.name, _frame(wait.target, node, config), _frame(wait.source, node, config))
+        store.locate(waits[wait.id], wait.file, wait.line)
+        store.add("tf_wait", waits[wait.id], node.name, _frame(wait.target, node, config),
+                  _frame(wait.source, node, config))
+        for before in wait.after_tf:
+            store.add("tf_wait_after", waits[wait.id], waits[before])
     return waits
 
 

@@ -152,6 +152,8 @@ RELATIONS: tuple[Relation, ...] = (
          "waits in its constructor for global_frame <- robot_base_frame); frames bound to its parameters.",
          ("id", "id", "the wait; `location` gives the model entry"), _NODE,
          ("target", "str", "the frame transformed into"), ("source", "str", "the frame transformed from")),
+    _rel("transforms", "tf_wait_after", "A wait that comes only after another one has ended (move_base builds its "
+         "local costmap after its global one).", ("wait", "id", "the later tf_wait"), ("before", "id", "the earlier one")),
     _rel("transforms", "port_after_tf", "A port its node creates only after a wait ends: it exists in the code, but at "
          "run time only once the transform is available.", _PORT, ("wait", "id", "the tf_wait")),
     _rel("provenance", "location", "Where a port, launch element or node comes from.",

@@ -183,13 +183,15 @@ def _transforms(summary: NodeSummary, item: dict, shown: str, diagnostics: Diagn
                   None if "if" not in t else _condition(t["if"], shown))
         for t in item.get("tf_broadcasts") or [])
     summary.tf_waits = tuple(TransformWait(str(w["id"]), _name(w["target"], shown, w["__line__"]),
-                                           _name(w["source"], shown, w["__line__"]), shown, w["__line__"])
+                                           _name(w["source"], shown, w["__line__"]), shown, w["__line__"],
+                                           tuple(w.get("after_tf", ())))
                              for w in item.get("tf_waits") or [])
     summary.tf_declared = any(key in item for key in ("tf_broadcasts", "tf_description", "tf_args"))
     summary.tf_description = item.get("tf_description")
     summary.tf_args = bool(item.get("tf_args"))
     waits = {w.id for w in summary.tf_waits}
-    marked = [(p.line, p.after_tf) for p in summary.ports] + [(s.line, s.after_tf) for s in summary.plugins]
+    marked = [(p.line, p.after_tf) for p in summary.ports] + [(s.line, s.after_tf) for s in summary.plugins] + \
+        [(w.line, w.after_tf) for w in summary.tf_waits]
     for line, after in marked:
         for wait in sorted(set(after) - waits):
             diagnostics.add(shown, line, "model-schema", f"invalid model: after_tf names {wait}, which is not the id "

@@ -5,6 +5,7 @@ joint states arrive), and the transform static_transform_publisher's command lin
 from __future__ import annotations
 
 import shlex
+import xml.dom.minidom
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
@@ -37,9 +38,9 @@ def _joints(node: LaunchNode, param: str, config: LaunchConfig, workspace: Works
         return None
     transforms = []
     for joint in urdf.doc.getElementsByTagName("joint"):
-        links = [next((e.getAttribute("link") for e in joint.childNodes if getattr(e, "tagName", None) == tag), "")
-                 for tag in ("parent", "child")]
-        if not all(links) or joint.parentNode is None or getattr(joint.parentNode, "tagName", "") != "robot":
+        links = [next((e.getAttribute("link") for e in joint.childNodes
+                       if isinstance(e, xml.dom.minidom.Element) and e.tagName == tag), "") for tag in ("parent", "child")]
+        if not all(links) or getattr(joint.parentNode, "tagName", "") != "robot":
             continue  # a transmission's <joint> (no links), or one nested in another element
         file, line = where(f'"{joint.getAttribute("name")}"', urdf.files, urdf.elem, workspace)
         after = () if joint.getAttribute("type") == "fixed" else (JOINT_STATES,)

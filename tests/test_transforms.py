@@ -1,0 +1,93 @@
+"""Transform facts: what nodes broadcast (models, robot descriptions, static_transform_publisher
+arguments), what they wait for, the ports created after a wait, and AL701 over them."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from conftest import CORPUS
+
+from archlog.analysis import analyse
+from archlog.diagnostics import DiagnosticSink
+from archlog.rules.engine import Engine
+from archlog.rules.ruleset import load_rules
+from archlog.system.node_models import LineLoader, load_models
+
+CASE = CORPUS / "costmap_frame_unbroadcast"
+
+
+def _analyse(variant: str):
+    src = CASE / variant / "src"
+    return analyse([src], [str(src / "base_nav" / "launch" / "nav.launch")], {}, [])
+
+
+def test_broadcasts_come_from_the_description_the_arguments_and_the_models() -> None:
+    store = _analyse("clean").store
+    broadcasts = {(str(n), p, c): str(i) for i, n, p, c in store.rows("tf_broadcast")}
+    assert set(broadcasts) == {("/robot_state_publisher", "base_link", "laser_link"),
+                               ("/robot_state_publisher", "base_link", "left_wheel"),
+                               ("/map_to_odom", "map", "odom"), ("/odom_to_base", "odom", "base_link")}
+    after = {(str(i), str(t)) for i, t in store.rows("tf_broadcast_after")}
+    # a moving joint only once joint states arrive; a fixed joint and the static transforms at once
+    assert after == {(broadcasts[("/robot_state_publisher", "base_link", "left_wheel")], "/joint_states")}
+    laser = store.location(broadcasts[("/robot_state_publisher", "base_link", "laser_link")])
+    # a joint of a xacro description is located in its file; a textfile description at the <param>
+    assert laser is not None and laser[0].endswith("nav.launch") and laser[1] == 2
+    assert {str(r[0]) for r in store.rows("tf_declared")} == {"/robot_state_publisher", "/map_to_odom",
+                                                              "/odom_to_base", "/move_base"}
+
+
+def test_waits_take_their_frames_from_the_parameters_and_mark_the_ports_after_them() -> None:
+    store = _analyse("buggy").store
+    waits = {str(i): (str(n), t, s) for i, n, t, s in store.rows("tf_wait")}
+    assert sorted(waits.values()) == [("/move_base", "map", "base_footprint"), ("/move_base", "odom", "base_footprint")]
+    by_frame = {v[1]: k for k, v in waits.items()}
+    assert list(store.rows("tf_wait_after")) == [(by_frame["odom"], by_frame["map"])]
+    names = {str(r[0]): str(r[2]) for rel in ("publisher", "subscriber", "service_server") for r in store.rows(rel)}
+    marked = {(names[str(p)], str(w)) for p, w in store.rows("port_after_tf") if str(p) in names}
+    assert ("/move_base/global_costmap/costmap", by_frame["map"]) in marked
+    assert ("/move_base/local_costmap/inflation/parameter_updates", by_frame["odom"]) in marked
+    assert ("/move_base/make_plan", by_frame["odom"]) in marked
+    assert not any(name in ("/cmd_vel", "/move_base/current_goal", "/move_base_simple/goal") for name, _w in marked)
+
+
+def test_blocked_ports_and_the_finding_follow_the_first_wait_that_never_ends() -> None:
+    analysis = _analyse("buggy")
+    ctl, findings = Engine(load_rules([])).run(analysis.store)
+    blocked = {str(a.symbol.arguments[0]) for a in ctl.symbolic_atoms.by_signature("tf_blocked_port", 2)}
+    marked = {str(p) for p, _w in analysis.store.rows("port_after_tf")}
+    assert blocked and {f'"{p}"' for p in marked} == blocked  # every port after either costmap
+    [finding] = [f for f in findings if f.rule.id == "AL701"]
+    assert "base_footprint into map" in finding.message and "laser_link" in finding.message
+    clean = _analyse("clean")
+    ctl, findings = Engine(load_rules([])).run(clean.store)
+    assert not list(ctl.symbolic_atoms.by_signature("tf_blocked_port", 2))
+    assert not [f for f in findings if f.rule.id == "AL701"]
+
+
+def test_arguments_that_name_no_transform_leave_the_node_undeclared(tmp_path: Path) -> None:
+    pkg = tmp_path / "src" / "demo"
+    pkg.mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package format='2'><name>demo</name><version>0.1.0</version><description>d"
+                                     "</description><maintainer email='a@b.c'>m</maintainer><license>MIT</license>"
+                                     "</package>")
+    launch = pkg / "tf.launch"
+    launch.write_text('<launch>\n<node pkg="tf2_ros" type="static_transform_publisher" name="bad" args="0 0 map"/>\n'
+                      '<node pkg="move_base" type="move_base" name="move_base"/>\n</launch>')
+    analysis = analyse([tmp_path], [str(launch)], {}, [])
+    [diag] = [d for d in analysis.diagnostics.items if d.code == "tf-args"]
+    assert diag.file.endswith("tf.launch") and diag.line == 2 and "'0 0 map'" in diag.message
+    assert "/bad" not in {str(r[0]) for r in analysis.store.rows("tf_declared")}
+    _ctl, findings = Engine(load_rules([])).run(analysis.store)
+    assert not [f for f in findings if f.rule.id == "AL701"]  # /bad may broadcast anything
+
+
+def test_an_after_tf_naming_no_wait_is_a_schema_error(tmp_path: Path) -> None:
+    model = tmp_path / "m.yaml"
+    model.write_text("package: demo\nexecutable: planner\ntf_waits:\n  - {id: costmap, target: map, source: base}\n"
+                     "publishers:\n  - {name: plan, type: nav_msgs/Path, after_tf: [costmpa]}\n")
+    sink = DiagnosticSink()
+    [(summary, _instance)] = load_models(model, "m.yaml", sink, LineLoader)
+    assert [(d.line, d.code) for d in sink.items] == [(6, "model-schema")]
+    assert "costmpa" in sink.items[0].message
+    assert summary.tf_waits[0].id == "costmap"
