@@ -485,8 +485,8 @@ def run_score(meta: Path, evalsrc: Path, json_out: Path | None, subjects: list[s
     print_table(results, TF_TOOLS)
     for subject in results:
         for wait, ports in extras[subject]["tf_conditional"].items():
-            print(f"  {subject}: {wait}, which the configuration never provides: {len(ports)} ports not expected: "
-                  f"{', '.join(ports)}")
+            print(f"  {subject}: {wait}, a wait that never ends here (AL701; its own transform is missing, or an "
+                  f"earlier wait's): {len(ports)} ports not expected: {', '.join(ports)}")
     print("\ncauses of archlog's misses:")
     for key, text in CAUSES.items():
         print(f"  {key}: {text}")

@@ -258,7 +258,8 @@ DERIVED: tuple[Relation, ...] = (
     _derived(_AL701, "tf_live", "A broadcast that starts: at once, or after an input some node publishes (or might: "
              "an unknown or opaque publisher).", ("id", "id", "the tf_broadcast")),
     _derived(_AL701, "tf_unavailable", "A wait no broadcast in the configuration can ever end: no chain of live "
-             "broadcasts links its two frames, and every node that publishes tf declares what it broadcasts.",
+             "broadcasts links its two frames, every node that publishes tf declares what it broadcasts, and some "
+             "node broadcasts a transform.",
              ("wait", "id", "the tf_wait")),
     _derived(_AL701, "tf_blocked_port", "A port created only after a wait that never ends: the code creates it, the "
              "running system never does.", _PORT, ("wait", "id", "the tf_wait")),

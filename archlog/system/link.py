@@ -21,7 +21,7 @@ from archlog.system.node_models import NodeModels
 from archlog.system.nodelets import is_manager, loaded_ports, loader_ports, manager_summary
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
-from archlog.system.transforms import configured_transforms
+from archlog.system.transforms import configured_transforms, spawns
 from archlog.values import ParamRef
 
 
@@ -151,9 +151,9 @@ def _with_transforms(summary: NodeSummary, model: NodeSummary | None, node: Laun
     if model is not None and not summary.tf_declared and not summary.tf_waits:
         summary = replace(summary, transforms=model.transforms, tf_waits=model.tf_waits,
                           tf_declared=model.tf_declared, tf_description=model.tf_description, tf_args=model.tf_args)
-    if not (summary.tf_description or summary.tf_args):
+    if not (summary.tf_description or summary.tf_args or spawns(node)):
         return summary
     configured = configured_transforms(node, summary, config, workspace, diagnostics)
     if configured is None:  # not known statically: it may broadcast any transform
         return replace(summary, tf_declared=False)
-    return replace(summary, transforms=summary.transforms + tuple(configured))
+    return replace(summary, transforms=summary.transforms + tuple(configured), tf_declared=True)

@@ -4,7 +4,8 @@ The description is a parameter set from a URDF text (`textfile=`) or from a `com
 xacro; xacro files are expanded with the xacro library routed through archlog's restricted evaluator,
 sandboxed reading and budgets (see `xacro_expand`; nothing in them is run), with `$(find pkg)`
 answered from the workspace. The plugins run inside gzserver once
-`spawn_model -param NAME` inserts the model, so their ports are given to that spawn_model instance.
+`spawn_model -param NAME` inserts the model, so their ports are given to that spawn_model instance,
+and so are the transforms they broadcast (a plugin model's `transforms:`).
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from archlog import names, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
 from archlog.extract.library_ports import image_transport_ports, reconfigure_ports
-from archlog.extract.summary import Port
+from archlog.extract.summary import Port, Transform
 from archlog.extract.workspace.index import Workspace
 from archlog.system.command_line import split_options
 from archlog.system.xacro_expand import Place, XacroFailure, expand, parse_xml
@@ -41,6 +42,8 @@ class PluginModel:
     namespace: str  # template
     ports: tuple[tuple[str, str, str, str | None], ...]  # (kind, name template, type, element it needs true)
     transported: frozenset[str] = frozenset()  # name templates of images published through image_transport
+    # (parent, child frame templates, element it needs true); None: what it broadcasts is not modelled
+    transforms: tuple[tuple[str, str, str | None], ...] | None = None
 
 
 @functools.cache
@@ -52,8 +55,10 @@ def plugin_models() -> dict[str, PluginModel]:
             ports = [(KINDS[key], p["name"], p["type"], p.get("if")) for key in KINDS for p in entry.get(key, [])]
             ports += [(*port, None) for ns in entry.get("reconfigure", []) for port in reconfigure_ports(ns)]
             transported = frozenset(p["name"] for p in entry.get("publishers", []) if p.get("transport") == "image")
+            transforms = None if "transforms" not in entry else \
+                tuple((t["parent"], t["child"], t.get("if")) for t in entry["transforms"])
             found[entry["filename"]] = PluginModel(entry["filename"], dict(entry.get("elements") or {}),
-                                                   entry.get("namespace", ""), tuple(ports), transported)
+                                                   entry.get("namespace", ""), tuple(ports), transported, transforms)
     return found
 
 
@@ -78,6 +83,31 @@ def spawned_ports(node: LaunchNode, words: list[str], config: LaunchConfig, work
     return [port for plugin in found.doc.getElementsByTagName("plugin")
             for port in _plugin_ports(plugin, option.get("-robot_namespace"), found.files, found.elem, workspace,
                                       diagnostics)]
+
+
+def spawned_transforms(node: LaunchNode, words: list[str], config: LaunchConfig, workspace: Workspace,
+                       diagnostics: DiagnosticSink) -> list[Transform] | None:
+    """The transforms the gazebo plugins of the description `spawn_model -param NAME` inserts
+    broadcast, or None when some plugin's are not modelled."""
+    _positional, option = split_options(words, {"-param", "-robot_namespace"})
+    found = description(option["-param"], node, config, workspace, diagnostics) if "-param" in option else None
+    if found is None:
+        return None
+    transforms = []
+    for plugin in found.doc.getElementsByTagName("plugin"):
+        model = plugin_models().get(plugin.getAttribute("filename"))
+        if model is None or model.transforms is None:
+            return None
+        values = _element_values(model, plugin, option.get("-robot_namespace"))
+        file, line = where(f'"{model.filename}"', found.files, found.elem, workspace)
+        for parent, child, needs in model.transforms:
+            frames = _fill(parent, values), _fill(child, values)
+            if needs is not None and (values.get(needs) or "").lower() not in ("1", "true"):
+                continue
+            if frames[0] is None or frames[1] is None:
+                return None
+            transforms.append(Transform(frames[0], frames[1], file, line))
+    return transforms
 
 
 def description(param: str, node: LaunchNode, config: LaunchConfig, workspace: Workspace,
@@ -153,10 +183,7 @@ def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: 
         diagnostics.add(file, line, "plugin-no-model", f"gazebo plugin {library or '(no filename)'} has no model "
                         "in archlog/models/plugins/; the ports it creates are unknown")
         return []
-    values: dict[str, str | None] = {}
-    for element, default in model.elements.items():
-        given = robot_ns if element == "robotNamespace" and robot_ns is not None else _text(plugin, element)
-        values[element] = given if given is not None else _fill(default, values)
+    values = _element_values(model, plugin, robot_ns)
 
     def unknown(template: str) -> Unknown:
         missing = sorted(e for e in model.elements if "{" + e + "}" in template and values[e] is None)
@@ -174,6 +201,15 @@ def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: 
         if template in model.transported and isinstance(resolved, str):
             ports += [Port(*port, file, line) for port in image_transport_ports(resolved)]
     return ports
+
+
+def _element_values(model: PluginModel, plugin: xml.dom.minidom.Element, robot_ns: str | None) -> dict[str, str | None]:
+    """The plugin's SDF element values, the model's defaults for those not given."""
+    values: dict[str, str | None] = {}
+    for element, default in model.elements.items():
+        given = robot_ns if element == "robotNamespace" and robot_ns is not None else _text(plugin, element)
+        values[element] = given if given is not None else _fill(default, values)
+    return values
 
 
 def _fill(template: str | None, values: dict[str, str | None]) -> str | None:

@@ -1,6 +1,7 @@
 """Transforms a node broadcasts because of its configuration, not its code: the joints of the robot
 description robot_state_publisher reads (fixed joints at once on /tf_static, moving joints once
-joint states arrive), and the transform static_transform_publisher's command line gives."""
+joint states arrive), the transform static_transform_publisher's command line gives, and those of
+the gazebo plugins of the description spawn_model inserts."""
 
 from __future__ import annotations
 
@@ -11,10 +12,15 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary, Transform
 from archlog.extract.workspace.index import Workspace
-from archlog.system.robot_description import description, where
+from archlog.system.robot_description import description, spawned_transforms, where
 
 # robot_state_publisher publishes a moving joint's transform from the joint_states callback
 JOINT_STATES = "joint_states"
+
+
+def spawns(node: LaunchNode) -> bool:
+    """gazebo_ros spawn_model: the gazebo plugins of the description it inserts broadcast transforms."""
+    return (node.pkg, node.type) == ("gazebo_ros", "spawn_model")
 
 
 def configured_transforms(node: LaunchNode, summary: NodeSummary, config: LaunchConfig, workspace: Workspace,
@@ -22,8 +28,10 @@ def configured_transforms(node: LaunchNode, summary: NodeSummary, config: Launch
     """The transforms a modelled node takes from its robot description parameter or its command line;
     None when they cannot be known statically (then it may broadcast any transform)."""
     found: list[Transform] = []
+    spawned = spawned_transforms(node, shlex.split(node.args), config, workspace, diagnostics) \
+        if spawns(node) else []
     for part in (_joints(node, summary.tf_description, config, workspace, diagnostics) if summary.tf_description
-                 else [], _from_args(node, diagnostics) if summary.tf_args else []):
+                 else [], _from_args(node, diagnostics) if summary.tf_args else [], spawned):
         if part is None:
             return None
         found += part
