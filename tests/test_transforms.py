@@ -65,19 +65,26 @@ def test_blocked_ports_and_the_finding_follow_the_first_wait_that_never_ends() -
     assert not [f for f in findings if f.rule.id == "AL701"]
 
 
-def test_arguments_that_name_no_transform_leave_the_node_undeclared(tmp_path: Path) -> None:
+def _launch(tmp_path: Path, body: str, urdf: str = ""):
+    """The analysis of a one-file launch configuration (with a robot description file, if given)."""
     pkg = tmp_path / "src" / "demo"
     pkg.mkdir(parents=True)
     (pkg / "package.xml").write_text("<package format='2'><name>demo</name><version>0.1.0</version><description>d"
                                      "</description><maintainer email='a@b.c'>m</maintainer><license>MIT</license>"
                                      "</package>")
+    (pkg / "robot.urdf").write_text(urdf)
     launch = pkg / "tf.launch"
-    launch.write_text('<launch>\n<node pkg="tf2_ros" type="static_transform_publisher" name="bad" args="0 0 map"/>\n'
-                      '<node pkg="move_base" type="move_base" name="move_base"/>\n</launch>')
-    analysis = analyse([tmp_path], [str(launch)], {}, [])
+    launch.write_text(f"<launch>\n{body}\n</launch>")
+    return analyse([tmp_path], [str(launch)], {}, [])
+
+
+def test_arguments_that_name_no_transform_leave_the_node_undeclared(tmp_path: Path) -> None:
+    analysis = _launch(tmp_path, '<node pkg="tf2_ros" type="static_transform_publisher" name="bad" args="0 0 map"/>\n'
+                       '<node pkg="move_base" type="move_base" name="move_base"/>')
     [diag] = [d for d in analysis.diagnostics.items if d.code == "tf-args"]
     assert diag.file.endswith("tf.launch") and diag.line == 2 and "'0 0 map'" in diag.message
     assert "/bad" not in {str(r[0]) for r in analysis.store.rows("tf_declared")}
+    assert [str(r[0]) for r in analysis.store.rows("tf_unknown")] == ["/bad"]
     _ctl, findings = Engine(load_rules([])).run(analysis.store)
     assert not [f for f in findings if f.rule.id == "AL701"]  # /bad may broadcast anything
 
@@ -91,3 +98,25 @@ def test_an_after_tf_naming_no_wait_is_a_schema_error(tmp_path: Path) -> None:
     assert [(d.line, d.code) for d in sink.items] == [(6, "model-schema")]
     assert "costmpa" in sink.items[0].message
     assert summary.tf_waits[0].id == "costmap"
+
+
+SPAWN = ('<param name="robot_description" textfile="$(find demo)/robot.urdf"/>\n'
+         '<node pkg="gazebo_ros" type="spawn_model" name="spawn" args="-urdf -param robot_description -model r"/>')
+
+
+def test_gazebo_plugins_broadcast_what_their_model_says(tmp_path: Path) -> None:
+    drive = ('<robot name="r"><link name="chassis"/><gazebo><plugin name="d" filename="libgazebo_ros_diff_drive.so">'
+             '<robotBaseFrame>chassis</robotBaseFrame></plugin></gazebo>'
+             '<gazebo><plugin name="i" filename="libgazebo_ros_imu.so"><topicName>imu</topicName></plugin></gazebo>'
+             '</robot>')
+    store = _launch(tmp_path, SPAWN, drive).store
+    assert [(str(n), p, c) for _i, n, p, c in store.rows("tf_broadcast")] == [("/spawn", "odom", "chassis")]
+    assert [str(r[0]) for r in store.rows("tf_declared")] == ["/spawn"]
+
+
+def test_a_plugin_whose_broadcasts_are_not_modelled_leaves_spawn_model_undeclared(tmp_path: Path) -> None:
+    other = ('<robot name="r"><gazebo><plugin name="s" filename="libgazebo_ros_skid_steer_drive.so"/></gazebo>'
+             '</robot>')
+    store = _launch(tmp_path, SPAWN, other).store
+    assert list(store.rows("tf_broadcast")) == [] and list(store.rows("tf_declared")) == []
+    assert [str(r[0]) for r in store.rows("tf_unknown")] == ["/spawn"]

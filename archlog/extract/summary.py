@@ -165,3 +165,4 @@ class NodeSummary:
     tf_declared: bool = False
     tf_description: str | None = None
     tf_args: bool = False
+    tf_unknown: bool = False  # its description, arguments or gazebo plugins leave what it broadcasts unknown

@@ -153,6 +153,8 @@ def _transforms(store: FactStore, node: LaunchNode, summary: NodeSummary, config
     the fact id of each wait by its model id."""
     if summary.tf_declared:
         store.add("tf_declared", node.name)
+    if summary.tf_unknown:
+        store.add("tf_unknown", node.name)
     for transform in summary.transforms:
         if not _holds(transform.condition, node, config):
             continue

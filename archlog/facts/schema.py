@@ -148,6 +148,9 @@ RELATIONS: tuple[Relation, ...] = (
          ("id", "id", "the broadcast"), ("topic", "name", "a topic that starts it (resolved, remapped)")),
     _rel("transforms", "tf_declared", "A node instance whose broadcasts archlog knows completely: the tf_broadcast rows "
          "are all it broadcasts. Any other node that publishes /tf or /tf_static may broadcast anything.", _NODE),
+    _rel("transforms", "tf_unknown", "A node instance that may broadcast transforms archlog cannot know: its robot "
+         "description cannot be read statically, its static_transform_publisher arguments name no transform, or the "
+         "description it spawns loads a gazebo plugin whose broadcasts are not modelled.", _NODE),
     _rel("transforms", "tf_wait", "A node instance blocks until tf can transform one frame into another (costmap_2d "
          "waits in its constructor for global_frame <- robot_base_frame); frames bound to its parameters.",
          ("id", "id", "the wait; `location` gives the model entry"), _NODE,

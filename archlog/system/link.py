@@ -155,5 +155,5 @@ def _with_transforms(summary: NodeSummary, model: NodeSummary | None, node: Laun
         return summary
     configured = configured_transforms(node, summary, config, workspace, diagnostics)
     if configured is None:  # not known statically: it may broadcast any transform
-        return replace(summary, tf_declared=False)
+        return replace(summary, tf_declared=False, tf_unknown=True)
     return replace(summary, transforms=summary.transforms + tuple(configured), tf_declared=True)
