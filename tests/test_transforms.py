@@ -65,7 +65,7 @@ def test_blocked_ports_and_the_finding_follow_the_first_wait_that_never_ends() -
     assert not [f for f in findings if f.rule.id == "AL701"]
 
 
-def _launch(tmp_path: Path, body: str, urdf: str = ""):
+def _launch(tmp_path: Path, body: str, urdf: str = "", models: list[Path] | None = None):
     """The analysis of a one-file launch configuration (with a robot description file, if given)."""
     pkg = tmp_path / "src" / "demo"
     pkg.mkdir(parents=True)
@@ -75,7 +75,7 @@ def _launch(tmp_path: Path, body: str, urdf: str = ""):
     (pkg / "robot.urdf").write_text(urdf)
     launch = pkg / "tf.launch"
     launch.write_text(f"<launch>\n{body}\n</launch>")
-    return analyse([tmp_path], [str(launch)], {}, [])
+    return analyse([tmp_path], [str(launch)], {}, models or [])
 
 
 def test_arguments_that_name_no_transform_leave_the_node_undeclared(tmp_path: Path) -> None:
@@ -98,6 +98,9 @@ def test_an_after_tf_naming_no_wait_is_a_schema_error(tmp_path: Path) -> None:
     assert [(d.line, d.code) for d in sink.items] == [(6, "model-schema")]
     assert "costmpa" in sink.items[0].message
     assert summary.tf_waits[0].id == "costmap"
+    analysis = _launch(tmp_path / "ws", '<node pkg="demo" type="planner" name="planner"/>', models=[model])
+    assert "model-schema" in [d.code for d in analysis.diagnostics.items], analysis.diagnostics.items  # no crash
+    assert not list(analysis.store.rows("port_after_tf")) and len(list(analysis.store.rows("tf_wait"))) == 1
 
 
 SPAWN = ('<param name="robot_description" textfile="$(find demo)/robot.urdf"/>\n'

@@ -114,7 +114,8 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         pid = store.new_id("p")
         store.locate(pid, port.file, port.line, port.column)
         for wait in port.after_tf:
-            store.add("port_after_tf", pid, waits[wait])
+            if wait in waits:  # an id naming no wait is a model-schema error
+                store.add("port_after_tf", pid, waits[wait])
         sites.setdefault(Site(port.file, port.line), []).append((port.kind, pid))
         for policy, value in port.qos:
             store.add("qos", pid, policy, value)
@@ -175,7 +176,8 @@ def _transforms(store: FactStore, node: LaunchNode, summary: NodeSummary, config
         store.add("tf_wait", waits[wait.id], node.name, _frame(wait.target, node, config),
                   _frame(wait.source, node, config))
         for before in wait.after_tf:
-            store.add("tf_wait_after", waits[wait.id], waits[before])
+            if before in waits:
+                store.add("tf_wait_after", waits[wait.id], waits[before])
     return waits
 
 

@@ -266,6 +266,10 @@ DERIVED: tuple[Relation, ...] = (
              ("wait", "id", "the tf_wait")),
     _derived(_AL701, "tf_blocked_port", "A port created only after a wait that never ends: the code creates it, the "
              "running system never does.", _PORT, ("wait", "id", "the tf_wait")),
+    _derived(_AL701, "tf_reached", "A frame the broadcasts that run link to an unavailable wait's target frame (AL701's "
+             "`reached` list).", ("wait", "id", "the tf_wait"), ("frame", "str", "the frame")),
+    _derived(_AL701, "tf_stalled", "A node whose broadcast would link an unavailable wait's two frames but never starts, "
+             "as nothing publishes its input (AL701's `stalled` list).", ("wait", "id", "the tf_wait"), _NODE),
     _derived("AL102_near_miss_topic.lp", "near_also", "Another candidate as near as the one AL102 names for a "
              "dangling port (AL102's `also` list: the finding's related locations).", _PORT,
              ("other", "id", "the other candidate port")),

@@ -25,8 +25,8 @@ def spawns(node: LaunchNode) -> bool:
 
 def configured_transforms(node: LaunchNode, summary: NodeSummary, config: LaunchConfig, workspace: Workspace,
                           diagnostics: DiagnosticSink) -> list[Transform] | None:
-    """The transforms a modelled node takes from its robot description parameter or its command line;
-    None when they cannot be known statically (then it may broadcast any transform)."""
+    """The transforms a node takes from its robot description parameter, its command line or the gazebo
+    plugins it spawns; None when they cannot be known statically (then it may broadcast any transform)."""
     found: list[Transform] = []
     spawned = spawned_transforms(node, shlex.split(node.args), config, workspace, diagnostics) \
         if spawns(node) else []
