@@ -5,13 +5,14 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import yaml
 from conftest import CORPUS
 
 from archlog.analysis import analyse
 from archlog.diagnostics import DiagnosticSink
 from archlog.rules.engine import Engine
 from archlog.rules.ruleset import load_rules
-from archlog.system.node_models import LineLoader, load_models
+from archlog.system.node_models import BUILTIN_DIR, LineLoader, load_models
 
 CASE = CORPUS / "costmap_frame_unbroadcast"
 
@@ -123,3 +124,33 @@ def test_a_plugin_whose_broadcasts_are_not_modelled_leaves_spawn_model_undeclare
     store = _launch(tmp_path, SPAWN, other).store
     assert list(store.rows("tf_broadcast")) == [] and list(store.rows("tf_declared")) == []
     assert [str(r[0]) for r in store.rows("tf_unknown")] == ["/spawn"]
+
+
+def test_a_source_read_instead_of_the_model_keeps_the_models_marks(tmp_path: Path) -> None:
+    """move_base read from source (every port of the model, so the source is used): the ports the
+    model marks as created after a wait keep that mark, matched by kind and name."""
+    model = yaml.safe_load((BUILTIN_DIR / "move_base.yaml").read_text())["models"][0]
+    calls = [f"rospy.Publisher({p['name']!r}, Empty, queue_size=1)" for p in model["publishers"]] + \
+        [f"rospy.Subscriber({p['name']!r}, Empty, callback)" for p in model["subscribers"]] + \
+        [f"rospy.Service({p['name']!r}, Empty, callback)" for p in model["services"]] + \
+        ["actionlib.SimpleActionServer('move_base', MoveBaseAction, callback, False)"]
+    pkg = tmp_path / "src" / "move_base"
+    (pkg / "scripts").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package format='2'><name>move_base</name><version>1.0.0</version>"
+                                     "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+                                     "<license>BSD</license></package>")
+    (pkg / "CMakeLists.txt").write_text("cmake_minimum_required(VERSION 3.0.2)\nproject(move_base)\n"
+                                        "catkin_install_python(PROGRAMS scripts/move_base "
+                                        "DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n")
+    (pkg / "scripts" / "move_base").write_text(
+        "#!/usr/bin/env python3\nimport actionlib\nimport rospy\nfrom move_base_msgs.msg import MoveBaseAction\n"
+        "from std_msgs.msg import Empty\n\n\ndef callback(*_args):\n    pass\n\n\nrospy.init_node('move_base')\n"
+        + "\n".join(calls) + "\nrospy.spin()\n")
+    launch = pkg / "nav.launch"
+    launch.write_text('<launch><node pkg="move_base" type="move_base" name="move_base"/></launch>')
+    store = analyse([tmp_path], [str(launch)], {}, []).store
+    assert list(store.rows("node_source")) == [("/move_base", "python")]
+    names = {str(r[0]): str(r[2]) for rel in ("publisher", "service_server") for r in store.rows(rel)}
+    marked = {names[str(p)] for p, _w in store.rows("port_after_tf") if str(p) in names}
+    assert {"/move_base/global_costmap/costmap", "/move_base/make_plan", "/move_base/status"} <= marked
+    assert "/cmd_vel" in names.values() and "/cmd_vel" not in marked

@@ -10,7 +10,7 @@ from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.registry import Summaries
-from archlog.extract.summary import NodeSummary
+from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.messages import message_files
 from archlog.system.camera_info import placed_camera_info
@@ -101,16 +101,19 @@ def _action_topic(kind: str, name: str, actions: set[str]) -> bool:
 def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
     """(kind, name) of the ports whose names are known (a parameter's default counts), relative
     names and global ones alike without their leading slash."""
-    found = set()
-    for port in summary.ports:
-        name = port.name.default if isinstance(port.name, ParamRef) else port.name
-        handle = port.handle_ns
-        if port.kind in _COMPARED and isinstance(name, str) and isinstance(handle, str):
-            full = name if name.startswith(("/", "~")) or not handle else \
-                (f"~{name}" if handle == "~" else f"{handle.rstrip('/')}/{name}")
-            if full.strip("/"):
-                found.add((port.kind, full.lstrip("/")))
-    return found
+    return {key for port in summary.ports if (key := _port_key(port)) is not None}
+
+
+def _port_key(port: Port) -> tuple[str, str] | None:
+    """(kind, name) of a port whose name is known, as `_resolved` compares them; None otherwise."""
+    name = port.name.default if isinstance(port.name, ParamRef) else port.name
+    handle = port.handle_ns
+    if port.kind in _COMPARED and isinstance(name, str) and isinstance(handle, str):
+        full = name if name.startswith(("/", "~")) or not handle else \
+            (f"~{name}" if handle == "~" else f"{handle.rstrip('/')}/{name}")
+        if full.strip("/"):
+            return port.kind, full.lstrip("/")
+    return None
 
 
 def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config: LaunchConfig,
@@ -147,9 +150,13 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
 def _with_transforms(summary: NodeSummary, model: NodeSummary | None, node: LaunchNode, config: LaunchConfig,
                      workspace: Workspace, diagnostics: DiagnosticSink) -> NodeSummary:
     """The summary with its model's tf keys (also when its source is read: extraction does not recover
-    transforms) and the transforms its robot description or command line give."""
+    transforms, so a source port gets the `after_tf` of the model's port of that kind and name) and the
+    transforms its robot description, command line or spawned gazebo plugins give."""
     if model is not None and not summary.tf_declared and not summary.tf_waits:
-        summary = replace(summary, transforms=model.transforms, tf_waits=model.tf_waits,
+        marks: dict[tuple[str, str] | None, tuple[str, ...]] = \
+            {key: port.after_tf for port in model.ports if port.after_tf and (key := _port_key(port))}
+        ports = [replace(port, after_tf=marks.get(_port_key(port), port.after_tf)) for port in summary.ports]
+        summary = replace(summary, ports=ports, transforms=model.transforms, tf_waits=model.tf_waits,
                           tf_declared=model.tf_declared, tf_description=model.tf_description, tf_args=model.tf_args)
     if not (summary.tf_description or summary.tf_args or spawns(node)):
         return summary
