@@ -19,9 +19,10 @@ from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels
 from archlog.system.nodelets import is_manager, loaded_ports, loader_ports, manager_summary
+from archlog.system.param_files import file_ports, listed
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
-from archlog.values import ParamRef
+from archlog.values import ParamList, ParamRef
 
 
 @dataclass
@@ -98,10 +99,14 @@ def _action_topic(kind: str, name: str, actions: set[str]) -> bool:
 
 
 def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
-    """(kind, name) of the ports whose names are known (a parameter's default counts), relative
-    names and global ones alike without their leading slash."""
+    """(kind, name) of the ports whose names are known (a parameter's default counts, and so does
+    a list parameter's or a parameter's file's ports, as one), relative names and global ones alike
+    without their leading slash."""
     found = set()
     for port in summary.ports:
+        if isinstance(port.name, ParamList):
+            found.add((port.kind, f"{{{port.name.name}: {port.name.entry or port.name.field}}}"))
+            continue
         name = port.name.default if isinstance(port.name, ParamRef) else port.name
         handle = port.handle_ns
         if port.kind in _COMPARED and isinstance(name, str) and isinstance(handle, str):
@@ -129,6 +134,8 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
             NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")
+    if summary is not None and any(listed(p) for p in summary.ports):
+        summary = replace(summary, ports=file_ports(node, summary.ports, config, workspace, diagnostics))
     if summary is None and node.kind not in missing:
         kind = node.kind
         missing.add(kind)
