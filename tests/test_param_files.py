@@ -97,3 +97,30 @@ def test_invalid_yaml_a_relative_path_and_a_file_without_inputs(tmp_path: Path) 
         analysis = _analyse(tmp_path, f'<param name="yaml_cfg_file" value="{value}"/>', {"mux.yaml": text})
         assert sorted(d.code for d in analysis.diagnostics.items) == codes, value
         assert all(d.line > 0 for d in analysis.diagnostics.items)
+
+
+def test_ports_a_model_lists_by_parameter_count_when_a_source_resolves_fewer(tmp_path: Path) -> None:
+    """A source whose inputs come from a list parameter it reads in a way archlog cannot follow
+    resolves fewer ports than the model that names that list: the model is used."""
+    pkg = tmp_path / "twist_mux"
+    (pkg / "scripts").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package format='2'><name>twist_mux</name><version>0.1.0</version>"
+                                     "<description>d</description><maintainer email='m@example.com'>m</maintainer>"
+                                     "<license>MIT</license></package>")
+    (pkg / "scripts" / "twist_mux").write_text("""#!/usr/bin/env python3
+import rospy
+from diagnostic_msgs.msg import DiagnosticArray
+from geometry_msgs.msg import Twist
+rospy.init_node('twist_mux')
+rospy.Publisher('cmd_vel_out', Twist, queue_size=1)
+rospy.Publisher('/diagnostics', DiagnosticArray, queue_size=1)
+for entry in rospy.get_param('~topics'):
+    rospy.Subscriber(entry['topic'], Twist, print)
+""")
+    (pkg / "scripts" / "twist_mux").chmod(0o755)
+    launch = tmp_path / "mux.launch"
+    launch.write_text("""<launch><node pkg="twist_mux" type="twist_mux" name="twist_mux">
+  <rosparam>topics: [{name: joy, topic: joy_vel, timeout: 0.5, priority: 10}]</rosparam>
+</node></launch>""")
+    analysis = analyse([tmp_path], [str(launch)], {}, [])
+    assert sorted(t for _p, n, t, _ty in analysis.store.rows("subscriber") if isinstance(t, str)) == ["/joy_vel"]
