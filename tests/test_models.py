@@ -236,6 +236,25 @@ def generate_launch_description():
                      ("not-a-file", "spawner's parameter file not read")]
 
 
+def test_a_ros2_models_parameters_are_the_nodes_own(tmp_path: Path) -> None:
+    """A ROS 2 model names parameters without `~` (nav2_amcl's `tf_broadcast`, its `scan_topic`): every
+    ROS 2 parameter is a node's own, so they are read under the node's name, not its namespace."""
+    launch = tmp_path / "amcl.launch.py"
+    launch.write_text("""from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([Node(package="nav2_amcl", executable="amcl", name="amcl", namespace="robot",
+                                   parameters=[{"tf_broadcast": False, "scan_topic": "front/scan"}])])
+""")
+    result = analyse([tmp_path], [str(launch)], {}, [])
+    assert "/tf" not in {t for _p, _n, t, _ty in result.store.rows("publisher")}
+    assert "/robot/front/scan" in {t for _p, _n, t, _ty in result.store.rows("subscriber")}
+    reads = {key for _p, _n, key, _v in result.store.rows("param_read")}
+    assert "/robot/amcl/tf_broadcast" in reads and "/robot/tf_broadcast" not in reads
+
+
 def test_ros2_model_ports_carry_qos(tmp_path: Path) -> None:
     model = tmp_path / "lidar.yaml"
     model.write_text("package: lidar\nexecutable: driver\npublishers:\n"
