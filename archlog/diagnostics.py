@@ -137,7 +137,7 @@ CODES: dict[str, Code] = {
                          "Write <xacro:NAME/>."),
         "rviz-config": ("warning", "An rviz configuration cannot be read; its displays' topics are unknown.",
                         "Check the -d path."),
-        "param-file": ("warning", "A YAML file that a node's parameter names, and whose entries are ports of "
+        "ports-file": ("warning", "A YAML file that a node's parameter names, and whose entries are ports of "
                        "the node (yocs_cmd_vel_mux's yaml_cfg_file), cannot be read, or lacks an entry or has one "
                        "without a name; those ports are unknown.",
                        "Check the parameter's value (an absolute path, usually $(find PKG)/...) and the file's "

@@ -86,14 +86,14 @@ def test_bad_entries_are_diagnostics_at_their_line(tmp_path: Path) -> None:
     analysis = _analyse(tmp_path, '<param name="yaml_cfg_file" value="$(dirname)/mux.yaml"/>', {"mux.yaml": bad})
     assert [t for t, _ty in _ports(analysis, "subscriber")] == ["/cmd_vel_mux/input/a"]
     problems = sorted((d.file, d.line, d.code) for d in analysis.diagnostics.items)
-    assert problems == [("mux.yaml", 3, "param-file"), ("mux.yaml", 4, "param-file")]
+    assert problems == [("mux.yaml", 3, "ports-file"), ("mux.yaml", 4, "ports-file")]
 
 
 def test_invalid_yaml_a_relative_path_and_a_file_without_inputs(tmp_path: Path) -> None:
-    unknown = ["param-file", "port-name-unknown", "port-name-unknown"]  # the inputs and the output are unknown
+    unknown = ["port-name-unknown", "port-name-unknown", "ports-file"]  # the inputs and the output are unknown
     for value, text, codes in (("$(dirname)/mux.yaml", "subscribers: [unclosed\n", unknown),
                                ("mux.yaml", MUX_YAML, unknown),
-                               ("$(dirname)/mux.yaml", "publisher: out\n", ["param-file"])):
+                               ("$(dirname)/mux.yaml", "publisher: out\n", ["ports-file"])):
         analysis = _analyse(tmp_path, f'<param name="yaml_cfg_file" value="{value}"/>', {"mux.yaml": text})
         assert sorted(d.code for d in analysis.diagnostics.items) == codes, value
         assert all(d.line > 0 for d in analysis.diagnostics.items)

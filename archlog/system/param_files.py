@@ -44,7 +44,7 @@ def _listed_ports(port: Port, node: LaunchNode, config: LaunchConfig, workspace:
         return [replace(port, name=Unknown(f"{spec.entry} of the file {param} names ({why})", spec.file, spec.line))]
     at = (elem.file, elem.line) if elem is not None else (node.elem.file, node.elem.line)
     if not Path(value).is_absolute():
-        diagnostics.add(at[0], at[1], "param-file", f"{param} names the file {value} by a relative path, which the "
+        diagnostics.add(at[0], at[1], "ports-file", f"{param} names the file {value} by a relative path, which the "
                         "node resolves against its working directory (unknown statically); the ports listed in it "
                         "are unknown", "warning")
         return [replace(port, name=Unknown(f"{spec.entry} of {value} (a relative path)", at[0], at[1]))]
@@ -57,7 +57,7 @@ def _listed_ports(port: Port, node: LaunchNode, config: LaunchConfig, workspace:
     if entry is None:
         if spec.default is not None:
             return [replace(port, name=spec.default)]
-        diagnostics.add(shown, 1, "param-file", f"{node.name} reads {spec.entry} from this file ({param}), which "
+        diagnostics.add(shown, 1, "ports-file", f"{node.name} reads {spec.entry} from this file ({param}), which "
                         f"has none: no {port.kind.replace('_', ' ')} comes from it", "note")
         return []
     if isinstance(entry, str):
@@ -70,7 +70,7 @@ def _listed_ports(port: Port, node: LaunchNode, config: LaunchConfig, workspace:
             found.append(replace(port, name=name, file=shown, line=line))
         else:
             what = f"an element without a string {spec.field}" if spec.field else "an element that is not a name"
-            diagnostics.add(shown, line, "param-file", f"{spec.entry} of this file ({param} of {node.name}) has "
+            diagnostics.add(shown, line, "ports-file", f"{spec.entry} of this file ({param} of {node.name}) has "
                             f"{what}; it gives no {port.kind.replace('_', ' ')}", "warning")
     return found
 
@@ -95,7 +95,7 @@ def _read(path: Path, param: str, at: tuple[str, int],
                         "unknown", "error")
         return None
     except (yaml.YAMLError, UnicodeDecodeError) as exc:
-        diagnostics.add(at[0], at[1], "param-file", f"{path} ({param}) is not valid YAML ({exc}); the ports listed "
+        diagnostics.add(at[0], at[1], "ports-file", f"{path} ({param}) is not valid YAML ({exc}); the ports listed "
                         "in it are unknown", "warning")
         return None
     lines: dict[str, list[int]] = {}
