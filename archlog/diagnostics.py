@@ -141,6 +141,11 @@ CODES: dict[str, Code] = {
                          "Write <xacro:NAME/>."),
         "rviz-config": ("warning", "An rviz configuration cannot be read; its displays' topics are unknown.",
                         "Check the -d path."),
+        "ports-file": ("warning", "A YAML file that a node's parameter names, and whose entries are ports of "
+                       "the node (yocs_cmd_vel_mux's yaml_cfg_file), cannot be read, or lacks an entry or has one "
+                       "without a name; those ports are unknown.",
+                       "Check the parameter's value (an absolute path, usually $(find PKG)/...) and the file's "
+                       "entries against the node's documentation."),
     }),
     **_codes("Trust boundary (see docs/security.md)", {
         "outside-workspace": ("error", "A file outside the analysed paths and package roots was asked for; it is "

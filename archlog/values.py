@@ -51,12 +51,16 @@ class ParamRef:
 @dataclass(frozen=True)
 class ParamList:
     """Names taken from a list parameter, one per element (the element itself, or its `field`):
-    twist_mux's `~topics: [{name: joy, topic: joy_vel}, ...]`."""
+    twist_mux's `~topics: [{name: joy, topic: joy_vel}, ...]`. With `entry`, the parameter names a
+    YAML file and the names are in that file's `entry` (a list as above, or one name; `default`
+    when the file lacks it): yocs_cmd_vel_mux's `~yaml_cfg_file` (system/param_files.py)."""
 
     name: str
     field: str = ""
     file: str = ""
     line: int = 0
+    entry: str = ""
+    default: str | None = None
 
 
 @dataclass(frozen=True)

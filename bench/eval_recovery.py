@@ -338,11 +338,13 @@ CAUSES = {
                        "controller advertises /tf unconditionally (diff_drive_controller.cpp:727), so the master "
                        "sees it even with enable_odom_tf: false (husky control.yaml).",
     "param-list": "topic names read at run time from a YAML file: cmd_vel_mux parses its yaml_cfg_file with "
-                  "yaml-cpp (publisher, subscribers[].topic).",
+                  "yaml-cpp (publisher, subscribers[].topic); since 2026-11-24 the shipped model "
+                  "yocs_cmd_vel_mux.yaml lists them ({file: ~yaml_cfg_file, ...}, system/param_files.py).",
     "nh-across": "a NodeHandle handed to another object and used there: kobuki SafetyController(nh, name) "
-                 "stores it in a member and subscribes/advertises in init(), defined in safety_controller.hpp; "
-                 "nodelet.cpp stops compiling at a missing include (ecl/threads/thread.hpp) before that header, "
-                 "and the token fallback reads only the nodelet's own file.",
+                 "stores it in a member and subscribes/advertises in init(), defined in safety_controller.hpp "
+                 "(which is parsed; the missing ecl include only makes the nodelet class invalid, and the calls "
+                 "stay in the AST); a nodelet was read as its exported class's methods only, so the helper's "
+                 "init() was dropped. Since 2026-11-24 the functions those methods call are read too (scope.py).",
     "loader-call-sites": "nodelet's Loader(bool) and Loader(const NodeHandle&) both call constructorImpl in "
                          "loader.cpp with different handles; which one the manager uses is decided in nodelet.cpp "
                          "(another file), so the load_nodelet/unload_nodelet/list services' names stay unknown "

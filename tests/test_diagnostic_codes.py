@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import ast
+from collections import Counter
 from pathlib import Path
 
 import pytest
@@ -50,3 +52,12 @@ def test_codes_are_selected_ignored_and_rated_in_the_configuration(tmp_path: Pat
     (tmp_path / "archlog.toml").write_text('select = ["launch-"]\n')
     assert [d.code for d in load_config(tmp_path / "archlog.toml", None).diagnostics(items)] == \
         ["launch-process", "launch-tag"]
+
+
+def test_no_code_is_registered_twice() -> None:
+    """CODES merges one table per group: a code written in two tables would silently keep only the last."""
+    tree = ast.parse((PACKAGE / "diagnostics.py").read_text())
+    tables = [node.args[1] for node in ast.walk(tree) if isinstance(node, ast.Call)
+              and getattr(node.func, "id", "") == "_codes" and isinstance(node.args[1], ast.Dict)]
+    written = Counter(key.value for table in tables for key in table.keys if isinstance(key, ast.Constant))
+    assert sum(written.values()) == len(CODES) and [c for c, n in written.items() if n > 1] == []

@@ -125,6 +125,10 @@ CASES = [
     case("rviz_laughs", "ros1", {"rviz.launch": ros1('  <node pkg="rviz" type="rviz" name="rviz" '
                                                      'args="-d $(find demo)/launch/laughs.rviz"/>\n'),
                                  "laughs.rviz": laughs("")}, "rviz.launch", line=2),
+    case("ports_file_laughs", "ros1", {"mux.launch": ros1(
+        '  <node pkg="nodelet" type="nodelet" name="mux" args="load yocs_cmd_vel_mux/CmdVelMuxNodelet m">\n'
+        '    <param name="yaml_cfg_file" value="$(find demo)/launch/mux_laughs.yaml"/>\n  </node>\n'),
+        "mux_laughs.yaml": "subscribers:\n" + laughs("  ")}, "mux.launch", line=3),
     ros1_eval("eval_power_tower", "9**9**9**9"),
     ros1_eval("eval_factorial", "factorial(10**8)"),
     ros1_eval("eval_exponent_past_floats", "2**(10**400)"),

@@ -192,6 +192,69 @@ def test_spawner_given_a_yaml_file_loads_it_and_spawns_its_controllers(tmp_path:
     assert [d.code for d in result.diagnostics.items] == ["not-a-file"]
 
 
+def test_ros2_spawner_gives_its_controllers_the_parameters_of_its_param_file(tmp_path: Path) -> None:
+    """ROS 2: a controller is a node named after it in the controller manager's namespace; --param-file
+    gives it parameters (here use_stamped_vel, which decides its input topic), the type comes from -t,
+    the file or the controller manager's NAME.type, and a spawner without a name calls itself
+    spawner_<first controller>."""
+    (tmp_path / "drive.yaml").write_text("drive:\n  ros__parameters:\n    use_stamped_vel: false\n"
+                                         "    wheel_radius: 0.1\nother:\n  ros__parameters:\n    rate: 5\n")
+    (tmp_path / "typed.yaml").write_text("/**:\n  ros__parameters:\n    type: diff_drive_controller/DiffDriveController\n")
+    launch = tmp_path / "base.launch.py"
+    launch.write_text(f"""from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    spawn = lambda *args: Node(package="controller_manager", executable="spawner", namespace="robot", arguments=list(args))
+    return LaunchDescription([
+        Node(package="controller_manager", executable="ros2_control_node", namespace="robot",
+             parameters=[{{"drive.type": "diff_drive_controller/DiffDriveController"}}]),
+        spawn("drive", "--param-file", "{tmp_path}/drive.yaml"),
+        spawn("stamped", "-t", "diff_drive_controller/DiffDriveController", "-c", "/robot/controller_manager"),
+        spawn("wildcard", "-p", "{tmp_path}/typed.yaml"),
+        spawn("untyped"),
+        spawn("unread", "-p", "{tmp_path}/missing.yaml"),
+    ])
+""")
+    result = analyse([tmp_path], [str(launch)], {}, [])
+    nodes = sorted(n for n, *_ in result.store.rows("node"))
+    assert nodes == ["/robot/controller_manager", "/robot/drive", "/robot/spawner_drive", "/robot/spawner_stamped",
+                     "/robot/spawner_unread", "/robot/spawner_untyped", "/robot/spawner_wildcard",
+                     "/robot/stamped", "/robot/wildcard"]
+    subs = sorted((n, t, ty) for _p, n, t, ty in result.store.rows("subscriber"))
+    assert subs == [("/robot/drive", "/robot/drive/cmd_vel_unstamped", "geometry_msgs/msg/Twist"),
+                    ("/robot/stamped", "/robot/stamped/cmd_vel", "geometry_msgs/msg/TwistStamped"),
+                    ("/robot/wildcard", "/robot/wildcard/cmd_vel", "geometry_msgs/msg/TwistStamped")]
+    params = {name: value for name, value, _elem in result.store.rows("param")}
+    assert params["/robot/drive/wheel_radius"] == "0.1" and "/robot/other/rate" not in params
+    codes = sorted((d.code, d.message.split(":")[0]) for d in result.diagnostics.items)
+    assert codes == [("controller-type", "spawner loads /robot/unread into /robot/controller_manager, but its type "
+                      "(PKG/Class) is not given"),
+                     ("controller-type", "spawner loads /robot/untyped into /robot/controller_manager, but its type "
+                      "(PKG/Class) is not given"),
+                     ("not-a-file", "spawner's parameter file not read")]
+
+
+def test_a_ros2_models_parameters_are_the_nodes_own(tmp_path: Path) -> None:
+    """A ROS 2 model names parameters without `~` (nav2_amcl's `tf_broadcast`, its `scan_topic`): every
+    ROS 2 parameter is a node's own, so they are read under the node's name, not its namespace."""
+    launch = tmp_path / "amcl.launch.py"
+    launch.write_text("""from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([Node(package="nav2_amcl", executable="amcl", name="amcl", namespace="robot",
+                                   parameters=[{"tf_broadcast": False, "scan_topic": "front/scan"}])])
+""")
+    result = analyse([tmp_path], [str(launch)], {}, [])
+    assert "/tf" not in {t for _p, _n, t, _ty in result.store.rows("publisher")}
+    assert "/robot/front/scan" in {t for _p, _n, t, _ty in result.store.rows("subscriber")}
+    reads = {key for _p, _n, key, _v in result.store.rows("param_read")}
+    assert "/robot/amcl/tf_broadcast" in reads and "/robot/tf_broadcast" not in reads
+
+
 def test_ros2_model_ports_carry_qos(tmp_path: Path) -> None:
     model = tmp_path / "lidar.yaml"
     model.write_text("package: lidar\nexecutable: driver\npublishers:\n"

@@ -127,7 +127,9 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
             for period in _options(_bind(port.name, node, config)):
                 store.add("timer", pid, node.name, period)
             continue
-        before_remaps = [_resolve(option, port.handle_ns, node, config, remaps)
+        handle_ns = _PRIVATE if port.kind in ("param_read", "param_write") and _own_param(port.handle_ns, node) \
+            else port.handle_ns
+        before_remaps = [_resolve(option, handle_ns, node, config, remaps)
                          for option in _options(_bind(port.name, node, config))]
         resolved = [(b, b if isinstance(b, Unknown) else names.remap(b, remaps)) for b in before_remaps]
         if isinstance(port.name, ParamRef) and isinstance(key := _param_key(port.name, node, config), str):
@@ -262,7 +264,17 @@ def _param_topics(store: FactStore, system: System) -> None:
 
 def _param_key(ref: ParamRef, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
     """The resolved name of the parameter a value is read from."""
-    return _resolve(_single(_bind(ref.name, node, config)), ref.handle_ns, node, config, {})
+    handle_ns = _PRIVATE if _own_param(ref.handle_ns, node) else ref.handle_ns
+    return _resolve(_single(_bind(ref.name, node, config)), handle_ns, node, config, {})
+
+
+_PRIVATE = "~"
+
+
+def _own_param(handle_ns: Value, node: LaunchNode) -> bool:
+    """A ROS 2 parameter named without a handle (as a model writes `tf_broadcast`): every ROS 2
+    parameter is a node's own, so the name is relative to the node, not to its namespace."""
+    return node.ros2 and handle_ns == ""
 
 
 def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown | Alternatives:

@@ -19,10 +19,11 @@ from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels
 from archlog.system.nodelets import is_manager, loaded_ports, loader_ports, manager_summary
+from archlog.system.param_files import file_ports, listed
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
 from archlog.system.transforms import configured_transforms, spawns
-from archlog.values import ParamRef
+from archlog.values import ParamList, ParamRef
 
 
 @dataclass
@@ -99,13 +100,16 @@ def _action_topic(kind: str, name: str, actions: set[str]) -> bool:
 
 
 def _resolved(summary: NodeSummary) -> set[tuple[str, str]]:
-    """(kind, name) of the ports whose names are known (a parameter's default counts), relative
-    names and global ones alike without their leading slash."""
+    """(kind, name) of the ports whose names are known (a parameter's default counts, and so does
+    a list parameter's or a parameter's file's ports, as one), relative names and global ones alike
+    without their leading slash."""
     return {key for port in summary.ports if (key := _port_key(port)) is not None}
 
 
 def _port_key(port: Port) -> tuple[str, str] | None:
     """(kind, name) of a port whose name is known, as `_resolved` compares them; None otherwise."""
+    if isinstance(port.name, ParamList):
+        return port.kind, f"{{{port.name.name}: {port.name.entry or port.name.field}}}"
     name = port.name.default if isinstance(port.name, ParamRef) else port.name
     handle = port.handle_ns
     if port.kind in _COMPARED and isinstance(name, str) and isinstance(handle, str):
@@ -134,6 +138,8 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
             NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")
+    if summary is not None and any(listed(p) for p in summary.ports):
+        summary = replace(summary, ports=file_ports(node, summary.ports, config, workspace, diagnostics))
     if summary is not None:
         summary = _with_transforms(summary, model, node, config, workspace, diagnostics)
     if summary is None and node.kind not in missing:

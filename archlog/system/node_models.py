@@ -1,22 +1,23 @@
 """Hand-written YAML node models for nodes without source, and external producers/consumers.
 
-A model file holds one model or a list under `models:`. Each model names `package` and
-`executable` (or `instance`, the resolved name of an external node that is always part of the
-configuration) and lists its ports. A name may be a string or `{param: NAME, default: VALUE}`;
-`{each: LIST_PARAM, field: KEY}` makes one port per element of a list parameter (twist_mux's
-inputs); a port with `if: {param: NAME, default: VALUE}` exists only when that parameter is true (or
-equals `equals`), and with `if: {param: NAME, set: true}` only when the configuration sets it. A
-ROS 2 port may give `qos:` as a preset's name or as `{preset: P, reliability: ..., depth: ...,
-deadline: SECONDS, ...}` (rmw's default profile when no preset is named). An image port with
-`camera_info: true` is an image_transport camera subscriber or publisher: its camera_info topic is
-the sibling of the image topic as resolved and remapped (system/link.py). `plugins:` lists where a node
-loads pluginlib classes its parameters choose (see `PluginSlot`), and a file's `classes:` the ports
-such a class creates in the namespace its host gives it (system/plugin_slots.py). A model with
-`incomplete: REASON` lists only some ports, so its nodes count as opaque. `tf_broadcasts` (with
-`tf_description`, `tf_args`) says which transforms the node broadcasts, `tf_waits` which ones it
-blocks for, and a port's or slot's `after_tf` which of those waits come before it. The format's
-JSON Schema is archlog/models/model.schema.json; a file that breaks it is reported at the offending
-entry's line and its valid models are still used.
+A model file holds one model or a list under `models:`. Each model names `package` and `executable`
+(or `instance`, the resolved name of an external node that is always part of the configuration) and
+lists its ports. A name may be a string or `{param: NAME, default: VALUE}`; `{each: LIST_PARAM,
+field: KEY}` makes one port per element of a list parameter (twist_mux's inputs), `{file: PARAM,
+key: KEY, field: FIELD}` one per element of the list KEY in the YAML file PARAM names
+(yocs_cmd_vel_mux's inputs; system/param_files.py); a port with `if: {param: NAME, default: VALUE}`
+exists only when that parameter is true (or equals `equals`), and with `if: {param: NAME, set:
+true}` only when the configuration sets it. A ROS 2 port may give `qos:` as a preset's name or as
+`{preset: P, reliability: ..., depth: ..., deadline: SECONDS, ...}` (rmw's default profile when no
+preset is named). An image port with `camera_info: true` is an image_transport camera subscriber or
+publisher: its camera_info topic is the sibling of the image topic as resolved and remapped
+(system/link.py). `plugins:` lists where a node loads pluginlib classes its parameters choose (see
+`PluginSlot`), and a file's `classes:` the ports such a class creates in the namespace its host
+gives it (system/plugin_slots.py). A model with `incomplete: REASON` lists only some ports, so its
+nodes count as opaque. `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the
+node broadcasts, `tf_waits` which ones it blocks for, and a port's or slot's `after_tf` which of those
+waits come before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
+breaks it is reported at the offending entry's line and its valid models are still used.
 """
 
 from __future__ import annotations
@@ -202,7 +203,8 @@ def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: 
     default = port.get("default")
     condition = port.get("if")
     name = _name(port["name"], shown, port["__line__"])
-    image = Port(kind, name, str(port.get("type", "")), shown, port["__line__"], 0, "",
+    private = isinstance(port["name"], dict) and port["name"].get("private")
+    image = Port(kind, name, str(port.get("type", "")), shown, port["__line__"], 0, "~" if private else "",
                  None if default is None else str(default), qos=() if "qos" not in port else _qos(port["qos"]),
                  condition=None if condition is None else _condition(condition, shown),
                  after_tf=tuple(port.get("after_tf", ())))
@@ -267,6 +269,10 @@ def _without_lines(data: object) -> object:
 
 
 def _name(raw: object, shown: str, line: int) -> Value:
+    if isinstance(raw, dict) and "file" in raw:
+        default = raw.get("default")
+        return ParamList(str(raw["file"]), str(raw.get("field", "")), shown, line, str(raw["key"]),
+                         None if default is None else str(default))
     if isinstance(raw, dict) and "each" in raw:
         return ParamList(str(raw["each"]), str(raw.get("field", "")), shown, line)
     if isinstance(raw, dict) and "param" in raw:

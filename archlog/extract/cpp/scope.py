@@ -59,7 +59,9 @@ class Scope:
 
     def relevant(self, cursors: list[ci.Cursor]) -> tuple[list[ci.Cursor], list[tuple[int, int]] | None]:
         """All cursors, or for a nodelet class only those inside its methods and free functions
-        (with the spans of their lines)."""
+        (with the spans of their lines), and those of the other functions they call, in the file
+        or in the workspace's headers (a helper object's methods that subscribe on the handle
+        the nodelet gave it)."""
         if self.cls is None:
             return cursors, None
         self.classes, self.members = _with_bases(self.classes, cursors)
@@ -71,7 +73,28 @@ class Scope:
                 if cursor.kind == K.FUNCTION_DECL or qualified(owner) in self.classes:
                     kept += list(cursor.walk_preorder())
                     spans.append((cursor.extent.start.line, cursor.extent.end.line))
-        return kept, spans
+        return kept + _reached(kept, set(cursors)), spans
+
+
+def _reached(kept: list[ci.Cursor], readable: set[ci.Cursor]) -> list[ci.Cursor]:
+    """The cursors of the definitions (among `readable`) that the kept code calls, transitively."""
+    seen = set(kept)
+    found: list[ci.Cursor] = []
+    pending = _callees(kept)
+    while pending and len(found) < 40000:
+        definition = pending.pop().get_definition()
+        if definition is None or definition in seen or definition not in readable:
+            continue
+        body = list(definition.walk_preorder())
+        seen.update(body)
+        found += body
+        pending += _callees(body)
+    return found
+
+
+def _callees(cursors: list[ci.Cursor]) -> list[ci.Cursor]:
+    return [c.referenced for c in cursors if c.kind in (K.CALL_EXPR, K.DECL_REF_EXPR, K.MEMBER_REF_EXPR)
+            and c.referenced is not None and c.referenced.kind in _CALLABLE]
 
 
 def _with_bases(classes: list[str], cursors: list[ci.Cursor]) -> tuple[list[str], list[ci.Cursor]]:
