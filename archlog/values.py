@@ -97,7 +97,18 @@ class Alternatives:
     every: bool = False
 
 
-Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives
+@dataclass(frozen=True)
+class Namespace:
+    """What roscpp's NodeHandle::getNamespace() returns (ros::this_node::getNamespace() is the node's own
+    handle's): the handle's namespace resolved and remapped in the node instance ("/" at the root), less
+    the first `cut` characters string edits removed (`ns.erase(0, 1)`, `ns.substr(1)`). `handle` is the
+    handle's namespace as written ("" for the node's own, "~" for its private one)."""
+
+    handle: Value = ""
+    cut: int = 0
+
+
+Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives | Namespace
 MAX_ALTERNATIVES = 16
 
 

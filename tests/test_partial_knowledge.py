@@ -118,3 +118,25 @@ def test_a_remap_that_may_match_makes_the_name_anything(tmp_path: Path) -> None:
     remapping may be the remap's target too, so only the name before remapping keeps them."""
     assert _relay(tmp_path, '<remap from="robot_7/scan" to="/front_scan"/>') == {
         "publisher": None, "subscriber": ("/r1/relay", ""), "publisher before remaps": ("/r1/robot_", "/scan")}
+
+
+def test_names_from_get_namespace_resolve_as_roscpp_does(tmp_path: Path) -> None:
+    """corpus/cpp_ros1/roscpp_namespace_edits.cpp in namespace /r1, its "arm" handle remapped: getNamespace()
+    is the handle's resolved, remapped namespace; a name made relative by erasing its slash resolves again."""
+    package = tmp_path / "src" / "odometry"
+    (package / "src").mkdir(parents=True)
+    (package / "launch").mkdir()
+    (package / "package.xml").write_text(
+        (CORPUS / "namespace_prefix" / "clean" / "src" / "rover_base" / "package.xml").read_text()
+        .replace("rover_base", "odometry"))
+    (package / "CMakeLists.txt").write_text("cmake_minimum_required(VERSION 3.0.2)\nproject(odometry)\n"
+                                            "add_executable(odometer src/odometer.cpp)\n")
+    (package / "src" / "odometer.cpp").write_text(
+        (CORPUS.parent / "cpp_ros1" / "roscpp_namespace_edits.cpp").read_text())
+    (package / "launch" / "odometer.launch").write_text(
+        '<launch><group ns="r1"><node pkg="odometry" type="odometer" name="odometer">'
+        '<remap from="arm" to="manipulator"/></node></group></launch>')
+    analysis = analyse([tmp_path], ["odometry/launch/odometer.launch"], {}, [])
+    assert sorted(str(name) for kind in ("publisher", "subscriber") for _p, _n, name, _t in rows(analysis, kind)) == [
+        "/r1/heartbeat", "/r1/r1/manipulator/command", "/r1/r1/odom", "/r1/r1/odometer/scan", "/r1/status",
+        "?(chosen (string edits not understood) + '/debug')"]

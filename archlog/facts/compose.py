@@ -15,7 +15,7 @@ from archlog.facts.similarity import namespace_steps, near_names, too_long
 from archlog.facts.store import FactStore
 from archlog.system.link import System
 from archlog.system.node_models import UNSET
-from archlog.values import Alternatives, Concat, ParamList, ParamRef, Unknown, Value, concat, partly_known
+from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Unknown, Value, concat, partly_known
 
 QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
 _MAX_INT = 2**31 - 1  # clingo's integers are 32-bit
@@ -257,6 +257,8 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
             found = config.params[key][0]
             return found if isinstance(found, Unknown) else _text(found)
         return _bind(value.default, node, config)
+    if isinstance(value, Namespace):
+        return _namespace(value, node, config)
     if isinstance(value, Alternatives):
         bound = [_bind(option, node, config) for option in value.options]
         flat = [o for b in bound for o in _options(b)]
@@ -268,6 +270,16 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
         return partly_known(joined.parts)  # type: ignore[arg-type]  # bound parts are strings and unknowns
     assert isinstance(joined, (str, Unknown, Alternatives))  # concat of bound parts has no reference left
     return joined
+
+
+def _namespace(value: Namespace, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
+    """The namespace a handle's getNamespace() returns in this instance, as roscpp resolves it (the handle's
+    own namespace remapped), less the characters the code cut off."""
+    handle = _handle_namespace(value.handle, node, config)
+    if isinstance(handle, Unknown):
+        return handle
+    remaps = names.resolve_remaps([(src, dst) for src, dst, _ in node.remaps], node.namespace, node.name)
+    return (names.remap(handle, remaps) if handle else names.canonical(node.namespace) or "/")[value.cut:]
 
 
 def _each(port: Port, node: LaunchNode, config: LaunchConfig) -> list[Port]:
