@@ -138,5 +138,6 @@ def test_names_from_get_namespace_resolve_as_roscpp_does(tmp_path: Path) -> None
         '<remap from="arm" to="manipulator"/></node></group></launch>')
     analysis = analyse([tmp_path], ["odometry/launch/odometer.launch"], {}, [])
     assert sorted(str(name) for kind in ("publisher", "subscriber") for _p, _n, name, _t in rows(analysis, kind)) == [
-        "/r1/heartbeat", "/r1/r1/manipulator/command", "/r1/r1/odom", "/r1/r1/odometer/scan", "/r1/status",
+        "/r1/heartbeat", "/r1/r1/manipulator/command", "/r1/r1/odom", "/r1/r1/odometer/scan", "/r1/r1/relay",
+        "/r1/status",
         "?(chosen (string edits not understood) + '/debug')"]

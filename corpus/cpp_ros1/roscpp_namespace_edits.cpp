@@ -9,6 +9,20 @@
 
 void on_command(const std_msgs::String::ConstPtr& msg) {}
 
+class Relay {
+ public:
+  explicit Relay(ros::NodeHandle& nh) {
+    topic_ = "relay";  // an assignment to a member: no variable on its left
+    std::string ns = nh.getNamespace();
+    ns.erase(0, 1);
+    pub_ = nh.advertise<std_msgs::String>(ns + "/" + topic_, 1);
+  }
+
+ private:
+  std::string topic_;
+  ros::Publisher pub_;
+};
+
 int main(int argc, char** argv)
 {
   ros::init(argc, argv, "odometer");
@@ -31,6 +45,7 @@ int main(int argc, char** argv)
   if (argc > 2)
     chosen.erase(0, 1);
   ros::Publisher debug = nh.advertise<std_msgs::String>(chosen + "/debug", 1);
+  Relay relay(nh);
   ros::spin();
   return 0;
 }

@@ -72,20 +72,20 @@ def before(found: list[Edit], use: ci.Cursor) -> list[Edit]:
 def self_edit(rhs: ci.Cursor, decl: ci.Cursor) -> bool:
     """An assigned value that is the variable itself cut (`ns = ns.substr(1)`): an edit, not another value."""
     call = next((c for c in rhs.walk_preorder() if c.kind == K.CALL_EXPR and c.spelling == "substr"), None)
-    return call is not None and _edited(call) == decl
+    return call is not None and _is(_edited(call), decl)
 
 
 def _edit_calls(cursor: ci.Cursor, decl: ci.Cursor,
                 conditions: list[ci.Cursor | None]) -> list[tuple[ci.Cursor, list[ci.Cursor | None]]]:
     """The erase calls on `decl` and assignments `decl = decl.substr(...)` under `cursor`, each with the
     conditions it is under (None for a loop or an else branch, which are not understood)."""
-    if cursor.kind == K.CALL_EXPR and cursor.spelling == "erase" and _edited(cursor) == decl:
+    if cursor.kind == K.CALL_EXPR and cursor.spelling == "erase" and _is(_edited(cursor), decl):
         return [(cursor, conditions)]
     if cursor.kind in (K.CALL_EXPR, K.BINARY_OPERATOR) and cursor.spelling in ("operator=", "="):
         parts = list(cursor.get_children())
         target = next((c.referenced for c in parts[0].walk_preorder() if c.kind == K.DECL_REF_EXPR), None) \
             if parts else None
-        if target == decl and self_edit(parts[-1], decl):
+        if _is(target, decl) and self_edit(parts[-1], decl):
             return [(next(c for c in parts[-1].walk_preorder() if c.spelling == "substr"), conditions)]
     children = list(cursor.get_children())
     found = []
@@ -105,6 +105,10 @@ def _edited(call: ci.Cursor) -> ci.Cursor | None:
     if member is None or member.kind != K.MEMBER_REF_EXPR:
         return None
     return next((c.referenced for c in member.walk_preorder() if c.kind == K.DECL_REF_EXPR), None)
+
+
+def _is(cursor: ci.Cursor | None, decl: ci.Cursor) -> bool:
+    return cursor is not None and cursor == decl  # (comparing a cursor with None raises)
 
 
 def _tests_slash(condition: ci.Cursor, name: str) -> bool:
