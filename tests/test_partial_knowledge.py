@@ -122,7 +122,8 @@ def test_a_remap_that_may_match_makes_the_name_anything(tmp_path: Path) -> None:
 
 def test_names_from_get_namespace_resolve_as_roscpp_does(tmp_path: Path) -> None:
     """corpus/cpp_ros1/roscpp_namespace_edits.cpp in namespace /r1, its "arm" handle remapped: getNamespace()
-    is the handle's resolved, remapped namespace; a name made relative by erasing its slash resolves again."""
+    is the handle's resolved, remapped namespace; a name made relative by erasing its slash resolves again. A
+    handle in a namespace known only at run time keeps what is known of it (the private namespace it lies in)."""
     package = tmp_path / "src" / "odometry"
     (package / "src").mkdir(parents=True)
     (package / "launch").mkdir()
@@ -139,5 +140,7 @@ def test_names_from_get_namespace_resolve_as_roscpp_does(tmp_path: Path) -> None
     analysis = analyse([tmp_path], ["odometry/launch/odometer.launch"], {}, [])
     assert sorted(str(name) for kind in ("publisher", "subscriber") for _p, _n, name, _t in rows(analysis, kind)) == [
         "/r1/heartbeat", "/r1/r1/manipulator/command", "/r1/r1/odom", "/r1/r1/odometer/scan", "/r1/r1/relay",
-        "/r1/status",
-        "?(chosen (string edits not understood) + '/debug')"]
+        "/r1/status", "?('~/' + argv [ 1 ]/state)", "?(chosen (string edits not understood) + '/debug')"]
+    assert {(str(u), p, s) for u, p, s in rows(analysis, "unknown_pattern")} == {
+        ("?(chosen (string edits not understood) + '/debug')", "", "/debug"),
+        ("?('~/' + argv [ 1 ]/state)", "/r1/odometer", "/state")}

@@ -191,8 +191,9 @@ def _resolve(name: str | Unknown, handle_ns: Value, node: LaunchNode, config: La
     if name.startswith("/"):
         return names.canonical(name)
     handle = _handle_namespace(handle_ns, node, config)
-    if isinstance(handle, Unknown):
-        return Unknown(f"{handle.expr}/{name}", handle.file, handle.line, suffix=_tail("/" + name))
+    if isinstance(handle, Unknown):  # it keeps the known start of the handle's namespace
+        start = _resolve(handle, "", node, config, remaps).prefix
+        return Unknown(f"{handle.expr}/{name}", handle.file, handle.line, start, _tail("/" + name))
     return names.join(names.remap(handle, remaps) if handle and not node.ros2 else handle or node.namespace, name)
 
 

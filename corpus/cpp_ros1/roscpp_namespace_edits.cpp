@@ -46,6 +46,8 @@ int main(int argc, char** argv)
     chosen.erase(0, 1);
   ros::Publisher debug = nh.advertise<std_msgs::String>(chosen + "/debug", 1);
   Relay relay(nh);
+  ros::NodeHandle plugin(pnh, argv[1]);  // a namespace known only at run time, under the private one
+  ros::Publisher state = plugin.advertise<std_msgs::String>("state", 1);
   ros::spin();
   return 0;
 }
