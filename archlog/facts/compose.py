@@ -183,18 +183,24 @@ def _resolve(name: str | Unknown, handle_ns: Value, node: LaunchNode, config: La
     """Resolve one bound port name in the instance's context (handle namespace, `~`), before the name's
     own remap. As roscpp does, a ROS 1 NodeHandle's namespace is itself remapped with `remaps` first."""
     if isinstance(name, Unknown):
-        prefix = _resolve(name.prefix, handle_ns, node, config, remaps) if name.prefix else ""
-        return replace(name, prefix="" if isinstance(prefix, Unknown) else prefix.rstrip("/"),
-                       suffix=_tail(name.suffix))
+        return _known_parts(name, handle_ns, node, config, remaps)
     if name.startswith("~"):
         return names.join(node.name, name[1:].lstrip("/"))
     if name.startswith("/"):
         return names.canonical(name)
     handle = _handle_namespace(handle_ns, node, config)
     if isinstance(handle, Unknown):  # it keeps the known start of the handle's namespace
-        start = _resolve(handle, "", node, config, remaps).prefix
+        start = _known_parts(handle, "", node, config, remaps).prefix
         return Unknown(f"{handle.expr}/{name}", handle.file, handle.line, start, _tail("/" + name))
     return names.join(names.remap(handle, remaps) if handle and not node.ros2 else handle or node.namespace, name)
+
+
+def _known_parts(name: Unknown, handle_ns: Value, node: LaunchNode, config: LaunchConfig,
+                 remaps: dict[str, str]) -> Unknown:
+    """An unknown name's known start resolved as the name would be (in the handle's namespace, `~` in the
+    node's), and its known end cleaned."""
+    prefix = _resolve(name.prefix, handle_ns, node, config, remaps) if name.prefix else ""
+    return replace(name, prefix="" if isinstance(prefix, Unknown) else prefix.rstrip("/"), suffix=_tail(name.suffix))
 
 
 def _tail(text: str) -> str:
