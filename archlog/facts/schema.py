@@ -152,6 +152,9 @@ RELATIONS: tuple[Relation, ...] = (
          ("value", "id", "the unknown name, a term unknown(N)"),
          ("prefix", "str", "what the resolved name starts with (\"\" when unknown)"),
          ("suffix", "str", "what it ends with (\"\" when unknown)")),
+    _rel("derived", "may_name", "An unknown name with known parts (unknown_pattern) and a name some port or remap "
+         "uses that fits them: the unknown name might be it.", ("value", "id", "the unknown name"),
+         ("name", "name", "the name it might be")),
     _rel("derived", "near_name",
          "Two names used in the system, one of them used by one side only (published and not subscribed, served "
          "and not called, or the reverse), whose segment distance is below the near-miss threshold.",
@@ -197,9 +200,6 @@ DERIVED: tuple[Relation, ...] = (
              "alternative names.", _PORT, _NODE, ("topic", "name", "the topic"), ("type", "type", "message type")),
     _derived(_PRELUDE, "has_near", "A port that AL102 reports as a near miss (AL103 and AL104 leave it to AL102).",
              _PORT),
-    _derived(_PRELUDE, "may_name", "An unknown name that might be a name some port (or remap) uses: the name fits "
-             "the unknown's known parts (unknown_pattern).", ("value", "id", "the unknown name"),
-             ("name", "name", "the name it might be")),
     _derived(_PRELUDE, "maybe_fed", "A topic some subscriber uses that a publisher of unknown name might publish: "
              "its name has no known parts, or they fit the topic, and its type is compatible.",
              ("topic", "name", "the topic"), ("type", "type", "the subscriber's message type")),
