@@ -6,8 +6,8 @@ NODES node instances (default 2000) with four ports each, one message type per t
 one node in ten is opaque (no source) and is remapped onto one name, one in twenty was extracted
 incompletely, one in twenty-five has a publisher of unknown type whose name is known to end with
 a topic's (`host + '/topicN'`), and the subscribers of one node in three are dangling. Prints the
-time to ground and solve, and the findings per rule, so that per-name gating (opaque_near, opaque_other, may_name) can be checked not to grow with
-the product of names and nodes.
+time to ground and solve, and the findings per rule, so that per-name gating (opaque_near,
+opaque_other, may_name) can be checked not to grow with the product of names and nodes.
 """
 
 from __future__ import annotations
