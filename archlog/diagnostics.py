@@ -106,7 +106,9 @@ CODES: dict[str, Code] = {
                      "are not recovered.", "Split the file, or describe the node with --model."),
         "port-name-unknown": ("note", "A port's name could not be known statically (it comes from a caller in "
                               "another file, a parameter without a default, or an expression); the port connects to "
-                              "nothing and its node counts as partially recovered.",
+                              "nothing, the rules assume it might be the counterpart of any name of its type (of any "
+                              "name that fits the parts that are known, as in `ns + \"/scan\"`), and its node counts "
+                              "as partially recovered.",
                               "Give the value (a launch argument or parameter), or describe the node with --model."),
         "name-too-long": ("note", "A topic or service name has too many segments or characters to be compared for "
                           "near misses; it is not.", "Nothing, unless the name is a mistake."),

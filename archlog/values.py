@@ -13,14 +13,36 @@ class Unknown:
     """A value static analysis cannot know; records the expression and where it was met.
 
     Written `?(expr)` wherever archlog prints or writes a value (tables, CSV, JSON, messages,
-    explanations); in rules it is the term `unknown(N)` that `unknown_value` describes."""
+    explanations); in rules it is the term `unknown(N)` that `unknown_value` describes. A string
+    built from known and unknown parts (`ns + "/scan"`) keeps what it is known to start and end
+    with in `prefix` and `suffix` ("" when nothing is known); `unknown_pattern` gives them to rules."""
 
     expr: str
     file: str
     line: int
+    prefix: str = ""
+    suffix: str = ""
 
     def __str__(self) -> str:
         return f"?({self.expr})"
+
+    def fits(self, text: str) -> bool:
+        """Whether the value might be `text`: it starts with the known prefix and ends with the known suffix."""
+        return text.startswith(self.prefix) and text.endswith(self.suffix)
+
+    def vague(self) -> Unknown:
+        """The same unknown with nothing known of its parts."""
+        return Unknown(self.expr, self.file, self.line)
+
+
+def partly_known(parts: tuple[str | Unknown, ...]) -> Unknown:
+    """The unknown string joining `parts` (at least one unknown): it starts with the first part (or
+    that part's known prefix) and ends with the last (or that part's known suffix)."""
+    unknown = next(p for p in parts if isinstance(p, Unknown))
+    first, last = parts[0], parts[-1]
+    return Unknown(" + ".join(p.expr if isinstance(p, Unknown) else repr(p) for p in parts), unknown.file,
+                   unknown.line, first.prefix if isinstance(first, Unknown) else first,
+                   last.suffix if isinstance(last, Unknown) else last)
 
 
 def order(cell: str | int | Unknown) -> tuple[int, str | int, str, int]:
@@ -79,7 +101,18 @@ class Alternatives:
     every: bool = False
 
 
-Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives
+@dataclass(frozen=True)
+class Namespace:
+    """What roscpp's NodeHandle::getNamespace() returns (ros::this_node::getNamespace() is the node's own
+    handle's): the handle's namespace resolved and remapped in the node instance ("/" at the root), less
+    the first `cut` characters string edits removed (`ns.erase(0, 1)`, `ns.substr(1)`). `handle` is the
+    handle's namespace as written ("" for the node's own, "~" for its private one)."""
+
+    handle: Value = ""
+    cut: int = 0
+
+
+Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives | Namespace
 MAX_ALTERNATIVES = 16
 
 

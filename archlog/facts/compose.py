@@ -15,7 +15,7 @@ from archlog.facts.similarity import namespace_steps, near_names, too_long
 from archlog.facts.store import FactStore
 from archlog.system.link import System
 from archlog.system.node_models import UNSET
-from archlog.values import Alternatives, Concat, ParamList, ParamRef, Unknown, Value, concat
+from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Unknown, Value, concat, partly_known
 
 QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
 _MAX_INT = 2**31 - 1  # clingo's integers are 32-bit
@@ -63,6 +63,7 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
     _param_topics(store, system)
     _private_names(store)
     _unknown_port_names(store, diagnostics)
+    _unknown_patterns(store)
     add_namespaces(store)
     return store
 
@@ -74,9 +75,20 @@ def _unknown_port_names(store: FactStore, diagnostics: DiagnosticSink) -> None:
             if isinstance(name, Unknown):
                 file, line, column = store.location(str(port)) or (name.file, name.line, 0)
                 what = rel.replace("_", " ")
+                known = " and ".join(part for part in (name.prefix and f"starts with {name.prefix}",
+                                                       name.suffix and f"ends with {name.suffix}") if part)
+                consequence = f"it may connect to any name that {known}" if known else "its connections are not checked"
                 diagnostics.add(file, line, "port-name-unknown",
-                                f"the name of this {what} is unknown: {name.expr}; its connections are not checked",
-                                column=column)
+                                f"the name of this {what} is unknown: {name.expr}; {consequence}", column=column)
+
+
+def _unknown_patterns(store: FactStore) -> None:
+    """unknown_pattern facts: the known start and end of the unknown names ports use."""
+    for rel in (*NAMED_PORTS, "port_source_name"):
+        for row in store.rows(rel):
+            name = row[1] if rel == "port_source_name" else row[2]
+            if isinstance(name, Unknown) and (name.prefix or name.suffix):
+                store.add("unknown_pattern", name, name.prefix, name.suffix)
 
 
 def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSink | None = None) -> None:
@@ -131,7 +143,7 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
             else port.handle_ns
         before_remaps = [_resolve(option, handle_ns, node, config, remaps)
                          for option in _options(_bind(port.name, node, config))]
-        resolved = [(b, b if isinstance(b, Unknown) else names.remap(b, remaps)) for b in before_remaps]
+        resolved = [(b, _remapped(b, remaps)) for b in before_remaps]
         if isinstance(port.name, ParamRef) and isinstance(key := _param_key(port.name, node, config), str):
             store.add("port_name_param", pid, key)
         if not node.ros2 and isinstance(handle := _handle_namespace(port.handle_ns, node, config), str) and handle:
@@ -217,15 +229,36 @@ def _resolve(name: str | Unknown, handle_ns: Value, node: LaunchNode, config: La
     """Resolve one bound port name in the instance's context (handle namespace, `~`), before the name's
     own remap. As roscpp does, a ROS 1 NodeHandle's namespace is itself remapped with `remaps` first."""
     if isinstance(name, Unknown):
-        return name
+        return _known_parts(name, handle_ns, node, config, remaps)
     if name.startswith("~"):
         return names.join(node.name, name[1:].lstrip("/"))
     if name.startswith("/"):
         return names.canonical(name)
     handle = _handle_namespace(handle_ns, node, config)
-    if isinstance(handle, Unknown):
-        return Unknown(f"{handle.expr}/{name}", handle.file, handle.line)
+    if isinstance(handle, Unknown):  # it keeps the known start of the handle's namespace
+        start = _known_parts(handle, "", node, config, remaps).prefix
+        return Unknown(f"{handle.expr}/{name}", handle.file, handle.line, start, _tail("/" + name))
     return names.join(names.remap(handle, remaps) if handle and not node.ros2 else handle or node.namespace, name)
+
+
+def _known_parts(name: Unknown, handle_ns: Value, node: LaunchNode, config: LaunchConfig,
+                 remaps: dict[str, str]) -> Unknown:
+    """An unknown name's known start resolved as the name would be (in the handle's namespace, `~` in the
+    node's), and its known end cleaned."""
+    prefix = _resolve(name.prefix, handle_ns, node, config, remaps) if name.prefix else ""
+    return replace(name, prefix="" if isinstance(prefix, Unknown) else prefix.rstrip("/"), suffix=_tail(name.suffix))
+
+
+def _tail(text: str) -> str:
+    """A known end of a name as the name resolves: slashes collapsed, none trailing ("" for only slashes)."""
+    return names.canonical(text) if text.strip("/") else ""
+
+
+def _remapped(name: str | Unknown, remaps: dict[str, str]) -> str | Unknown:
+    """A resolved name after the instance's remaps; an unknown one a remap might match could become anything."""
+    if isinstance(name, str):
+        return names.remap(name, remaps)
+    return name.vague() if any(name.fits(source) for source in remaps) else name
 
 
 def _handle_namespace(handle_ns: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
@@ -287,6 +320,8 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
             found = config.params[key][0]
             return found if isinstance(found, Unknown) else _text(found)
         return _bind(value.default, node, config)
+    if isinstance(value, Namespace):
+        return _namespace(value, node, config)
     if isinstance(value, Alternatives):
         bound = [_bind(option, node, config) for option in value.options]
         flat = [o for b in bound for o in _options(b)]
@@ -295,11 +330,19 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
     assert isinstance(value, Concat), value  # a list-parameter name is expanded (_each) before binding
     joined = concat(*[_bind(p, node, config) for p in value.parts])
     if isinstance(joined, Concat):
-        unknown = next(p for p in joined.parts if isinstance(p, Unknown))
-        return Unknown(" + ".join(p.expr if isinstance(p, Unknown) else repr(p) for p in joined.parts),
-                       unknown.file, unknown.line)
+        return partly_known(joined.parts)  # type: ignore[arg-type]  # bound parts are strings and unknowns
     assert isinstance(joined, (str, Unknown, Alternatives))  # concat of bound parts has no reference left
     return joined
+
+
+def _namespace(value: Namespace, node: LaunchNode, config: LaunchConfig) -> str | Unknown:
+    """The namespace a handle's getNamespace() returns in this instance, as roscpp resolves it (the handle's
+    own namespace remapped), less the characters the code cut off."""
+    handle = _handle_namespace(value.handle, node, config)
+    if isinstance(handle, Unknown):
+        return handle
+    remaps = names.resolve_remaps([(src, dst) for src, dst, _ in node.remaps], node.namespace, node.name)
+    return (names.remap(handle, remaps) if handle else names.canonical(node.namespace) or "/")[value.cut:]
 
 
 def _each(port: Port, node: LaunchNode, config: LaunchConfig) -> list[Port]:

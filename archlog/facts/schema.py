@@ -166,6 +166,15 @@ RELATIONS: tuple[Relation, ...] = (
          ("value", "id", "the unknown value: the term unknown(N) other relations use in rules, written "
           "?(expr) in output"), ("expr", "str", "the expression"),
          ("file", "str", "file"), ("line", "int", "line")),
+    _rel("provenance", "unknown_pattern", "An unknown name of which a part is known (`ns + \"/scan\"`): "
+         "resolved as the name would be, it starts with `prefix` and ends with `suffix`; an unknown name without "
+         "this row might be any name.",
+         ("value", "id", "the unknown name, a term unknown(N)"),
+         ("prefix", "str", "what the resolved name starts with (\"\" when unknown)"),
+         ("suffix", "str", "what it ends with (\"\" when unknown)")),
+    _rel("derived", "may_name", "An unknown name with known parts (unknown_pattern) and a name some port or remap "
+         "uses that fits them: the unknown name might be it.", ("value", "id", "the unknown name"),
+         ("name", "name", "the name it might be")),
     _rel("derived", "near_name",
          "Two names used in the system, one of them used by one side only (published and not subscribed, served "
          "and not called, or the reverse), whose segment distance is below the near-miss threshold.",
@@ -212,6 +221,12 @@ DERIVED: tuple[Relation, ...] = (
              "alternative names.", _PORT, _NODE, ("topic", "name", "the topic"), ("type", "type", "message type")),
     _derived(_PRELUDE, "has_near", "A port that AL102 reports as a near miss (AL103 and AL104 leave it to AL102).",
              _PORT),
+    _derived(_PRELUDE, "maybe_fed", "A topic some subscriber uses that a publisher of unknown name might publish: "
+             "its name has no known parts, or they fit the topic, and its type is compatible.",
+             ("topic", "name", "the topic"), ("type", "type", "the subscriber's message type")),
+    _derived(_PRELUDE, "maybe_heard", "A topic some publisher uses that a subscriber of unknown name might hear "
+             "(as maybe_fed, the other way).", ("topic", "name", "the topic"),
+             ("type", "type", "the publisher's message type")),
     _derived(_PRELUDE, "opaque_node", "A node instance whose ports are not (all) known: no source or model, or "
              "incomplete extraction.", _NODE),
     _derived(_PRELUDE, "system_opaque", "Some node instance of the configuration is opaque."),

@@ -19,7 +19,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.registry import Summaries, plugin_kind
 from archlog.extract.summary import LoadedNodelet, NodeSummary, Port
-from archlog.values import Alternatives, Concat, FullNodeName, ParamRef, Value
+from archlog.values import Alternatives, Concat, FullNodeName, Namespace, ParamRef, Value
 
 BOND = "bond/Status"
 _SERVICES = (("load_nodelet", "nodelet/NodeletLoad"), ("unload_nodelet", "nodelet/NodeletUnload"),
@@ -142,4 +142,6 @@ def _in(value: Value, full: str) -> Value:
         return Concat(tuple(_in(p, full) for p in value.parts))
     if isinstance(value, Alternatives):
         return Alternatives(tuple(_in(o, full) for o in value.options), value.every)
+    if isinstance(value, Namespace):
+        return replace(value, handle=_rebased(value.handle, full))
     return value

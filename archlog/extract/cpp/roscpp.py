@@ -49,8 +49,9 @@ from archlog.extract.cpp.rclcpp.walker import RclcppWalker
 from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp_fallback import roscpp_fallback
 from archlog.extract.cpp.scope import Scope
+from archlog.extract.cpp.string_edits import Edit, before, cut, edits, leading_cut, self_edit
 from archlog.extract.summary import Port
-from archlog.values import Alternatives, FullNodeName, ParamRef, Unknown, Value, alternatives, concat
+from archlog.values import Alternatives, FullNodeName, Namespace, ParamRef, Unknown, Value, alternatives, concat
 
 PARAM_READS = {"param", "getParam", "getParamCached", "hasParam", "searchParam", "get", "getCached", "has", "search"}
 PARAM_WRITES = {"setParam", "deleteParam", "set", "del"}
@@ -121,6 +122,7 @@ class _Walker:
         self.call_sites: dict[CursorKey, list[ci.Cursor]] = {}
         self.spans: list[tuple[int, int]] | None = None
         self.loops: dict[CursorKey, ci.Cursor] = {}
+        self.edits: dict[CursorKey, list[Edit]] = {}  # string variables' edits (string_edits.py)
         self.port_calls: dict[ci.Cursor, list[str]] = {}  # the call that made each port (behavior.py)
         self.named_callbacks: list[tuple[str, Port]] = []  # functions named in calls read from the tokens
         self.kept: list[ci.Cursor] = []
@@ -240,9 +242,22 @@ class _Walker:
                 return self.value(init[-1], depth + 1)
             assigned = assignments(decl)
             if assigned is not None and (init or assigned):
-                return alternatives([self.value(e, depth + 1) for e in init[-1:] + assigned], False,
-                                    self.unknown(expr, "assigned values not all known"))
+                assigned = [a for a in assigned if not self_edit(a, decl)]
+                found = alternatives([self.value(e, depth + 1) for e in init[-1:] + assigned], False,
+                                     self.unknown(expr, "assigned values not all known"))
+                return self.edited(found, decl, expr) if decl.kind == K.VAR_DECL else found
         return self.unknown(expr)
+
+    def edited(self, value: Value, decl: ci.Cursor, use: ci.Cursor) -> Value:
+        """A string variable's value at `use`, after the edits that cut its start (string_edits.py)."""
+        key = self.key(decl)
+        if key not in self.edits:
+            self.edits[key] = edits(decl) if "string" in decl.type.spelling else []
+        for edit in before(self.edits[key], use):
+            if edit.cuts is None:
+                return self.unknown(use, "string edits not understood")
+            value = cut(value, edit.cuts, edit.guarded, self.unknown(use, "a value not known is cut"))
+        return value
 
     def loop_values(self, source: ci.Cursor, expr: ci.Cursor, depth: int) -> Value:
         """A range-for variable over a literal list (or a variable holding one): every element."""
@@ -277,14 +292,18 @@ class _Walker:
         if owner == "ros::this_node" and name == "getName":  # the full name: resolves as "~" does
             return FullNodeName("~")
         if owner == "ros::this_node" and name == "getNamespace":
-            return ""
+            return Namespace()
+        if name == "substr" and (count := leading_cut(expr)) is not None and \
+                (member := next(expr.get_children())).kind == K.MEMBER_REF_EXPR and \
+                (target := next(member.get_children(), None)) is not None:
+            return cut(self.value(target, depth + 1), count, False, self.unknown(expr, "a value not known is cut"))
         if owner in (NODE_HANDLE, "ros::param") and name == "param" and len(args) == 2 and is_rvalue(args[1]):
             handle = self.handles.handle_of(next(expr.get_children())) if owner == NODE_HANDLE else ""
             return ParamRef(self.value(args[0], depth + 1), self.value(args[1], depth + 1), handle,
                             self.shown(expr), expr.location.line)
         if owner == NODE_HANDLE and name in ("resolveName", "getNamespace"):
             if name == "getNamespace":
-                return self.handles.handle_of(next(expr.get_children()))
+                return Namespace(self.handles.handle_of(next(expr.get_children())))
             return self.value(args[0], depth + 1)
         if name in ("basic_string", "string", "c_str", "str") or (name == "" and len(args) == 1):
             inner = args or [c for c in expr.get_children() if c.kind not in SKIP]
