@@ -210,3 +210,8 @@ class DiagnosticSink:
         diag = Diagnostic(str(file), line, code, message, severity or _usual(code), column)
         if diag not in self.items:
             self.items.append(diag)
+
+    def extend(self, diagnostics: list[Diagnostic]) -> None:
+        """Record diagnostics found elsewhere (a worker process, a cached result)."""
+        for diag in diagnostics:
+            self.add(diag.file, diag.line, diag.code, diag.message, diag.severity, diag.column)

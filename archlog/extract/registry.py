@@ -108,8 +108,7 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnost
             continue
         summary, found = result
         summaries[(job.package, job.executable)] = summary
-        for diag in found:
-            diagnostics.add(diag.file, diag.line, diag.code, diag.message, diag.severity, diag.column)
+        diagnostics.extend(found)
     summaries.update((alias, summaries[own]) for alias, own in aliases.items() if own in summaries)
     return summaries
 

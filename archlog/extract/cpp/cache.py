@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import hashlib
+import json
 import os
 import pickle
 import sqlite3
 from functools import lru_cache
 from pathlib import Path
 
-from archlog import __version__
+from archlog import __version__, budget
 
 
 def cache_dir() -> Path:
@@ -40,7 +41,8 @@ def key(*parts: bytes | str) -> str:
 
 
 class ResultCache:
-    """get/put of picklable results; a damaged or missing store just misses."""
+    """get/put of picklable results, each under its key and the budget in force (values fold
+    within its limits); a damaged or missing store just misses."""
 
     def __init__(self, name: str) -> None:
         self.path = cache_dir() / f"{name}.sqlite"
@@ -54,7 +56,7 @@ class ResultCache:
 
     def get(self, cache_key: str) -> object | None:
         try:
-            row = self._connect().execute("SELECT value FROM results WHERE key = ?", (cache_key,)).fetchone()
+            row = self._connect().execute("SELECT value FROM results WHERE key = ?", (_scoped(cache_key),)).fetchone()
             return pickle.loads(row[0]) if row else None
         except (sqlite3.Error, pickle.PickleError, EOFError, AttributeError):
             return None
@@ -62,6 +64,10 @@ class ResultCache:
     def put(self, cache_key: str, value: object) -> None:
         try:
             with self._connect() as db:
-                db.execute("INSERT OR REPLACE INTO results VALUES (?, ?)", (cache_key, pickle.dumps(value)))
+                db.execute("INSERT OR REPLACE INTO results VALUES (?, ?)", (_scoped(cache_key), pickle.dumps(value)))
         except sqlite3.Error:
             return
+
+
+def _scoped(cache_key: str) -> str:
+    return key(cache_key, json.dumps(dict(budget.current().limits), sort_keys=True))

@@ -513,9 +513,14 @@ def _load(index: ci.Index, source: Path, args: list[str], without_pch: list[str]
 
 def _mtime(path: str) -> int:
     try:
-        return Path(path).stat().st_mtime_ns
+        return os.stat(path).st_mtime_ns
     except OSError:
         return -1
+
+
+_FOUND: dict[tuple[str, str], bool] = {}
+"""Whether an include name is found, by (include environment's fingerprint, name): a worker
+checks many cached files missing the same headers, each against hundreds of folders."""
 
 
 def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
@@ -523,7 +528,10 @@ def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
     if any(_mtime(path) != mtime for path, mtime in result.depends):
         return False
     folders = env.folders()
-    return not any(env.find(name, folders) for name in result.missing)
+    for name in result.missing:
+        if (env.fingerprint, name) not in _FOUND:
+            _FOUND[(env.fingerprint, name)] = env.find(name, folders) is not None
+    return not any(_FOUND[(env.fingerprint, name)] for name in result.missing)
 
 
 def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink) -> None:
@@ -534,8 +542,7 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
         summary.name_file, summary.name_line = result.name_file, result.name_line
         summary.namespace = result.namespace
     summary.incomplete = summary.incomplete or result.incomplete
-    for diag in result.diagnostics:
-        diagnostics.add(diag.file, diag.line, diag.code, diag.message, diag.severity, diag.column)
+    diagnostics.extend(result.diagnostics)
 
 
 def _tree_stamp(folders: list[Path]) -> list[str]:

@@ -29,10 +29,11 @@ def generated_headers(workspace: Workspace, diagnostics: DiagnosticSink) -> Path
     if not texts:
         return None
     digest = hashlib.sha256()
-    for (pkg, kind, name), (_path, text) in texts.items():
-        digest.update(f"{pkg}\0{name}.{kind}\0".encode() + text)
+    for (pkg, kind, name), (path, text) in texts.items():  # the path: the diagnostics kept name it
+        digest.update(f"{pkg}\0{name}.{kind}\0{workspace.display(path)}\0".encode() + text)
     out = cache_dir() / "msg_headers" / digest.hexdigest()[:24]
     if (out / ".done").is_file():
+        _report(out / ".done", diagnostics)
         return out
     first = workspace.display(next(iter(texts.values()))[0])
     if not (DEBIAN_PYTHON.is_file() and TEMPLATES.is_dir()):
@@ -55,12 +56,23 @@ def generated_headers(workspace: Workspace, diagnostics: DiagnosticSink) -> Path
         diagnostics.add(first, 1, "msg-headers",
                         f"message header generation failed: {result.stderr.strip()[-300:]}", "warning")
         return None
-    for path, message in errors:
-        original = copies[Path(path)][1] if Path(path) in copies else Path(path)
-        diagnostics.add(workspace.display(original), 1, "msg-definition", f"message definition: {message}", "warning")
+    shown = [(workspace.display(copies[Path(path)][1] if Path(path) in copies else Path(path)), message)
+             for path, message in errors]
     (out / ".done").parent.mkdir(parents=True, exist_ok=True)
-    (out / ".done").write_text("")
+    (out / ".done").write_text(json.dumps(shown))
+    _report(out / ".done", diagnostics)
     return out
+
+
+def _report(done: Path, diagnostics: DiagnosticSink) -> None:
+    """The definitions that did not generate (kept in `done`, so a cached run reports them too)."""
+    try:
+        shown = json.loads(done.read_text() or "[]")
+    except (OSError, ValueError):
+        shown = []
+    for entry in shown if isinstance(shown, list) else []:
+        if isinstance(entry, list) and len(entry) == 2:
+            diagnostics.add(str(entry[0]), 1, "msg-definition", f"message definition: {entry[1]}", "warning")
 
 
 Definitions = dict[tuple[str, str, str], tuple[Path, bytes]]

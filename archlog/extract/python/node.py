@@ -14,6 +14,7 @@ from pathlib import Path
 
 from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.cpp.cache import ResultCache, key
 from archlog.extract.python.behavior.triggers import recover_behavior
 from archlog.extract.python.fold import ValueFolder
 from archlog.extract.python.index import Function, arg
@@ -78,12 +79,24 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
                         "sources; its ROS calls are not recovered", "error")
         summary.incomplete = f"{shown}: too large to read"
         return summary
+    cache, cache_key = ResultCache("python"), key(package, executable, shown, data)
+    cached = cache.get(cache_key)
+    if not (isinstance(cached, tuple) and len(cached) == 2 and isinstance(cached[0], NodeSummary)):
+        found = DiagnosticSink()
+        cached = (_read_guarded(data.decode("utf-8", errors="replace"), summary, shown, found), found.items)
+        cache.put(cache_key, cached)
+    diagnostics.extend(cached[1])
+    return cached[0]
+
+
+def _read_guarded(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
+    """`_read`, with the parser's limits or a walk's an error diagnostic."""
     try:
-        return _read(data.decode("utf-8", errors="replace"), summary, shown, diagnostics)
-    except (NestedTooDeeply, RecursionError, MemoryError) as exc:  # the parser's limits, or a walk's
+        return _read(source, summary, shown, diagnostics)
+    except (NestedTooDeeply, RecursionError, MemoryError) as exc:
         diagnostics.add(shown, getattr(exc, "line", 1), "python-nesting", "code nested deeper than Python's parser "
                         "(or archlog's walk over it) allows; its ROS calls are not recovered", "error")
-        return NodeSummary(package, executable, "python", incomplete=f"{shown}: nested too deeply")
+        return NodeSummary(summary.package, summary.executable, "python", incomplete=f"{shown}: nested too deeply")
 
 
 def _read(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:

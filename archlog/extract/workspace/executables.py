@@ -70,6 +70,7 @@ class ExecutableFinder:
         holds Buffer, TransformListener...: static_transform_publisher uses StaticTransformBroadcaster
         only; a nodelet loaded by its plugin name, as image_proc's node loads "image_proc/debayer"
         through nodelet::Loader, runs under its own name: system/nodelets.py)."""
+        words = _Words([package.path / "include", *package.include_dirs])
         for exe in package.executables.values():
             if exe.lang != "cpp" or exe.cls is not None:
                 continue
@@ -81,13 +82,12 @@ class ExecutableFinder:
             classes = {s: exported_plugins(s) or _constructed_classes(s) for s in linked}
             plain = [s for s in linked if not classes[s]]
             exe.sources += plain
-            headers = [package.path / "include", *package.include_dirs]
-            text = "\n".join(_with_headers(s, headers) for s in exe.sources)
+            named_words = words.with_headers(exe.sources)
             waiting = [s for s in linked if classes[s]]
-            while named := [s for s in waiting if any(_names(text, cls) for cls in classes[s])]:
+            while named := [s for s in waiting if any(cls.rsplit("::", 1)[-1] in named_words for cls in classes[s])]:
                 exe.sources += named
                 waiting = [s for s in waiting if s not in named]
-                text += "\n".join(_with_headers(s, headers) for s in named)
+                named_words |= words.with_headers(named)
 
     def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int,
                    asker: tuple[Path, int] | None = None) -> None:
@@ -268,18 +268,35 @@ def _text(path: Path) -> str:
 _INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 
 
-def _with_headers(source: Path, folders: list[Path], depth: int = 3) -> str:
-    """A source's text with the package headers it includes (a class a source names only in a
-    member its header declares is named by that source)."""
-    text = _text(source)
-    if depth:
-        for include in _INCLUDE.findall(text):
-            found = next((f / include for f in [source.parent, *folders] if (f / include).is_file()), None)
+class _Words:
+    """The words of sources and of the package headers they include, three levels deep (a class a
+    source names only in a member its header declares is named by that source), each file read
+    once; a word after a slash does not count (the Type of a plugin name pkg/Type)."""
+
+    def __init__(self, folders: list[Path]) -> None:
+        self.folders = folders
+        self.files: dict[Path, tuple[set[str], list[str]]] = {}
+
+    def with_headers(self, sources: list[Path]) -> set[str]:
+        words: set[str] = set()
+        for source in sources:
+            words |= self._reached(source, 3)
+        return words
+
+    def _reached(self, source: Path, depth: int) -> set[str]:
+        if source not in self.files:
+            text = _text(source)
+            self.files[source] = set(_WORD.findall(text)), _INCLUDE.findall(text)
+        words, includes = self.files[source]
+        words = set(words)
+        for include in includes if depth else []:
+            found = next((f / include for f in [source.parent, *self.folders] if (f / include).is_file()), None)
             if found is not None and found != source:
-                text += "\n" + _with_headers(found, folders, depth - 1)
-    return text
+                words |= self._reached(found, depth - 1)
+        return words
 
 
+_WORD = re.compile(r"(?<![\w/])\w+")
 _CONSTRUCTOR = re.compile(r"\b(\w+)::\1\s*\(")
 
 
@@ -296,11 +313,6 @@ def _node_classes(source: Path) -> list[str]:
 def exported_plugins(source: Path) -> list[str]:
     """Classes a C++ file exports as plugins (PLUGINLIB_EXPORT_CLASS, PLUGINLIB_DECLARE_CLASS)."""
     return sorted({(m.group(1) or m.group(2)).lstrip(":") for m in _EXPORT.finditer(_text(source))})
-
-
-def _names(text: str, cls: str) -> bool:
-    """Whether a text names a plugin class (by its last component; not inside a plugin name pkg/Type)."""
-    return bool(re.search(rf"(?<![\w/]){re.escape(cls.rsplit('::', 1)[-1])}\b", text))
 
 
 def registered_components(text: str) -> list[tuple[str, int]]:
