@@ -45,6 +45,14 @@ def test_the_uncertainty_left_is_named_and_empty_parts_are_dropped() -> None:
     assert [(r.file, r.line) for r in finding.related] == [("src/crawler_nav/scripts/base_driver.py", 9)]
 
 
+def test_an_input_required_alone_names_no_live_alternative() -> None:
+    """goal_marker needs clicked_point alone; the goal needs clicked_point or cloud_clusters, and
+    cloud_clusters is published: the finding names neither the goal nor that alternative."""
+    _analysis, [finding] = run_case(CORPUS / "click_or_cluster" / "buggy")
+    assert finding.message == "/goal_planner publishes /goal_marker only after it receives /clicked_point, " \
+        "which nothing publishes"
+
+
 def test_topic_parameters_are_recognised() -> None:
     analysis, _findings = run_case(CORPUS / "unread_topic_param" / "buggy")
     assert {(str(p), str(n), str(t)) for p, n, t in rows(analysis, "param_topic")} == \
