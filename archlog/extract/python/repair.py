@@ -44,14 +44,23 @@ _TOO_DEEP = ("too many nested parentheses", "too many levels of indentation")
 _REPAIR_ROUNDS = 6  # parso passes; each finds every error it can, so Python 2 needs one or two
 
 
+def _python2_indent(line: str) -> str:
+    """The line with its indentation's tabs expanded as Python 2 reads them (to the next multiple
+    of 8 columns), so that a file mixing tabs and spaces parses under Python 3."""
+    body = line.lstrip(" \t")
+    return line[: len(line) - len(body)].expandtabs(8) + body
+
+
 def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]]:
     """Parse with ast; on failure repair the lines parso (error recovery) or ast points at:
-    first with Python 2 rewrites, then by neutralising the statement. Line numbers never move.
+    first with Python 2 rewrites (tabs in indentation expanded as Python 2 does), then by
+    neutralising the statement. Line numbers never move.
     Returns the tree, the repaired lines, and those of them whose statement was dropped.
     Raises NestedTooDeeply for code nested deeper than Python's parser allows."""
     lines = source.splitlines()
     repaired: dict[int, None] = {}  # in the order repaired
     dropped: list[int] = []
+    tabs_expanded = False
     grammar = parso.load_grammar()
     budget = max(10, len(lines) // 4)  # past this many repairs the file is not Python 2 either
     for _round in range(_REPAIR_ROUNDS + 1):
@@ -62,6 +71,12 @@ def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]
         except SyntaxError as exc:
             if exc.msg in _TOO_DEEP:
                 raise NestedTooDeeply(exc.lineno or 1) from None
+            tabbed = [] if tabs_expanded else [n for n, line in enumerate(lines, 1) if _python2_indent(line) != line]
+            tabs_expanded = True
+            if tabbed:
+                lines = [_python2_indent(line) for line in lines]
+                repaired[tabbed[0]] = None
+                continue
             if len(lines) > REPAIR_LINES or len(repaired) > budget or _round == _REPAIR_ROUNDS:
                 break
             bad = sorted({e.start_pos[0] for e in grammar.iter_errors(grammar.parse("\n".join(lines)))}
