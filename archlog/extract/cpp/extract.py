@@ -215,7 +215,7 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
                                              "error"))
         result.incomplete = f"{shown}: could not be parsed"
         return result
-    everywhere = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error]
+    everywhere = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error and not _builtin_header(d)]
     gaps = [d for d in everywhere if stand_ins and _stand_in_gap(d, stand_ins)]
     genuine = [d for d in everywhere if d not in gaps and not (gaps and _cascade(d, gaps, source))]
     errors = [d for d in genuine if d.location.file and Path(d.location.file.name) == source]
@@ -429,6 +429,14 @@ def _cascade(diag: ci.Diagnostic, gaps: list[ci.Diagnostic], source: Path) -> bo
     lines = sandbox.read_text(source, "source").splitlines()
     return any(0 < g.location.line <= len(lines) and re.search(rf"\b{match.group(1)}\b", lines[g.location.line - 1])
                for g in gaps)
+
+
+def _builtin_header(diag: ci.Diagnostic) -> bool:
+    """An error in clang's builtin headers (emmintrin.h...): those of the installed clang, which
+    the libclang wheel may be newer than (its intrinsics are spelled differently). Only those
+    headers' inline bodies break, not the code that includes them."""
+    rdir = resource_dir()
+    return rdir is not None and diag.location.file is not None and diag.location.file.name.startswith(rdir)
 
 
 def _ros1_system(folder: Path) -> bool:

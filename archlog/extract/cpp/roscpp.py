@@ -34,6 +34,7 @@ from archlog.extract.cpp.clang_ast import (
     written_args,
 )
 from archlog.extract.cpp.handles import (
+    IMAGE_FILTER,
     IMAGE_TRANSPORT,
     METHODS,
     NODE_HANDLE,
@@ -58,6 +59,7 @@ TIMERS = {"createTimer", "createWallTimer", "createSteadyTimer"}
 # constructed objects that are ports: class -> (kind, fixed name or None, index of the name argument)
 CONSTRUCTED: dict[str, list[tuple[str, str | None, int | None]]] = {
     "message_filters::Subscriber": [("subscriber", None, 1)],
+    IMAGE_FILTER: [("subscriber", None, 1)],
     "actionlib::SimpleActionServer": [("action_server", None, 1)],
     "actionlib::ActionServer": [("action_server", None, 1)],
     "actionlib::SimpleActionClient": [("action_client", None, 1)],
@@ -338,9 +340,9 @@ class _Walker:
 
     def method(self, call: ci.Cursor, ref: ci.Cursor, owner: str, name: str, args: list[ci.Cursor]) -> None:
         kind = METHODS[(owner, name)]
-        if owner == "message_filters::Subscriber":
-            type_ = ros_type(call.referenced.semantic_parent.type) or template_arg_type(call) or \
-                self.unknown(call, "message type not resolved")
+        if owner in ("message_filters::Subscriber", IMAGE_FILTER):
+            type_ = "sensor_msgs/Image" if owner == IMAGE_FILTER else ros_type(call.referenced.semantic_parent.type) \
+                or template_arg_type(call) or self.unknown(call, "message type not resolved")
             self.add(kind, call, self.value(args[1]) if len(args) > 1 else self.unknown(call), type_,
                      self.handles.handle_of(args[0]))
             return
@@ -364,7 +366,8 @@ class _Walker:
         has_handle = bool(args) and is_handle_type(args[0].type)
         handle = self.handles.handle_of(args[0]) if has_handle else \
             ("~" if owner == "dynamic_reconfigure::Server" else "")
-        type_ = ros_type(call.type) or self.unknown(call, "type not resolved")
+        type_ = "sensor_msgs/Image" if owner == IMAGE_FILTER else ros_type(call.type) or \
+            self.unknown(call, "type not resolved")
         for kind, fixed, index in CONSTRUCTED[owner]:
             if fixed is not None:
                 self.add(kind, call, fixed, FIXED_TYPES[fixed], handle)
