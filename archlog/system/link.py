@@ -18,10 +18,10 @@ from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels
-from archlog.system.nodelets import is_manager, loaded_ports, loader_ports, manager_summary
+from archlog.system.nodelets import in_process, is_manager, loaded_ports, loader_ports, manager_summary
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
-from archlog.values import ParamRef
+from archlog.values import FullNodeName, ParamRef
 
 
 @dataclass
@@ -120,6 +120,8 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
     if summary is not None and summary.loads:
         summary = replace(summary, ports=summary.ports + loaded_ports(node, summary, summaries, diagnostics))
+    if summary is not None and any(isinstance(p.handle_ns, FullNodeName) for p in summary.ports):
+        summary = replace(summary, ports=in_process(node, summary.ports))
     if summary is not None and any(p.info_of is not None for p in summary.ports):
         summary = replace(summary, ports=[placed_camera_info(p, node) for p in summary.ports])
     model = models.user.get(node.kind) or models.builtin.get(node.kind)

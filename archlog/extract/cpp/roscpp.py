@@ -104,6 +104,13 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     return walker.result
 
 
+def _default_handle(owner: str) -> Value:
+    """The namespace of a library object constructed without a handle: a dynamic_reconfigure
+    server's is NodeHandle("~") of the process (in a nodelet, the manager's name, as
+    ros::this_node::getName() is), the others' the node's."""
+    return FullNodeName("~") if owner == "dynamic_reconfigure::Server" else ""
+
+
 def _made_class(call: ci.Cursor) -> str:
     """The class a make_shared<T>(...) / make_unique<T>(...) call constructs."""
     made = call.type.get_canonical().get_template_argument_type(0)
@@ -364,8 +371,7 @@ class _Walker:
     def constructed(self, call: ci.Cursor, owner: str, args: list[ci.Cursor]) -> None:
         """Library objects whose construction creates ports (tf, actionlib, message_filters...)."""
         has_handle = bool(args) and is_handle_type(args[0].type)
-        handle = self.handles.handle_of(args[0]) if has_handle else \
-            ("~" if owner == "dynamic_reconfigure::Server" else "")
+        handle = self.handles.handle_of(args[0]) if has_handle else _default_handle(owner)
         type_ = "sensor_msgs/Image" if owner == IMAGE_FILTER else ros_type(call.type) or \
             self.unknown(call, "type not resolved")
         for kind, fixed, index in CONSTRUCTED[owner]:
@@ -387,7 +393,7 @@ class _Walker:
                 if fixed is not None and field.location.file is not None:
                     loc = field.location
                     self.result.ports.append(Port(kind, fixed, FIXED_TYPES[fixed], self.shown(field), loc.line,
-                                                  loc.column))
+                                                  loc.column, _default_handle(owner)))
 
     def param(self, call: ci.Cursor, args: list[ci.Cursor], handle: Value, method: str) -> None:
         pname = self.value(args[0])
