@@ -31,7 +31,7 @@ BASELINE = {
     "image_proc": (17, 0, 0),  # loads debayer and two rectify nodelets into itself (nodelet::Loader)
     "hd_monitor": (1, 0, 0),  # ros-diagnostics, Python
     "robot_state_publisher": (3, 0, 0),  # ports in a catkin library it links (joint_state_listener.cpp)
-    "mux": (9, 4, 0),  # ros-comm topic_tools: names from argv (mux.cpp:318, 363) missed
+    "mux": (9, 1, 0),  # ros-comm topic_tools: names from argv (the model's); the output's type is the input's
 }
 
 # case -> the same for the nodelet mechanism's own ports (manager services, bonds, loader processes)

@@ -128,3 +128,4 @@ class NodeSummary:
     writes: list[StateWrite] = field(default_factory=list)
     plugins: tuple[PluginSlot, ...] = ()
     loads: list[LoadedNodelet] = field(default_factory=list)  # nodelets run in this process
+    argv_ports: tuple[tuple[str, dict, str], ...] = ()  # models: (kind, entry, file) named from the command line
