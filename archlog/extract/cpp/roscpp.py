@@ -371,7 +371,8 @@ class _Walker:
     def constructed(self, call: ci.Cursor, owner: str, args: list[ci.Cursor]) -> None:
         """Library objects whose construction creates ports (tf, actionlib, message_filters...)."""
         has_handle = bool(args) and is_handle_type(args[0].type)
-        handle = self.handles.handle_of(args[0]) if has_handle else _default_handle(owner)
+        handle_arg = next((a for a in args if is_handle_type(a.type)), None)  # Server(mutex, nh) has it second
+        handle = self.handles.handle_of(handle_arg) if handle_arg is not None else _default_handle(owner)
         type_ = "sensor_msgs/Image" if owner == IMAGE_FILTER else ros_type(call.type) or \
             self.unknown(call, "type not resolved")
         for kind, fixed, index in CONSTRUCTED[owner]:
