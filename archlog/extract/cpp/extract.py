@@ -126,46 +126,71 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
     """The summary of one executable (or of one nodelet class): every source file read, from the
     cache when unchanged. A nodelet's files are read after the one that names its class, with the
     base classes found there (their methods, defined in other files of the library, are the node's
-    code too)."""
+    code too); a file read before more of them were known is read again."""
     summary = NodeSummary(package, executable, "cpp")
-    cache = ResultCache("cpp")
-    index: ci.Index | None = None
-    behaviors: list[FileBehavior] = []
+    reader = _Reader(env, shown, diagnostics, summary)
     if cls is not None:
         last = cls.rsplit("::", 1)[-1]
         sources = sorted(sources, key=lambda s: re.search(rf"\b{re.escape(last)}\b", _text(s)) is None)
+    results: dict[Path, tuple[FileResult, str | None]] = {}
+    pending = list(sources)
+    while pending:
+        source = pending.pop(0)
+        result = reader.read(source, cls)
+        if result is None:
+            continue
+        results[source] = (result, cls)
+        if cls is not None and len(result.classes) > len(cls.split("|")):
+            cls = "|".join(result.classes)  # files read before the class's bases were known: again
+            pending += [s for s, (_r, read_as) in results.items() if read_as != cls and s not in pending]
+    behaviors: list[FileBehavior] = []
     for source in sources:
-        name = shown.get(source, str(source))
+        if source in results:
+            _merge(summary, results[source][0], diagnostics)
+            behaviors.append(results[source][0].behavior)
+    summary.publishes, summary.writes = link_files(behaviors)
+    _settle_behavior(summary)
+    return summary
+
+
+@dataclass
+class _Reader:
+    """Reads one source file for extract_cpp (from the cache when unchanged); a file that cannot be
+    read is a diagnostic and makes the summary incomplete."""
+
+    env: CppEnvironment
+    shown: dict[Path, str]
+    diagnostics: DiagnosticSink
+    summary: NodeSummary
+    cache: ResultCache = field(default_factory=lambda: ResultCache("cpp"))
+    index: ci.Index | None = None
+
+    def read(self, source: Path, cls: str | None) -> FileResult | None:
+        name = self.shown.get(source, str(source))
         refused = unreadable(source, "source")
         if refused is not None:
             missing = refused.code == "missing"
             message = "source file listed in CMakeLists.txt does not exist" if missing else f"not read: {refused}"
-            diagnostics.add(name, 1, "cpp-missing" if missing else refused.code, message, "error")
-            summary.incomplete = summary.incomplete or f"{name}: {'missing' if missing else 'not read'}"
-            continue
+            self.diagnostics.add(name, 1, "cpp-missing" if missing else refused.code, message, "error")
+            self.summary.incomplete = self.summary.incomplete or f"{name}: {'missing' if missing else 'not read'}"
+            return None
         try:
             data = sandbox.read_bytes(source, "source")
         except sandbox.Refused as exc:  # changed since it was checked
-            diagnostics.add(name, 1, exc.code, f"not read: {exc}", "error")
-            continue
+            self.diagnostics.add(name, 1, exc.code, f"not read: {exc}", "error")
+            return None
         if len(data) > SOURCE_CAP:
-            diagnostics.add(name, 1, "too-large", f"{len(data)} bytes, over the {SOURCE_CAP}-byte cap for C++ "
-                            "sources; its ROS calls are not recovered", "error")
-            summary.incomplete = summary.incomplete or f"{name}: too large to read"
-            continue
-        cache_key = key(env.fingerprint, name, cls or "", " ".join(env.file_args(source)), data)
-        result = cache.get(cache_key)
-        if not isinstance(result, FileResult) or not _still_valid(result, env):
-            index = index or ci.Index.create()
-            result = _parse_guarded(index, source, name, env, cls)
-            cache.put(cache_key, result)
-        _merge(summary, result, diagnostics)
-        behaviors.append(result.behavior)
-        if cls is not None and len(result.classes) > len(cls.split("|")):
-            cls = "|".join(result.classes)
-    summary.publishes, summary.writes = link_files(behaviors)
-    _settle_behavior(summary)
-    return summary
+            self.diagnostics.add(name, 1, "too-large", f"{len(data)} bytes, over the {SOURCE_CAP}-byte cap for C++ "
+                                 "sources; its ROS calls are not recovered", "error")
+            self.summary.incomplete = self.summary.incomplete or f"{name}: too large to read"
+            return None
+        cache_key = key(self.env.fingerprint, name, cls or "", " ".join(self.env.file_args(source)), data)
+        result = self.cache.get(cache_key)
+        if not isinstance(result, FileResult) or not _still_valid(result, self.env):
+            self.index = self.index or ci.Index.create()
+            result = _parse_guarded(self.index, source, name, self.env, cls)
+            self.cache.put(cache_key, result)
+        return result
 
 
 def _text(source: Path) -> str:
@@ -503,9 +528,11 @@ def _confined(flags: list[str], directory: Path) -> list[str]:
 def _nested_include_roots() -> list[str]:
     """Debian puts some ROS headers one level down (/usr/include/pluginlib/pluginlib/...), and so
     does ROS 2 since Humble (/opt/ros/humble/include/rclcpp/rclcpp/...); their build files add
-    <include>/<name>, and so does archlog."""
+    <include>/<name>, and so does archlog. So do libraries in a versioned folder
+    (/usr/include/pcl-1.13/pcl/..., which find_package(PCL) adds)."""
     roots = [Path("/usr/include"), *sorted(Path(p) for p in glob.glob("/opt/ros/*/include"))]
-    return sorted(str(d) for root in roots for d in root.glob("*") if (d / d.name).is_dir())
+    return sorted(str(d) for root in roots for d in root.glob("*")
+                  if (d / d.name).is_dir() or (d / re.sub(r"-[0-9][0-9.]*$", "", d.name)).is_dir() and "-" in d.name)
 
 
 _INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
