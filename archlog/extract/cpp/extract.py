@@ -31,6 +31,7 @@ from archlog import sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cpp.behavior import FileBehavior, link_files
 from archlog.extract.cpp.cache import ResultCache, cache_dir, key
+from archlog.extract.cpp.callers import merged_sites, settled_loads, settled_ports
 from archlog.extract.cpp.macros import MACRO_TOKENS, Macro, defines, macro_bomb, nested_calls
 from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp import walk
@@ -148,6 +149,8 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
         if source in results:
             _merge(summary, results[source][0], diagnostics)
             behaviors.append(results[source][0].behavior)
+    sites = merged_sites([result.calls for result, _cls in results.values()])
+    summary.ports, summary.loads = settled_ports(summary.ports, sites), settled_loads(summary.loads, sites)
     summary.publishes, summary.writes = link_files(behaviors)
     _settle_behavior(summary)
     return summary

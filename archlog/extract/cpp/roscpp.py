@@ -17,6 +17,7 @@ import clang.cindex as ci
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cpp.behavior import read_behavior
+from archlog.extract.cpp.callers import FromCaller, function_keys
 from archlog.extract.cpp.clang_ast import (
     SKIP,
     CursorKey,
@@ -111,6 +112,12 @@ def _default_handle(owner: str) -> Value:
     return FullNodeName("~") if owner == "dynamic_reconfigure::Server" else ""
 
 
+def _named_or_flag(type_: ci.Type) -> bool:
+    """A type a name or a flag is passed as (a string, a character pointer, a bool)."""
+    canonical = type_.get_canonical()
+    return canonical.kind == ci.TypeKind.BOOL or "string" in canonical.spelling or "char" in canonical.spelling
+
+
 def _made_class(call: ci.Cursor) -> str:
     """The class a make_shared<T>(...) / make_unique<T>(...) call constructs."""
     made = call.type.get_canonical().get_template_argument_type(0)
@@ -188,6 +195,7 @@ class _Walker:
         reads = [c for c in calls if c.spelling in PARAM_READS]  # first: a port's guard may test what they read
         for cursor in reads + [c for c in calls if c.spelling not in PARAM_READS]:
             self.call(cursor)
+        self.record_call_sites(calls)
 
     def workspace_code(self, decl: ci.Cursor) -> bool:
         """A declaration in the file or in a header of the workspace."""
@@ -203,9 +211,24 @@ class _Walker:
         found = {evaluate(args[index]) for site in sites if len(args := written_args(site)) > index}
         if len(found) == 1:
             return next(iter(found))
-        why = f"{param.spelling} comes from a caller in another file: no call site in this file passes this {what}" \
-            if not found else f"call sites pass different values for {what}"
-        return self.unknown(expr, why)
+        if found or function is None or index < 0:
+            return self.unknown(expr, f"call sites pass different values for {what}")
+        unknown = self.unknown(expr, f"{param.spelling} comes from a caller in another file: no call site in this "
+                                     f"file passes this {what}")  # callers.py looks in the executable's other files
+        return FromCaller(unknown.expr, unknown.file, unknown.line, function_keys(function), index)
+
+    def record_call_sites(self, calls: list[ci.Cursor]) -> None:
+        """The handle, name and flag arguments of the calls to the workspace's functions, for
+        parameters that files defining them cannot know (callers.py)."""
+        for call in calls:
+            ref = call.referenced
+            if ref is None or ref.kind not in (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR) or \
+                    not self.workspace_code(ref):
+                continue
+            args = tuple(self.handles.handle_of(a) if is_handle_type(a.type) else
+                         self.value(a) if _named_or_flag(a.type) else None for a in written_args(call))
+            if any(a is not None for a in args):
+                self.result.calls.setdefault(ref.canonical.get_usr(), []).append(args)
 
     # -- values ---------------------------------------------------------------------------
     def value(self, expr: ci.Cursor, depth: int = 0) -> Value:
@@ -468,9 +491,11 @@ class _Walker:
     def param_condition(self, call: ci.Cursor) -> tuple[Value, str | None] | None:
         """The parameter the innermost if/else around a port's call tests, and the value it needs."""
         branch = self.branches.innermost(call)
-        tested = tested_variable(branch[0]) if branch is not None else None
+        tested = tested_variable(branch[0], branch[1]) if branch is not None else None
         ref = self.param_vars.get(self.key(tested[0])) if tested is not None else None
-        if branch is None or tested is None or not isinstance(ref, ParamRef):
+        if tested is not None and ref is None and tested[0].kind == K.PARM_DECL:  # a flag its callers pass
+            ref = self.from_call_sites(tested[0], call, self.value, tested[0].spelling)
+        if branch is None or tested is None or not isinstance(ref, (ParamRef, FromCaller)):
             return None
         return ref, "true" if branch[1] != tested[1] else "false"
 
