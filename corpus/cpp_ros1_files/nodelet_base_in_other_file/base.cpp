@@ -10,5 +10,6 @@ void Base::onInit()
   ros::NodeHandle& pnh = getPrivateNodeHandle();
   pub_ = pnh.advertise<std_msgs::String>("output", 1);
   sub_ = pnh.subscribe("input", 1, &Base::process, this);
+  childInit(pnh);
 }
 }  // namespace filters

@@ -13,5 +13,6 @@ protected:
   ros::Subscriber sub_;
   void onInit() override;
   virtual void process(const std_msgs::String::ConstPtr& msg) = 0;
+  virtual void childInit(ros::NodeHandle& nh) = 0;  // each filter's own ports
 };
 }  // namespace filters

@@ -1,16 +1,13 @@
-// The nodelet: all of its ports come from its base class, defined in base.cpp.
+// The nodelet: its ports come from its base class (base.cpp) and the override in upper.h.
 #include <pluginlib/class_list_macros.hpp>
-#include "base.h"
+#include "upper.h"
 
 namespace filters
 {
-class Upper : public Base
+void Upper::process(const std_msgs::String::ConstPtr& msg)
 {
-  void process(const std_msgs::String::ConstPtr& msg) override
-  {
-    pub_.publish(msg);
-  }
-};
+  pub_.publish(msg);
+}
 }  // namespace filters
 
 PLUGINLIB_EXPORT_CLASS(filters::Upper, nodelet::Nodelet)
