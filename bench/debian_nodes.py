@@ -261,17 +261,18 @@ def _cases() -> list[Case]:
         C("pcl_radius_outlier_removal", pcl,
           nodelet("pcl/RadiusOutlierRemoval", "radius_outlier_removal", inner=p("radius_search", "0.1")), cloud),
         C("pcl_crop_box", pcl, nodelet("pcl/CropBox", "crop_box"), cloud),
+        # features, clustering and surface nodelets stop in onInit without ~spatial_locator (0: FLANN)
         C("pcl_normal_estimation", pcl, nodelet("pcl/NormalEstimation", "normal_estimation",
-                                                inner=p("k_search", "5")), cloud),
+                                                inner=p("k_search", "5") + p("spatial_locator", "0")), cloud),
         C("pcl_sac_segmentation", pcl, nodelet("pcl/SACSegmentation", "sac_segmentation",
                                                inner=p("model_type", "0") + p("distance_threshold", "0.05")), cloud),
         C("pcl_euclidean_cluster_extraction", pcl,
-          nodelet("pcl/EuclideanClusterExtraction", "euclidean_cluster_extraction", inner=p("cluster_tolerance", "0.1")),
-          cloud),
+          nodelet("pcl/EuclideanClusterExtraction", "euclidean_cluster_extraction",
+                  inner=p("cluster_tolerance", "0.1") + p("spatial_locator", "0")), cloud),
         C("pcl_pcd_writer", pcl, nodelet("pcl/PCDWriter", "pcd_writer", inner=p("filename", "/tmp/archlog_w.pcd")),
           cloud),
         C("pcl_moving_least_squares", pcl, nodelet("pcl/MovingLeastSquares", "moving_least_squares",
-                                                   inner=p("search_radius", "0.1")), cloud),
+                                                   inner=p("search_radius", "0.1") + p("spatial_locator", "0")), cloud),
     ]
     for c in cases:  # pcl_ros nodelets read ~input
         if c.name.startswith("pcl_"):

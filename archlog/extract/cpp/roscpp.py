@@ -268,6 +268,8 @@ class _Walker:
             return self.loop_values(self.loops[self.key(decl)], expr, depth)
         if decl.kind in (K.VAR_DECL, K.FIELD_DECL):
             init = [c for c in decl.get_children() if c.kind not in SKIP and not default_constructed(c)]
+            if decl.kind == K.FIELD_DECL and not init and (start := initial_value(decl)) is not None:
+                init = [start]  # set in a constructor's member initializer list
             if init and decl.type.is_const_qualified():
                 return self.value(init[-1], depth + 1)
             assigned = assignments(decl)
