@@ -201,6 +201,9 @@ class NodeReader(ValueFolder):
         elif func in _FIXED:
             for kind, topic in _FIXED[func]:
                 self.add(kind, call, topic, _FIXED_TYPES[topic])
+        elif func == "tf2_ros.Buffer" and ((debug := arg(call, 1, "debug")) is None or
+                                           self.value(debug) not in ("false", "0")):
+            self.add("service_server", call, "~tf2_frames", "tf2_msgs/FrameGraph")  # its debug service
         elif func in _PARAM_READS and call.args:
             default = arg(call, 1, "default") if _PARAM_READS[func] else None
             self.add("param_read", call, self.value(call.args[0]), "",
