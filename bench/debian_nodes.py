@@ -19,6 +19,7 @@ scored separately, credited to ros-nodelet-core ("nodelet infrastructure").
 
     python bench/debian_nodes.py [--debsrc /work/debsrc] [--only CASE,...] [--package SRC,...]
                                  [--output bench/results/debian_nodes.json] [--observed-dir DIR]
+    python bench/debian_nodes.py --compare BEFORE.json    # the tables of --output, beside an earlier run
 
 Needs Debian 12's ROS 1 binary packages (see INSTALL) and the source packages extracted in --debsrc
 (`apt-get source` with a deb-src entry; see the results JSON for the folders used).
@@ -261,17 +262,18 @@ def _cases() -> list[Case]:
         C("pcl_radius_outlier_removal", pcl,
           nodelet("pcl/RadiusOutlierRemoval", "radius_outlier_removal", inner=p("radius_search", "0.1")), cloud),
         C("pcl_crop_box", pcl, nodelet("pcl/CropBox", "crop_box"), cloud),
+        # features, clustering and surface nodelets stop in onInit without ~spatial_locator (0: FLANN)
         C("pcl_normal_estimation", pcl, nodelet("pcl/NormalEstimation", "normal_estimation",
-                                                inner=p("k_search", "5")), cloud),
+                                                inner=p("k_search", "5") + p("spatial_locator", "0")), cloud),
         C("pcl_sac_segmentation", pcl, nodelet("pcl/SACSegmentation", "sac_segmentation",
                                                inner=p("model_type", "0") + p("distance_threshold", "0.05")), cloud),
         C("pcl_euclidean_cluster_extraction", pcl,
-          nodelet("pcl/EuclideanClusterExtraction", "euclidean_cluster_extraction", inner=p("cluster_tolerance", "0.1")),
-          cloud),
+          nodelet("pcl/EuclideanClusterExtraction", "euclidean_cluster_extraction",
+                  inner=p("cluster_tolerance", "0.1") + p("spatial_locator", "0")), cloud),
         C("pcl_pcd_writer", pcl, nodelet("pcl/PCDWriter", "pcd_writer", inner=p("filename", "/tmp/archlog_w.pcd")),
           cloud),
         C("pcl_moving_least_squares", pcl, nodelet("pcl/MovingLeastSquares", "moving_least_squares",
-                                                   inner=p("search_radius", "0.1")), cloud),
+                                                   inner=p("search_radius", "0.1") + p("spatial_locator", "0")), cloud),
     ]
     for c in cases:  # pcl_ros nodelets read ~input
         if c.name.startswith("pcl_"):
@@ -474,6 +476,36 @@ def tables(results: list[dict]) -> str:
     return "\n".join(lines + ["### Summary", ""] + summary) + "\n"
 
 
+def package_totals(results: list[dict], own_only: bool = True) -> dict[str, tuple[int, int, int]]:
+    """(observed, missed, extra) ports per source package, the nodelet infrastructure left out."""
+    totals: dict[str, tuple[int, int, int]] = {}
+    for r in results:
+        if "error" in r:
+            continue
+        o, m, e = totals.get(r["package"], (0, 0, 0))
+        own = r["own"]
+        totals[r["package"]] = (o + own["observed"], m + len(own["missed"]), e + len(own["extra"]))
+    return totals
+
+
+def comparison(before: list[dict], after: list[dict]) -> str:
+    """A markdown table of missed and extra ports per source package, before and after."""
+    old, new = package_totals(before), package_totals(after)
+    lines = ["| source package | observed before | missed before | extra before | observed after | missed after "
+             "| extra after |", "|---|---:|---:|---:|---:|---:|---:|"]
+    sums = [0] * 6
+    for pkg in sorted(old.keys() | new.keys()):
+        row = [*old.get(pkg, (0, 0, 0)), *new.get(pkg, (0, 0, 0))]
+        sums = [a + b for a, b in zip(sums, row)]
+        o, m, e, o2, m2, e2 = row
+        lines.append(f"| {pkg} | {o} | {m} ({pct(m, o)}%) | {e} ({pct(e, o)}%) | {o2} | {m2} ({pct(m2, o2)}%) "
+                     f"| {e2} ({pct(e2, o2)}%) |")
+    o, m, e, o2, m2, e2 = sums
+    lines.append(f"| **total without nodelet infrastructure** | {o} | {m} ({pct(m, o)}%) | {e} ({pct(e, o)}%) | {o2} "
+                 f"| {m2} ({pct(m2, o2)}%) | {e2} ({pct(e2, o2)}%) |")
+    return "\n".join(lines) + "\n"
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--debsrc", type=Path, default=Path(os.environ.get("ARCHLOG_DEBSRC", "/work/debsrc")))
@@ -483,7 +515,14 @@ def main() -> int:
     ap.add_argument("--write-launch", action="store_true", help="only write the launch files")
     ap.add_argument("--observed-dir", type=Path, help="keep each observation there, and reuse a kept one "
                     "(same launch file) instead of launching again: recovery changes are scored in seconds")
+    ap.add_argument("--compare", type=Path, metavar="BEFORE_JSON", help="print the tables of --output (no run) "
+                    "and, per source package, its missed and extra ports beside those of an earlier results file")
     opts = ap.parse_args()
+    if opts.compare:
+        after = json.loads(opts.output.read_text())["cases"]
+        print(tables([r for r in after if "error" not in r]) + "\n### Before and after\n\n"
+              + comparison(json.loads(opts.compare.read_text())["cases"], after))
+        return 0
     chosen = [c for c in CASES if (not opts.only or c.name in opts.only.split(","))
               and (not opts.package or c.package in opts.package.split(","))]
     FIXTURES.mkdir(exist_ok=True)

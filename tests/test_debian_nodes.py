@@ -31,7 +31,10 @@ BASELINE = {
     "image_proc": (17, 0, 0),  # loads debayer and two rectify nodelets into itself (nodelet::Loader)
     "hd_monitor": (1, 0, 0),  # ros-diagnostics, Python
     "robot_state_publisher": (3, 0, 0),  # ports in a catkin library it links (joint_state_listener.cpp)
-    "mux": (9, 4, 0),  # ros-comm topic_tools: names from argv (mux.cpp:318, 363) missed
+    "mux": (9, 1, 0),  # ros-comm topic_tools: names from argv (the model's); the output's type is the input's
+    "relay": (2, 1, 0),  # the input named by argv; the output (the input's type) is not modelled
+    "tf2_buffer_server": (7, 0, 0),  # its action server is named by main() in another file (call-site summaries)
+    "image_rotate": (9, 0, 0),  # a reconfigure server without a handle: the process's private namespace
 }
 
 # case -> the same for the nodelet mechanism's own ports (manager services, bonds, loader processes)

@@ -1,6 +1,8 @@
 """Extraction on CodeQL-style fixtures, compared with their .expected files: rospy/rclpy in
 corpus/python, roscpp in corpus/cpp_ros1, rclcpp in corpus/cpp_ros2 (a file registering a
-component, or exporting a nodelet, is read as that class: only it is the node).
+component, or exporting a nodelet, is read as that class: only it is the node), and executables
+of several roscpp files in corpus/cpp_ros1_files (a folder each, its files read together as one
+executable, or as the first class its files export in name order).
 
 `pytest --update-goldens` rewrites the .expected files that differ (then review the diff)."""
 
@@ -20,7 +22,7 @@ from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.executables import exported_plugins, registered_components
 
-FOLDERS = ("python", "cpp_ros1", "cpp_ros2")
+FOLDERS = ("python", "cpp_ros1", "cpp_ros2", "cpp_ros1_files")
 FIXTURES = sorted(p for folder in FOLDERS for p in (ROOT / "corpus" / folder).iterdir() if p.suffix != ".expected")
 
 
@@ -30,9 +32,12 @@ def cpp_environment() -> CppEnvironment:
 
 
 def extract(fixture: Path, sink: DiagnosticSink) -> NodeSummary:
-    if fixture.suffix == ".cpp":
-        classes = [c for c, _line in registered_components(fixture.read_text())] + exported_plugins(fixture)
-        return extract_cpp([fixture], "fixtures", fixture.name, cpp_environment(), {fixture: fixture.name}, sink,
+    if fixture.suffix == ".cpp" or fixture.is_dir():
+        files = sorted(fixture.glob("*.cpp")) if fixture.is_dir() else [fixture]
+        classes = [c for f in files for c in [c for c, _line in registered_components(f.read_text())]
+                   + exported_plugins(f)]
+        shown = {f: f"{fixture.name}/{f.name}" if fixture.is_dir() else f.name for f in files}
+        return extract_cpp(files, "fixtures", fixture.name, cpp_environment(), shown, sink,
                            classes[0] if classes else None)
     return extract_python(fixture, "fixtures", fixture.name, fixture.name, sink)
 

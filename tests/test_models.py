@@ -147,6 +147,40 @@ def test_model_marked_incomplete_makes_its_node_opaque(tmp_path: Path) -> None:
 
 
 
+def test_relay_topics_come_from_each_instance_command_line(tmp_path: Path) -> None:
+    """topic_tools' model names its ports from the arguments (`{argv: "{N}"}`, `{argv_from: N}`), per
+    instance, remapping words left out (and applied); a relay's input has whatever type it carries, transform's
+    output the type it is given; an argument that is not given leaves the name unknown."""
+    launch = workspace(tmp_path, """<launch>
+  <node pkg="topic_tools" type="mux" name="mux" ns="robot" args="cmd_vel joy_vel /nav_vel joy_vel:=joy"/>
+  <node pkg="topic_tools" type="transform" name="len" args="/chatter /chatter_len std_msgs/UInt32 'len(m.data)'"/>
+  <node pkg="topic_tools" type="throttle" name="throttle" args="messages scan 2.0"/>
+  <node pkg="topic_tools" type="relay" name="bare"/>
+</launch>""")
+    result = analyse([tmp_path], [str(launch)], {}, [])
+    ports = sorted((rel, n, t if isinstance(t, str) else "?", ty if isinstance(ty, str) else "*")
+                   for rel in ("publisher", "subscriber", "service_server") for _p, n, t, ty in result.store.rows(rel)
+                   if rel != "service_server" or "/mux/" not in t)
+    assert ports == [("publisher", "/len", "/chatter_len", "std_msgs/UInt32"),
+                     ("publisher", "/robot/mux", "/robot/mux/selected", "std_msgs/String"),
+                     ("service_server", "/robot/mux", "/robot/cmd_vel_select", "topic_tools/MuxSelect"),
+                     ("subscriber", "/bare", "?", "*"), ("subscriber", "/len", "/chatter", "*"),
+                     ("subscriber", "/robot/mux", "/nav_vel", "*"), ("subscriber", "/robot/mux", "/robot/joy", "*"),
+                     ("subscriber", "/throttle", "/scan", "*")]
+
+
+def test_command_line_names_in_a_model_are_checked(tmp_path: Path) -> None:
+    model = tmp_path / "m.yaml"
+    model.write_text("package: x\nexecutable: y\nsubscribers:\n  - {name: {argv: in}, type: '*'}\n"
+                     "  - {name: {argv_from: 0}, type: '*'}\n  - {name: {argv: '{1}'}, type: {argv: '{2}_x'}}\n")
+    sink = DiagnosticSink()
+    assert load_models(model, "m.yaml", sink) == []
+    assert [(d.line, d.code) for d in sink.items] == [(4, "model-schema")]
+    model.write_text("package: x\nexecutable: y\nsubscribers:\n  - {name: {argv: '{1}', default: '{2}'}, type: '*'}\n")
+    (summary, _instance), = load_models(model, "m.yaml", sink)
+    assert summary.ports == [] and len(summary.argv_ports) == 1
+
+
 def test_spawned_controllers_are_instances_of_their_type_models(tmp_path: Path) -> None:
     launch = workspace(tmp_path, """<launch>
   <group ns="base">

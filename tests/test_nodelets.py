@@ -178,3 +178,48 @@ def test_a_nodelet_that_hands_its_handle_to_an_object_of_its_file() -> None:
                      ("publisher", "/smoother/smooth_cmd_vel"), ("service_server", "/smoother/set_parameters"),
                      ("subscriber", "/smoother/raw_cmd_vel")]
     assert [d.code for d in result.diagnostics.items] == ["cpp-compile"]
+
+
+ROTATE = """#include <dynamic_reconfigure/server.h>
+#include <dynamic_reconfigure/TestConfig.h>
+#include <nodelet/nodelet.h>
+#include <pluginlib/class_list_macros.hpp>
+#include <ros/ros.h>
+#include <sensor_msgs/Image.h>
+namespace vision {
+class Rotate : public nodelet::Nodelet {
+  dynamic_reconfigure::Server<dynamic_reconfigure_test::TestConfig> srv_;
+  ros::Publisher pub_;
+  void onInit() override {
+    pub_ = getNodeHandle().advertise<sensor_msgs::Image>("rotated", 1);
+  }
+};
+}
+PLUGINLIB_EXPORT_CLASS(vision::Rotate, nodelet::Nodelet)
+"""
+
+
+def test_reconfigure_server_without_handle_is_the_process(tmp_path: Path) -> None:
+    """image_rotate's nodelet: a dynamic_reconfigure server member built without a handle serves in
+    NodeHandle("~") of the process (ros::this_node::getName()), which for a nodelet loaded into a
+    manager is the manager's name, not the nodelet's; standalone, the nodelet's own."""
+    pkg = tmp_path / "src" / "vision"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "package.xml").write_text(MANIFEST)
+    (pkg / "nodelets.xml").write_text(PLUGINS.replace("vision/Edges", "vision/Rotate").replace("vision::Edges",
+                                                                                               "vision::Rotate"))
+    (pkg / "CMakeLists.txt").write_text("project(vision)\nadd_library(vision_nodelets src/rotate.cpp)\n")
+    (pkg / "src" / "rotate.cpp").write_text(ROTATE)
+    (pkg / "run.launch").write_text("""<launch>
+  <node pkg="nodelet" type="nodelet" name="manager" args="manager" ns="cam"/>
+  <node pkg="nodelet" type="nodelet" name="rotate" args="load vision/Rotate manager" ns="cam"/>
+  <node pkg="nodelet" type="nodelet" name="alone" args="standalone vision/Rotate"/>
+</launch>""")
+    result = analyse([tmp_path], [str(pkg / "run.launch")], {}, [])
+    ports = sorted((n, t) for rel in ("publisher", "service_server") for _p, n, t, _ty in result.store.rows(rel)
+                   if "manager/" not in t or "set_parameters" in t or "parameter_" in t)
+    assert ports == [("/alone", "/alone/parameter_descriptions"), ("/alone", "/alone/parameter_updates"),
+                     ("/alone", "/alone/set_parameters"), ("/alone", "/rotated"),
+                     ("/cam/rotate", "/cam/manager/parameter_descriptions"),
+                     ("/cam/rotate", "/cam/manager/parameter_updates"), ("/cam/rotate", "/cam/manager/set_parameters"),
+                     ("/cam/rotate", "/cam/rotated")]

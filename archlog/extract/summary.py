@@ -166,3 +166,4 @@ class NodeSummary:
     tf_description: str | None = None
     tf_args: bool = False
     tf_unknown: bool = False  # its description, arguments or gazebo plugins leave what it broadcasts unknown
+    argv_ports: tuple[tuple[str, dict, str], ...] = ()  # models: (kind, entry, file) named from the command line

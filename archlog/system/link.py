@@ -17,13 +17,13 @@ from archlog.system.camera_info import placed_camera_info
 from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
 from archlog.system.instances import complete_instances
-from archlog.system.node_models import NodeModels
-from archlog.system.nodelets import is_manager, loaded_ports, loader_ports, manager_summary
+from archlog.system.node_models import NodeModels, argv_ports
+from archlog.system.nodelets import in_process, is_manager, loaded_ports, loader_ports, manager_summary
 from archlog.system.param_files import file_ports, listed
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
 from archlog.system.transforms import configured_transforms, spawns
-from archlog.values import ParamList, ParamRef
+from archlog.values import FullNodeName, ParamList, ParamRef
 
 
 @dataclass
@@ -76,7 +76,8 @@ def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: Diagn
     loads nodelets into its process is used: their ports are placed per instance (nodelets.py)."""
     if source.loads:
         return source
-    ours, theirs = _resolved(source), _resolved(model)
+    ours = _resolved(source)
+    theirs = _resolved(model) | {(k, _argv_label(p["name"])) for k, p, _file in model.argv_ports}
     chosen = model if len(ours) < len(theirs) else source
     actions = {n for k, n in ours | theirs if k.startswith("action")}  # an action's topics are the action
     only_source, only_model = ([(k, n) for k, n in sorted(a - b) if not _action_topic(k, n, actions)]
@@ -91,6 +92,13 @@ def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: Diagn
                         f"{shown(only_source)} that archlog's model ({len(theirs)}) lacks, the model "
                         f"{shown(only_model)}; the {'model' if chosen is model else 'source'} is used", "note")
     return chosen
+
+
+def _argv_label(raw: object) -> str:
+    """A model port named from the command line, as a model-drift note shows it."""
+    if isinstance(raw, dict):
+        return f"<argument {raw['argv']}>" if "argv" in raw else f"<arguments from {raw['argv_from']}>"
+    return str(raw)
 
 
 def _action_topic(kind: str, name: str, actions: set[str]) -> bool:
@@ -129,6 +137,10 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
     if summary is not None and summary.loads:
         summary = replace(summary, ports=summary.ports + loaded_ports(node, summary, summaries, diagnostics))
+    if summary is not None and summary.argv_ports:
+        summary = replace(summary, ports=summary.ports + argv_ports(summary, node.args))
+    if summary is not None and any(isinstance(p.handle_ns, FullNodeName) for p in summary.ports):
+        summary = replace(summary, ports=in_process(node, summary.ports))
     if summary is not None and any(p.info_of is not None for p in summary.ports):
         summary = replace(summary, ports=[placed_camera_info(p, node) for p in summary.ports])
     model = models.user.get(node.kind) or models.builtin.get(node.kind)

@@ -14,7 +14,9 @@ publisher: its camera_info topic is the sibling of the image topic as resolved a
 (system/link.py). `plugins:` lists where a node loads pluginlib classes its parameters choose (see
 `PluginSlot`), and a file's `classes:` the ports such a class creates in the namespace its host
 gives it (system/plugin_slots.py). A model with `incomplete: REASON` lists only some ports, so its
-nodes count as opaque. `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the
+nodes count as opaque. A name `{argv: "{1}_select", default: ...}` or `{argv_from: 2}`, and a
+type `{argv: "{3}"}` or `*` (whatever the topic carries), come from each instance's command line
+(topic_tools' relays: `argv_ports`). `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the
 node broadcasts, `tf_waits` which ones it blocks for, and a port's or slot's `after_tf` which of those
 waits come before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
 breaks it is reported at the offending entry's line and its valid models are still used.
@@ -23,6 +25,8 @@ breaks it is reported at the offending entry's line and its valid models are sti
 from __future__ import annotations
 
 import json
+import re
+import shlex
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from functools import lru_cache
@@ -41,7 +45,8 @@ from archlog.extract.qos import DURATIONS, Qos, seconds_text
 from archlog.extract.registry import Summaries
 from archlog.extract.summary import NodeSummary, PluginSlot, Port, Transform, TransformWait
 from archlog.extract.workspace.index import Workspace
-from archlog.values import ParamList, ParamRef, Value
+from archlog.system.command_line import split_options
+from archlog.values import ParamList, ParamRef, Unknown, Value
 
 SECTIONS = {
     "publishers": "publisher", "subscribers": "subscriber",
@@ -200,18 +205,56 @@ def _transforms(summary: NodeSummary, item: dict, shown: str, diagnostics: Diagn
 
 
 def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: DiagnosticSink) -> None:
+    if _from_argv(port.get("name")) or _from_argv(port.get("type")):  # placed per instance (argv_ports)
+        summary.argv_ports += ((kind, port, shown),)
+        return
+    summary.ports += _ports(kind, port, shown, _name(port["name"], shown, port["__line__"]), str(port.get("type", "")))
+
+
+def _ports(kind: str, port: dict, shown: str, name: Value, type_: Value) -> list[Port]:
     default = port.get("default")
     condition = port.get("if")
-    name = _name(port["name"], shown, port["__line__"])
     private = isinstance(port["name"], dict) and port["name"].get("private")
-    image = Port(kind, name, str(port.get("type", "")), shown, port["__line__"], 0, "~" if private else "",
+    image = Port(kind, name, type_, shown, port["__line__"], 0, "~" if private else "",
                  None if default is None else str(default), qos=() if "qos" not in port else _qos(port["qos"]),
                  condition=None if condition is None else _condition(condition, shown),
                  after_tf=tuple(port.get("after_tf", ())))
-    summary.ports.append(image)
     if port.get("camera_info") and isinstance(name, str):  # placed beside the remapped image per instance
-        summary.ports.append(replace(image, name="camera_info", type="sensor_msgs/CameraInfo", default=None,
-                                     info_of=name))
+        return [image, replace(image, name="camera_info", type="sensor_msgs/CameraInfo", default=None, info_of=name)]
+    return [image]
+
+
+def _from_argv(raw: object) -> bool:
+    return raw == "*" or isinstance(raw, dict) and bool(raw.keys() & {"argv", "argv_from"})
+
+
+def argv_ports(summary: NodeSummary, args: str) -> list[Port]:
+    """A model's ports named (or typed) from the command line, for an instance started with `args`
+    (its positional words: remapping words and flags left out, as ros::init and rospy.myargv do)."""
+    try:
+        words, _options = split_options(shlex.split(args), set())
+    except ValueError:  # reported where the launch file is read
+        words = []
+    ports = []
+    for kind, port, shown in summary.argv_ports:
+        line = port["__line__"]
+        raw, type_ = port["name"], port["type"]
+        found = [_filled(raw["argv"], raw.get("default"), words, shown, line)] if "argv" in raw else \
+            words[raw["argv_from"] - 1:] if "argv_from" in raw else [_name(raw, shown, line)]
+        typed = Unknown("whatever the topic carries", shown, line) if type_ == "*" else \
+            _filled(type_["argv"], None, words, shown, line) if isinstance(type_, dict) else str(type_)
+        for name in found:
+            ports += _ports(kind, port, shown, name, typed)
+    return ports
+
+
+def _filled(template: str, default: str | None, words: list[str], shown: str, line: int) -> Value:
+    """A template with {N} replaced by the N-th word; `default` when a word it names is missing."""
+    for text in (template, default):
+        wanted = [int(n) for n in re.findall(r"\{([0-9]+)\}", text or "")]
+        if text is not None and all(0 < n <= len(words) for n in wanted):
+            return re.sub(r"\{([0-9]+)\}", lambda m: words[int(m.group(1)) - 1], text)
+    return Unknown(f"command-line argument {template} not given", shown, line)
 
 
 def _qos(spec: str | dict) -> tuple[tuple[str, str], ...]:

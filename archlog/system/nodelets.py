@@ -43,12 +43,24 @@ def is_manager(node: LaunchNode) -> bool:
     return _is_nodelet(node, "manager")
 
 
+def _manager_of(node: LaunchNode) -> str | None:
+    """The full name of the manager a `nodelet load` process loads its nodelet into (None: not a loader)."""
+    words = _words(node)
+    return names.resolve(words[2], node.namespace, node.name) if _is_nodelet(node, "load") and len(words) >= 3 \
+        else None
+
+
 def _bonded_manager(node: LaunchNode) -> str | None:
     """The full name of the manager a `nodelet load` process bonds with (None: not a bonded loader)."""
-    words = _words(node)
-    if not _is_nodelet(node, "load") or len(words) < 3 or "--no-bond" in words:
-        return None
-    return names.resolve(words[2], node.namespace, node.name)
+    return None if "--no-bond" in _words(node) else _manager_of(node)
+
+
+def in_process(node: LaunchNode, ports: list[Port]) -> list[Port]:
+    """An instance's ports on its process's private namespace (handle FullNodeName("~"): a
+    dynamic_reconfigure server built without a handle) under the process's name: a loaded
+    nodelet's process is its manager."""
+    process = _manager_of(node) or node.name
+    return [replace(p, handle_ns=process) if isinstance(p.handle_ns, FullNodeName) else p for p in ports]
 
 
 def manager_summary(node: LaunchNode, config: LaunchConfig) -> NodeSummary:
@@ -89,7 +101,7 @@ def loaded_ports(node: LaunchNode, summary: NodeSummary, summaries: Summaries,
             diagnostics.add(load.file, load.line, "nodelet-unknown",
                             f"{node.name} loads a nodelet here whose ports are unknown: {why}", "warning")
             continue
-        ports += [_placed(port, full, load) for port in loaded.ports]
+        ports += [_placed(port, full, load) for port in in_process(node, loaded.ports)]
     return ports
 
 

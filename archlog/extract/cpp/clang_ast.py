@@ -43,11 +43,17 @@ def template_arg_type(call: ci.Cursor) -> str | None:
     return next((t for c in callee.get_children() if c.kind == K.TYPE_REF and (t := ros_type(c.type))), None)
 
 
+PCL_CLOUD = re.compile(r"\bpcl::PointCloud<")
+"""A pcl::PointCloud<T> travels as sensor_msgs/PointCloud2 (pcl_ros's serialization)."""
+
+
 def ros_type(type_: ci.Type) -> str | None:
     """'sensor_msgs/LaserScan' from a C++ type such as const sensor_msgs::LaserScan::ConstPtr&."""
     canonical = type_.get_canonical().spelling
     if (ros2 := ros2_type(canonical)) is not None:
         return ros2
+    if PCL_CLOUD.search(canonical):
+        return "sensor_msgs/PointCloud2"
     match = MSG_TYPE.search(canonical)
     if match:
         return action_base(f"{match.group(1)}/{match.group(2)}")
@@ -63,6 +69,8 @@ def ros2_type(spelling: str) -> str | None:
 def type_from_spelling(spelling: str) -> str | None:
     if (ros2 := ros2_type(spelling)) is not None:
         return ros2
+    if PCL_CLOUD.search(spelling):
+        return "sensor_msgs/PointCloud2"
     match = MSG_TYPE.search(spelling)
     if match:
         return action_base(f"{match.group(1)}/{match.group(2)}")

@@ -31,6 +31,7 @@ from archlog import sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cpp.behavior import FileBehavior, link_files
 from archlog.extract.cpp.cache import ResultCache, cache_dir, key
+from archlog.extract.cpp.callers import merged_sites, settled_loads, settled_ports
 from archlog.extract.cpp.macros import MACRO_TOKENS, Macro, defines, macro_bomb, nested_calls
 from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp import walk
@@ -126,46 +127,73 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
     """The summary of one executable (or of one nodelet class): every source file read, from the
     cache when unchanged. A nodelet's files are read after the one that names its class, with the
     base classes found there (their methods, defined in other files of the library, are the node's
-    code too)."""
+    code too); a file read before more of them were known is read again."""
     summary = NodeSummary(package, executable, "cpp")
-    cache = ResultCache("cpp")
-    index: ci.Index | None = None
-    behaviors: list[FileBehavior] = []
+    reader = _Reader(env, shown, diagnostics, summary)
     if cls is not None:
         last = cls.rsplit("::", 1)[-1]
         sources = sorted(sources, key=lambda s: re.search(rf"\b{re.escape(last)}\b", _text(s)) is None)
+    results: dict[Path, tuple[FileResult, str | None]] = {}
+    pending = list(sources)
+    while pending:
+        source = pending.pop(0)
+        result = reader.read(source, cls)
+        if result is None:
+            continue
+        results[source] = (result, cls)
+        if cls is not None and len(result.classes) > len(cls.split("|")):
+            cls = "|".join(result.classes)  # files read before the class's bases were known: again
+            pending += [s for s, (_r, read_as) in results.items() if read_as != cls and s not in pending]
+    behaviors: list[FileBehavior] = []
     for source in sources:
-        name = shown.get(source, str(source))
+        if source in results:
+            _merge(summary, results[source][0], diagnostics)
+            behaviors.append(results[source][0].behavior)
+    sites = merged_sites([result.calls for result, _cls in results.values()])
+    summary.ports, summary.loads = settled_ports(summary.ports, sites), settled_loads(summary.loads, sites)
+    summary.publishes, summary.writes = link_files(behaviors)
+    _settle_behavior(summary)
+    return summary
+
+
+@dataclass
+class _Reader:
+    """Reads one source file for extract_cpp (from the cache when unchanged); a file that cannot be
+    read is a diagnostic and makes the summary incomplete."""
+
+    env: CppEnvironment
+    shown: dict[Path, str]
+    diagnostics: DiagnosticSink
+    summary: NodeSummary
+    cache: ResultCache = field(default_factory=lambda: ResultCache("cpp"))
+    index: ci.Index | None = None
+
+    def read(self, source: Path, cls: str | None) -> FileResult | None:
+        name = self.shown.get(source, str(source))
         refused = unreadable(source, "source")
         if refused is not None:
             missing = refused.code == "missing"
             message = "source file listed in CMakeLists.txt does not exist" if missing else f"not read: {refused}"
-            diagnostics.add(name, 1, "cpp-missing" if missing else refused.code, message, "error")
-            summary.incomplete = summary.incomplete or f"{name}: {'missing' if missing else 'not read'}"
-            continue
+            self.diagnostics.add(name, 1, "cpp-missing" if missing else refused.code, message, "error")
+            self.summary.incomplete = self.summary.incomplete or f"{name}: {'missing' if missing else 'not read'}"
+            return None
         try:
             data = sandbox.read_bytes(source, "source")
         except sandbox.Refused as exc:  # changed since it was checked
-            diagnostics.add(name, 1, exc.code, f"not read: {exc}", "error")
-            continue
+            self.diagnostics.add(name, 1, exc.code, f"not read: {exc}", "error")
+            return None
         if len(data) > SOURCE_CAP:
-            diagnostics.add(name, 1, "too-large", f"{len(data)} bytes, over the {SOURCE_CAP}-byte cap for C++ "
-                            "sources; its ROS calls are not recovered", "error")
-            summary.incomplete = summary.incomplete or f"{name}: too large to read"
-            continue
-        cache_key = key(env.fingerprint, name, cls or "", " ".join(env.file_args(source)), data)
-        result = cache.get(cache_key)
-        if not isinstance(result, FileResult) or not _still_valid(result, env):
-            index = index or ci.Index.create()
-            result = _parse_guarded(index, source, name, env, cls)
-            cache.put(cache_key, result)
-        _merge(summary, result, diagnostics)
-        behaviors.append(result.behavior)
-        if cls is not None and len(result.classes) > len(cls.split("|")):
-            cls = "|".join(result.classes)
-    summary.publishes, summary.writes = link_files(behaviors)
-    _settle_behavior(summary)
-    return summary
+            self.diagnostics.add(name, 1, "too-large", f"{len(data)} bytes, over the {SOURCE_CAP}-byte cap for C++ "
+                                 "sources; its ROS calls are not recovered", "error")
+            self.summary.incomplete = self.summary.incomplete or f"{name}: too large to read"
+            return None
+        cache_key = key(self.env.fingerprint, name, cls or "", " ".join(self.env.file_args(source)), data)
+        result = self.cache.get(cache_key)
+        if not isinstance(result, FileResult) or not _still_valid(result, self.env):
+            self.index = self.index or ci.Index.create()
+            result = _parse_guarded(self.index, source, name, self.env, cls)
+            self.cache.put(cache_key, result)
+        return result
 
 
 def _text(source: Path) -> str:
@@ -215,7 +243,7 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
                                              "error"))
         result.incomplete = f"{shown}: could not be parsed"
         return result
-    everywhere = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error]
+    everywhere = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error and not _builtin_header(d)]
     gaps = [d for d in everywhere if stand_ins and _stand_in_gap(d, stand_ins)]
     genuine = [d for d in everywhere if d not in gaps and not (gaps and _cascade(d, gaps, source))]
     errors = [d for d in genuine if d.location.file and Path(d.location.file.name) == source]
@@ -431,6 +459,14 @@ def _cascade(diag: ci.Diagnostic, gaps: list[ci.Diagnostic], source: Path) -> bo
                for g in gaps)
 
 
+def _builtin_header(diag: ci.Diagnostic) -> bool:
+    """An error in clang's builtin headers (emmintrin.h...): those of the installed clang, which
+    the libclang wheel may be newer than (its intrinsics are spelled differently). Only those
+    headers' inline bodies break, not the code that includes them."""
+    rdir = resource_dir()
+    return rdir is not None and diag.location.file is not None and diag.location.file.name.startswith(rdir)
+
+
 def _ros1_system(folder: Path) -> bool:
     """Debian's ROS 1 headers (/usr/include and its nested package folders)."""
     return str(folder) == "/usr/include" or str(folder.parent) == "/usr/include"
@@ -495,9 +531,11 @@ def _confined(flags: list[str], directory: Path) -> list[str]:
 def _nested_include_roots() -> list[str]:
     """Debian puts some ROS headers one level down (/usr/include/pluginlib/pluginlib/...), and so
     does ROS 2 since Humble (/opt/ros/humble/include/rclcpp/rclcpp/...); their build files add
-    <include>/<name>, and so does archlog."""
+    <include>/<name>, and so does archlog. So do libraries in a versioned folder
+    (/usr/include/pcl-1.13/pcl/..., which find_package(PCL) adds)."""
     roots = [Path("/usr/include"), *sorted(Path(p) for p in glob.glob("/opt/ros/*/include"))]
-    return sorted(str(d) for root in roots for d in root.glob("*") if (d / d.name).is_dir())
+    return sorted(str(d) for root in roots for d in root.glob("*")
+                  if (d / d.name).is_dir() or (d / re.sub(r"-[0-9][0-9.]*$", "", d.name)).is_dir() and "-" in d.name)
 
 
 _INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)

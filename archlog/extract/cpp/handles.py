@@ -14,6 +14,7 @@ from archlog.values import Unknown, Value, concat
 
 NODE_HANDLE = "ros::NodeHandle"
 IMAGE_TRANSPORT = "image_transport::ImageTransport"
+IMAGE_FILTER = "image_transport::SubscriberFilter"  # a message_filters input of images, on an ImageTransport
 HANDLE_TYPES = (NODE_HANDLE, IMAGE_TRANSPORT)
 # (class, method) -> port kind
 NODELET_LAZY = "nodelet_topic_tools::NodeletLazy"
@@ -22,7 +23,7 @@ METHODS = {
     (NODE_HANDLE, "advertiseService"): "service_server", (NODE_HANDLE, "serviceClient"): "service_client",
     (IMAGE_TRANSPORT, "advertise"): "publisher", (IMAGE_TRANSPORT, "subscribe"): "subscriber",
     (IMAGE_TRANSPORT, "advertiseCamera"): "publisher", (IMAGE_TRANSPORT, "subscribeCamera"): "subscriber",
-    ("message_filters::Subscriber", "subscribe"): "subscriber",
+    ("message_filters::Subscriber", "subscribe"): "subscriber", (IMAGE_FILTER, "subscribe"): "subscriber",
     (NODELET_LAZY, "advertise"): "publisher",  # advertise<T>(nh, topic, queue): a lazy nodelet's publisher
 }
 # nodelet::Nodelet accessors for the manager-provided handles
@@ -86,7 +87,7 @@ class Handles:
         """A handle member (or a smart pointer to one) that the code read sets, `field = getPrivate
         NodeHandle()` or `field.reset(new ros::NodeHandle(...))` (also in the inline methods of its
         class, as nodelet_topic_tools::NodeletLazy's pnh_ in a header not otherwise read): the
-        namespace they agree on, else the node's."""
+        namespace they agree on; if none sets it, that of its initializer in the class, else the node's."""
         found: set[Value] = set()
         inline = list(field.semantic_parent.walk_preorder()) if field.semantic_parent is not None else []
         for call in inline + self.ctx.kept:
@@ -97,6 +98,8 @@ class Handles:
                                          if c.kind == K.MEMBER_REF_EXPR):
                 continue
             found.add(self.handle_of(parts[-1], depth + 1))
+        if not found:
+            return self.handle_ns(field)  # its initializer in the class (`ros::NodeHandle pnh_{"~"}`), if any
         return found.pop() if len(found) == 1 and not isinstance(next(iter(found)), Unknown) else ""
 
     def member_inits(self, ctor: ci.Cursor) -> None:

@@ -34,11 +34,16 @@ class Branches:
         return condition, taken
 
 
-def tested_variable(condition: ci.Cursor) -> tuple[ci.Cursor, bool] | None:
-    """The variable a condition tests, as `x` or `!x` (with True when negated), else None."""
+def tested_variable(condition: ci.Cursor, holds: bool = False) -> tuple[ci.Cursor, bool] | None:
+    """The variable a condition tests, as `x` or `!x` (with True when negated), else None; where
+    the condition `holds`, also the first operand of `x && ...`."""
     negated = False
     while True:
         children = [c for c in condition.get_children() if c.kind not in SKIP]
+        if holds and not negated and condition.kind == K.BINARY_OPERATOR and len(children) == 2 and \
+                _operator(condition, children[0]) == "&&":
+            condition = children[0]
+            continue
         if condition.kind == K.UNARY_OPERATOR and [t.spelling for t in condition.get_tokens()][:1] == ["!"] \
                 and len(children) == 1:
             negated, condition = not negated, children[0]
@@ -65,3 +70,10 @@ def initial_value(field: ci.Cursor) -> ci.Cursor | None:
             if member.kind == K.MEMBER_REF and member.referenced == field:
                 return init
     return None
+
+
+def _operator(binary: ci.Cursor, left: ci.Cursor) -> str:
+    """The operator of a binary expression: the token after its left operand."""
+    tokens = [t.spelling for t in binary.get_tokens()]
+    after = len(list(left.get_tokens()))
+    return tokens[after] if after < len(tokens) else ""

@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cpp.behavior import FileBehavior
+from archlog.extract.cpp.callers import Sites
 from archlog.extract.summary import LoadedNodelet, Port
 from archlog.values import Value
 
@@ -28,3 +29,4 @@ class FileResult:
     behavior: FileBehavior = field(default_factory=FileBehavior)
     loads: list[LoadedNodelet] = field(default_factory=list)
     classes: list[str] = field(default_factory=list)  # a nodelet's class and the bases this file knows of
+    calls: Sites = field(default_factory=dict)  # the handle and name arguments of its calls (callers.py)

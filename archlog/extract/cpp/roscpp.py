@@ -17,6 +17,7 @@ import clang.cindex as ci
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cpp.behavior import read_behavior
+from archlog.extract.cpp.callers import FromCaller, function_keys
 from archlog.extract.cpp.clang_ast import (
     SKIP,
     CursorKey,
@@ -34,6 +35,7 @@ from archlog.extract.cpp.clang_ast import (
     written_args,
 )
 from archlog.extract.cpp.handles import (
+    IMAGE_FILTER,
     IMAGE_TRANSPORT,
     METHODS,
     NODE_HANDLE,
@@ -59,6 +61,7 @@ TIMERS = {"createTimer", "createWallTimer", "createSteadyTimer"}
 # constructed objects that are ports: class -> (kind, fixed name or None, index of the name argument)
 CONSTRUCTED: dict[str, list[tuple[str, str | None, int | None]]] = {
     "message_filters::Subscriber": [("subscriber", None, 1)],
+    IMAGE_FILTER: [("subscriber", None, 1)],
     "actionlib::SimpleActionServer": [("action_server", None, 1)],
     "actionlib::ActionServer": [("action_server", None, 1)],
     "actionlib::SimpleActionClient": [("action_client", None, 1)],
@@ -101,6 +104,19 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     walker.result.behavior = read_behavior(walker, walker.kept, walker.port_calls, walker.named_callbacks,
                                            sandbox.read_bytes(source, "source") if incomplete_ast else None)
     return walker.result
+
+
+def _default_handle(owner: str) -> Value:
+    """The namespace of a library object constructed without a handle: a dynamic_reconfigure
+    server's is NodeHandle("~") of the process (in a nodelet, the manager's name, as
+    ros::this_node::getName() is), the others' the node's."""
+    return FullNodeName("~") if owner == "dynamic_reconfigure::Server" else ""
+
+
+def _named_or_flag(type_: ci.Type) -> bool:
+    """A type a name or a flag is passed as (a string, a character pointer, a bool)."""
+    canonical = type_.get_canonical()
+    return canonical.kind == ci.TypeKind.BOOL or "string" in canonical.spelling or "char" in canonical.spelling
 
 
 def _made_class(call: ci.Cursor) -> str:
@@ -181,6 +197,7 @@ class _Walker:
         reads = [c for c in calls if c.spelling in PARAM_READS]  # first: a port's guard may test what they read
         for cursor in reads + [c for c in calls if c.spelling not in PARAM_READS]:
             self.call(cursor)
+        self.record_call_sites(calls)
 
     def workspace_code(self, decl: ci.Cursor) -> bool:
         """A declaration in the file or in a header of the workspace."""
@@ -196,9 +213,24 @@ class _Walker:
         found = {evaluate(args[index]) for site in sites if len(args := written_args(site)) > index}
         if len(found) == 1:
             return next(iter(found))
-        why = f"{param.spelling} comes from a caller in another file: no call site in this file passes this {what}" \
-            if not found else f"call sites pass different values for {what}"
-        return self.unknown(expr, why)
+        if found or function is None or index < 0:
+            return self.unknown(expr, f"call sites pass different values for {what}")
+        unknown = self.unknown(expr, f"{param.spelling} comes from a caller in another file: no call site in this "
+                                     f"file passes this {what}")  # callers.py looks in the executable's other files
+        return FromCaller(unknown.expr, unknown.file, unknown.line, functions=function_keys(function), index=index)
+
+    def record_call_sites(self, calls: list[ci.Cursor]) -> None:
+        """The handle, name and flag arguments of the calls to the workspace's functions, for
+        parameters that files defining them cannot know (callers.py)."""
+        for call in calls:
+            ref = call.referenced
+            if ref is None or ref.kind not in (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR) or \
+                    not self.workspace_code(ref):
+                continue
+            args = tuple(self.handles.handle_of(a) if is_handle_type(a.type) else
+                         self.value(a) if _named_or_flag(a.type) else None for a in written_args(call))
+            if any(a is not None for a in args):
+                self.result.calls.setdefault(ref.canonical.get_usr(), []).append(args)
 
     # -- values ---------------------------------------------------------------------------
     def value(self, expr: ci.Cursor, depth: int = 0) -> Value:
@@ -238,6 +270,8 @@ class _Walker:
             return self.loop_values(self.loops[self.key(decl)], expr, depth)
         if decl.kind in (K.VAR_DECL, K.FIELD_DECL):
             init = [c for c in decl.get_children() if c.kind not in SKIP and not default_constructed(c)]
+            if decl.kind == K.FIELD_DECL and not init and (start := initial_value(decl)) is not None:
+                init = [start]  # set in a constructor's member initializer list
             if init and decl.type.is_const_qualified():
                 return self.value(init[-1], depth + 1)
             assigned = assignments(decl)
@@ -357,9 +391,9 @@ class _Walker:
 
     def method(self, call: ci.Cursor, ref: ci.Cursor, owner: str, name: str, args: list[ci.Cursor]) -> None:
         kind = METHODS[(owner, name)]
-        if owner == "message_filters::Subscriber":
-            type_ = ros_type(call.referenced.semantic_parent.type) or template_arg_type(call) or \
-                self.unknown(call, "message type not resolved")
+        if owner in ("message_filters::Subscriber", IMAGE_FILTER):
+            type_ = "sensor_msgs/Image" if owner == IMAGE_FILTER else ros_type(call.referenced.semantic_parent.type) \
+                or template_arg_type(call) or self.unknown(call, "message type not resolved")
             self.add(kind, call, self.value(args[1]) if len(args) > 1 else self.unknown(call), type_,
                      self.handles.handle_of(args[0]))
             return
@@ -381,9 +415,10 @@ class _Walker:
     def constructed(self, call: ci.Cursor, owner: str, args: list[ci.Cursor]) -> None:
         """Library objects whose construction creates ports (tf, actionlib, message_filters...)."""
         has_handle = bool(args) and is_handle_type(args[0].type)
-        handle = self.handles.handle_of(args[0]) if has_handle else \
-            ("~" if owner == "dynamic_reconfigure::Server" else "")
-        type_ = ros_type(call.type) or self.unknown(call, "type not resolved")
+        handle_arg = next((a for a in args if is_handle_type(a.type)), None)  # Server(mutex, nh) has it second
+        handle = self.handles.handle_of(handle_arg) if handle_arg is not None else _default_handle(owner)
+        type_ = "sensor_msgs/Image" if owner == IMAGE_FILTER else ros_type(call.type) or \
+            self.unknown(call, "type not resolved")
         for kind, fixed, index in CONSTRUCTED[owner]:
             if fixed is not None:
                 self.add(kind, call, fixed, FIXED_TYPES[fixed], handle)
@@ -403,7 +438,7 @@ class _Walker:
                 if fixed is not None and field.location.file is not None:
                     loc = field.location
                     self.result.ports.append(Port(kind, fixed, FIXED_TYPES[fixed], self.shown(field), loc.line,
-                                                  loc.column))
+                                                  loc.column, _default_handle(owner)))
 
     def param(self, call: ci.Cursor, args: list[ci.Cursor], handle: Value, method: str) -> None:
         pname = self.value(args[0])
@@ -477,9 +512,11 @@ class _Walker:
     def param_condition(self, call: ci.Cursor) -> tuple[Value, str | None] | None:
         """The parameter the innermost if/else around a port's call tests, and the value it needs."""
         branch = self.branches.innermost(call)
-        tested = tested_variable(branch[0]) if branch is not None else None
+        tested = tested_variable(branch[0], branch[1]) if branch is not None else None
         ref = self.param_vars.get(self.key(tested[0])) if tested is not None else None
-        if branch is None or tested is None or not isinstance(ref, ParamRef):
+        if tested is not None and ref is None and tested[0].kind == K.PARM_DECL:  # a flag its callers pass
+            ref = self.from_call_sites(tested[0], call, self.value, tested[0].spelling)
+        if branch is None or tested is None or not isinstance(ref, (ParamRef, FromCaller)):
             return None
         return ref, "true" if branch[1] != tested[1] else "false"
 

@@ -64,15 +64,21 @@ class Scope:
         the nodelet gave it)."""
         if self.cls is None:
             return cursors, None
-        self.classes, self.members = _with_bases(self.classes, cursors)
+        self.classes, self.members, inline = _with_bases(self.classes, cursors)
         kept: list[ci.Cursor] = []
         spans: list[tuple[int, int]] = []
+        seen: set[tuple[str, int, int]] = set()
         for cursor in cursors:
             if cursor.kind in (K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_DECL) and cursor.is_definition():
                 owner = cursor.semantic_parent
                 if cursor.kind == K.FUNCTION_DECL or qualified(owner) in self.classes:
                     kept += list(cursor.walk_preorder())
                     spans.append((cursor.extent.start.line, cursor.extent.end.line))
+                    seen.add(_where(cursor))
+        for method in inline:  # the classes' methods defined in their workspace headers, called or not
+            if _where(method) not in seen and self.workspace_header(method):  # (virtual: called from elsewhere)
+                kept += list(method.walk_preorder())
+                seen.add(_where(method))
         return kept + _reached(kept, set(cursors)), spans
 
 
@@ -97,10 +103,16 @@ def _callees(cursors: list[ci.Cursor]) -> list[ci.Cursor]:
             and c.referenced is not None and c.referenced.kind in _CALLABLE]
 
 
-def _with_bases(classes: list[str], cursors: list[ci.Cursor]) -> tuple[list[str], list[ci.Cursor]]:
-    """The classes, the classes their typedefs in the file name, and all their base classes; and
-    the data members of the definitions found."""
+def _where(cursor: ci.Cursor) -> tuple[str, int, int]:
+    loc = cursor.location
+    return (loc.file.name if loc.file is not None else "", loc.line, loc.column)
+
+
+def _with_bases(classes: list[str], cursors: list[ci.Cursor]) -> tuple[list[str], list[ci.Cursor], list[ci.Cursor]]:
+    """The classes, the classes their typedefs in the file name, and all their base classes; the
+    data members of the definitions found, and the methods defined inside them."""
     found, members, defined = list(classes), list[ci.Cursor](), set[str]()
+    inline: list[ci.Cursor] = []
     pending = [c.underlying_typedef_type.get_declaration() for c in cursors
                if c.kind in (K.TYPEDEF_DECL, K.TYPE_ALIAS_DECL) and qualified(c) in classes]
     pending += [c.referenced for c in cursors if c.kind in (K.CLASS_DECL, K.STRUCT_DECL, K.TYPE_REF)
@@ -116,6 +128,8 @@ def _with_bases(classes: list[str], cursors: list[ci.Cursor]) -> tuple[list[str]
             continue
         defined.add(name)
         members += [c for c in definition.get_children() if c.kind == K.FIELD_DECL]
+        inline += [c for c in definition.get_children() if c.kind in (K.CXX_METHOD, K.CONSTRUCTOR)
+                   and c.is_definition()]
         pending += [base.type.get_declaration() for base in definition.get_children()
                     if base.kind == K.CXX_BASE_SPECIFIER]
-    return found, members
+    return found, members, inline

@@ -58,6 +58,7 @@ _FIXED_TYPES = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage",
                 "/diagnostics": "diagnostic_msgs/DiagnosticArray"}
 _RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "get_parameter", "get_parameter_or",
                "create_timer"}
+_DIAGNOSTIC_MESSAGES = ("DiagnosticArray", "DiagnosticStatus", "KeyValue")  # diagnostic_updater re-exports them
 _ROS_WORDS = re.compile(r"rospy\.|rclpy|Publisher|Subscriber|Service|create_")
 
 
@@ -186,6 +187,8 @@ class NodeReader(ValueFolder):
         """`pkg/Type` (ROS 1) or `pkg/msg/Type` (ROS 2) from `pkg.msg.Type`."""
         name = self.qualified(expr) if expr is not None else None
         parts = name.split(".") if name else []
+        if len(parts) == 2 and parts[0] == "diagnostic_updater" and parts[1] in _DIAGNOSTIC_MESSAGES:
+            parts = ["diagnostic_msgs", "msg", parts[1]]  # what `from diagnostic_msgs.msg import *` gives it
         if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
             base = parts[2]
             if parts[1] == "msg" and base.endswith("Action"):
@@ -211,6 +214,9 @@ class NodeReader(ValueFolder):
         elif func in _FIXED:
             for kind, topic in _FIXED[func]:
                 self.add(kind, call, topic, _FIXED_TYPES[topic])
+        elif func == "tf2_ros.Buffer" and ((debug := arg(call, 1, "debug")) is None or
+                                           self.value(debug) not in ("false", "0")):
+            self.add("service_server", call, "~tf2_frames", "tf2_msgs/FrameGraph")  # its debug service
         elif func in _PARAM_READS and call.args:
             default = arg(call, 1, "default") if _PARAM_READS[func] else None
             self.add("param_read", call, self.value(call.args[0]), "",
