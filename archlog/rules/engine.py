@@ -12,8 +12,9 @@ from typing import NamedTuple
 import clingo
 import clingo.ast
 
-from archlog.facts.schema import RELATIONS
+from archlog.facts.schema import BY_NAME, RELATIONS
 from archlog.facts.store import Cell, FactStore
+from archlog.rules import loading
 from archlog.rules.functions import FUNCTIONS, NAMES
 from archlog.rules.ruleset import Program, Rule, RuleError, RuleSet
 
@@ -69,6 +70,7 @@ class Engine:
     def __init__(self, ruleset: RuleSet) -> None:
         self.ruleset = ruleset
         self.declared = check(ruleset)
+        self.reads = loading.reads_of(p.text for p in ruleset.programs)
         self.timings: dict[str, float] = {}  # seconds of the last run's phases
 
     def run(self, store: FactStore) -> tuple[clingo.Control, list[Finding]]:
@@ -76,17 +78,25 @@ class Engine:
         return ctl, self.findings(ctl, store)
 
     def ground(self, store: FactStore) -> clingo.Control:
+        return self.start(store).ctl
+
+    def start(self, store: FactStore) -> loading.Grounded:
+        """The rules grounded with the facts they read (`loading`); other relations load on demand."""
+        if self.reads is None:
+            grounded = loading.Grounded(store)
+            grounded.load(BY_NAME)
+            grounded.ctl.add("base", [], self.declared + "\n".join(p.text for p in self.ruleset.programs))
+            grounded.ground("base")
+        else:
+            listed = {relation for rule in self.ruleset.rules for relation, _column in rule.lists.values()}
+            grounded = loading.ground(store, self.reads, self.declared, listed)
+        ctl = grounded.ctl
         clock = time.perf_counter()
-        ctl = clingo.Control(["--warn=none"])
-        ctl.add("base", [], self.declared + "\n".join(p.text for p in self.ruleset.programs))
-        ctl.add("base", [], store.program())
-        self.timings["to-clingo"] = time.perf_counter() - clock
-        clock = time.perf_counter()
-        ctl.ground([("base", [])], context=FUNCTIONS)
         stratified = ctl.solve().satisfiable and ctl.statistics["problem"]["lp"]["bodies"] == 0
-        self.timings["ground"] = time.perf_counter() - clock
+        self.timings = {"to-clingo": grounded.timings["to-clingo"],
+                        "ground": grounded.timings["ground"] + time.perf_counter() - clock}
         if stratified:
-            return ctl  # every atom is a fact
+            return grounded  # every atom is a fact
         for atom in ctl.symbolic_atoms:
             if not atom.is_fact:
                 name = atom.symbol.name
@@ -94,7 +104,7 @@ class Engine:
                 raise RuleError(program.file if program else "<rules>", program.first_line if program else 0,
                                 f"rules are not stratified: {name} depends on itself through `not` (hint: define "
                                 "the negated relation without the one that negates it)")
-        return ctl
+        return grounded
 
     def findings(self, ctl: clingo.Control, store: FactStore) -> list[Finding]:
         clock = time.perf_counter()
