@@ -107,7 +107,7 @@ class FactStore:
         directory.mkdir(parents=True, exist_ok=True)
         written = []
         for rel in RELATIONS:
-            rows = self._rows.get(rel.name, [])
+            rows = self._rows.get(rel.name, {})
             path = directory / f"{rel.name}.{fmt}"
             header = [c.name for c in rel.columns]
             if fmt == "csv":

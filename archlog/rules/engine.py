@@ -16,18 +16,17 @@ from archlog.facts.schema import BY_NAME, RELATIONS
 from archlog.facts.store import Cell, FactStore
 from archlog.rules import loading
 from archlog.rules.functions import FUNCTIONS, NAMES
+from archlog.rules.loading import Position, Signature, atoms
 from archlog.rules.ruleset import Program, Rule, RuleError, RuleSet
 
 SUBJECT_KINDS = {"node": "nodes", "topic": "topics", "service": "services", "action": "actions",
                  "param": "parameters", "type": "types"}
 _SPAN = re.compile(r"<(?:block|string)>:(\d+):(\d+)(?:-\d+(?::\d+)?)?:\s*")
 
-Signature = tuple[str, int]
 _HINTS = {
     "unsafe": "every variable must occur in a positive body literal (not only under `not` or in a comparison)",
     "syntax error": "check parentheses and commas, and end each rule with a period",
 }
-Position = tuple[int, int]
 _FACT_SIGNATURES = {(r.name, r.arity) for r in RELATIONS}
 
 
@@ -283,10 +282,10 @@ def _parse(program: Program) -> Parsed:
 
     def visit(statement: clingo.ast.AST) -> None:
         if statement.ast_type == clingo.ast.ASTType.Rule:
-            for sig, pos in _atoms(statement.head, parsed.functions):
+            for sig, pos in atoms(statement.head, parsed.functions):
                 parsed.heads.setdefault(sig, pos)
             for literal in statement.body:
-                parsed.body.extend(_atoms(literal, parsed.functions))
+                parsed.body.extend(atoms(literal, parsed.functions))
 
     try:
         clingo.ast.parse_string(program.text, visit, logger=lambda _c, m: messages.append(m))
@@ -299,23 +298,6 @@ def rules_of(program: Program) -> list[clingo.ast.AST]:
     """The rules of a program (already checked), as clingo ASTs."""
     found: list[clingo.ast.AST] = []
     clingo.ast.parse_string(program.text, lambda s: found.append(s) if s.ast_type == clingo.ast.ASTType.Rule else None)
-    return found
-
-
-def _atoms(node: clingo.ast.AST, functions: list[tuple[str, Position]]) -> list[tuple[Signature, Position]]:
-    """The atoms under a node; the @functions it calls are added to `functions`."""
-    found = []
-    if node.ast_type == clingo.ast.ASTType.SymbolicAtom and node.symbol.ast_type == clingo.ast.ASTType.Function:
-        begin = node.symbol.location.begin
-        found.append(((node.symbol.name, len(node.symbol.arguments)), (begin.line, begin.column)))
-    elif node.ast_type == clingo.ast.ASTType.Function and node.external:
-        begin = node.location.begin
-        functions.append((node.name, (begin.line, begin.column)))
-    for key in node.child_keys:
-        child = getattr(node, key)
-        for item in child if isinstance(child, (list, clingo.ast.ASTSequence)) else [child]:
-            if isinstance(item, clingo.ast.AST):
-                found.extend(_atoms(item, functions))
     return found
 
 

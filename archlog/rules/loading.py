@@ -25,6 +25,7 @@ from archlog.facts.store import Cell, FactStore
 from archlog.rules.functions import FUNCTIONS
 
 Signature = tuple[str, int]
+Position = tuple[int, int]
 FACTS = {(r.name, r.arity) for r in BY_NAME.values()}
 _PLAIN = (clingo.ast.ASTType.Rule, clingo.ast.ASTType.Comment)
 Column = tuple[str, object] | None  # ("var", a variable's name), ("=", a constant) or None (anything)
@@ -68,17 +69,26 @@ def reads_of(texts: Iterable[str]) -> list[Reads] | None:
     return found
 
 
-def _signatures(*nodes: clingo.ast.AST) -> list[Signature]:
-    """The relations of every atom under the nodes (not @functions)."""
-    found: list[Signature] = []
-    for node in nodes:
-        if node.ast_type == clingo.ast.ASTType.SymbolicAtom and node.symbol.ast_type == clingo.ast.ASTType.Function:
-            found.append((node.symbol.name, len(node.symbol.arguments)))
-        for key in node.child_keys:
-            child = getattr(node, key)
-            found += _signatures(*[c for c in (child if isinstance(child, (list, clingo.ast.ASTSequence)) else [child])
-                                   if isinstance(c, clingo.ast.AST)])
+def atoms(node: clingo.ast.AST, functions: list[tuple[str, Position]]) -> list[tuple[Signature, Position]]:
+    """The atoms under a node; the @functions it calls are added to `functions`."""
+    found = []
+    if node.ast_type == clingo.ast.ASTType.SymbolicAtom and node.symbol.ast_type == clingo.ast.ASTType.Function:
+        begin = node.symbol.location.begin
+        found.append(((node.symbol.name, len(node.symbol.arguments)), (begin.line, begin.column)))
+    elif node.ast_type == clingo.ast.ASTType.Function and node.external:
+        begin = node.location.begin
+        functions.append((node.name, (begin.line, begin.column)))
+    for key in node.child_keys:
+        child = getattr(node, key)
+        for item in child if isinstance(child, (list, clingo.ast.ASTSequence)) else [child]:
+            if isinstance(item, clingo.ast.AST):
+                found.extend(atoms(item, functions))
     return found
+
+
+def _signatures(node: clingo.ast.AST) -> list[Signature]:
+    """The relations of every atom under a node (not @functions)."""
+    return [sig for sig, _position in atoms(node, [])]
 
 
 def _positive(literal: clingo.ast.AST) -> tuple[Signature, tuple[Column, ...]] | None:
