@@ -82,12 +82,15 @@ def test_a_relation_only_a_query_names_is_queryable() -> None:
 
 
 def test_rules_defined_on_the_fly_and_explanations_load_what_they_read() -> None:
-    store = corpus_store("misplaced_remap")
+    store = corpus_store("include_missing_remap")
     session = Session(store, load_rules([]))
     assert "included_through" not in session.grounded.loaded
-    assert session.define("via(N, F) :- node(N, _, _, E), included_through(E, F, _).") == ["via"]
-    assert len(session.query("via(N, F)").rows) == len({(n, f) for n, _p, _x, e in store.rows("node")
-                                                        for e2, f, _c in store.rows("included_through") if e2 == e})
+    rule = HEADER.replace("USR9", "USR8").replace("early(topic, port)", "nested(node, elem, include)") \
+        .replace("location: port", "location: elem").replace("{topic} is published early", "{node} is included")
+    assert session.define(rule + "nested(N, E, F) :- node(N, _, _, E), included_through(E, F, _).\n") == ["nested"]
+    expected = {(n, f) for n, _p, _x, e in store.rows("node") for e2, f, _d in store.rows("included_through") if e2 == e}
+    assert expected and {(f.values["node"], f.values["include"]) for f in session.findings()
+                         if f.rule.id == "USR8"} == expected
     session = Session(store, load_rules([]))
     first = store.rows("node_namespace")[0]
     atom = clingo.Function("node_namespace", [store.term(cell) for cell in first])

@@ -16,7 +16,7 @@ from archlog.facts.schema import BY_NAME, RELATIONS
 from archlog.facts.store import Cell, FactStore
 from archlog.rules import loading
 from archlog.rules.functions import FUNCTIONS, NAMES
-from archlog.rules.loading import Position, Signature, atoms
+from archlog.rules.loading import Position, Signature, atoms, positive
 from archlog.rules.ruleset import Program, Rule, RuleError, RuleSet
 
 SUBJECT_KINDS = {"node": "nodes", "topic": "topics", "service": "services", "action": "actions",
@@ -216,43 +216,26 @@ def column_types(rules: list[clingo.ast.AST]) -> dict[Signature, list[str | None
     """The column types (`id`, `name`, ...) of every relation, derived ones inferred from the fact
     columns their rules' head variables come from; None where the rules disagree or tell nothing."""
     types: dict[Signature, list[str | None]] = {(r.name, r.arity): [c.type for c in r.columns] for r in RELATIONS}
+    shapes = [(defined, [atom for literal in rule.body if (atom := positive(literal)) is not None])
+              for rule in rules if (defined := positive(rule.head)) is not None and defined[0] not in _FACT_SIGNATURES]
     seen: dict[Signature, list[set[str]]] = {}
     changed = True
     while changed:
         changed = False
-        for rule in rules:
-            if rule.head.ast_type != clingo.ast.ASTType.Literal or \
-                    rule.head.atom.ast_type != clingo.ast.ASTType.SymbolicAtom or \
-                    rule.head.atom.symbol.ast_type != clingo.ast.ASTType.Function:
-                continue
-            head = rule.head.atom.symbol
-            sig = (head.name, len(head.arguments))
-            if sig in _FACT_SIGNATURES:
-                continue
-            bound = _variable_types(rule.body, types)
-            slots = seen.setdefault(sig, [set() for _ in head.arguments])
-            for slot, arg in zip(slots, head.arguments):
-                new = bound.get(arg.name, set()) if arg.ast_type == clingo.ast.ASTType.Variable else set()
+        for (sig, head), body in shapes:
+            bound: dict[object, set[str]] = {}  # the types the body's positive atoms give its variables
+            for relation, columns in body:
+                for column, type_ in zip(columns, types.get(relation, [])):
+                    if column is not None and column[0] == "var" and type_ is not None:
+                        bound.setdefault(column[1], set()).add(type_)
+            slots = seen.setdefault(sig, [set() for _ in head])
+            for slot, column in zip(slots, head):
+                new = bound.get(column[1], set()) if column is not None and column[0] == "var" else set()
                 if not new <= slot:
                     slot |= new
                     changed = True
             types[sig] = [next(iter(slot)) if len(slot) == 1 else None for slot in slots]
     return types
-
-
-def _variable_types(body: list[clingo.ast.AST], types: dict[Signature, list[str | None]]) -> dict[str, set[str]]:
-    """The types a rule body's positive atoms give its variables (a variable in a column of type t)."""
-    found: dict[str, set[str]] = {}
-    for literal in body:
-        if literal.ast_type != clingo.ast.ASTType.Literal or literal.sign != clingo.ast.Sign.NoSign or \
-                literal.atom.ast_type != clingo.ast.ASTType.SymbolicAtom or \
-                literal.atom.symbol.ast_type != clingo.ast.ASTType.Function:
-            continue
-        symbol = literal.atom.symbol
-        for arg, type_ in zip(symbol.arguments, types.get((symbol.name, len(symbol.arguments)), [])):
-            if arg.ast_type == clingo.ast.ASTType.Variable and type_ is not None:
-                found.setdefault(arg.name, set()).add(type_)
-    return found
 
 
 def check_locations(rule: Rule, types: list[str | None]) -> None:
@@ -278,27 +261,21 @@ class Parsed(NamedTuple):
 
 def _parse(program: Program) -> Parsed:
     parsed = Parsed({}, [], [])
-    messages: list[str] = []
-
-    def visit(statement: clingo.ast.AST) -> None:
+    statements, messages = loading.parse(program.text)
+    if messages is not None:
+        raise _error(program, list(messages))
+    for statement in statements:
         if statement.ast_type == clingo.ast.ASTType.Rule:
             for sig, pos in atoms(statement.head, parsed.functions):
                 parsed.heads.setdefault(sig, pos)
             for literal in statement.body:
                 parsed.body.extend(atoms(literal, parsed.functions))
-
-    try:
-        clingo.ast.parse_string(program.text, visit, logger=lambda _c, m: messages.append(m))
-    except RuntimeError:
-        raise _error(program, messages) from None
     return parsed
 
 
 def rules_of(program: Program) -> list[clingo.ast.AST]:
     """The rules of a program (already checked), as clingo ASTs."""
-    found: list[clingo.ast.AST] = []
-    clingo.ast.parse_string(program.text, lambda s: found.append(s) if s.ast_type == clingo.ast.ASTType.Rule else None)
-    return found
+    return [s for s in loading.parse(program.text)[0] if s.ast_type == clingo.ast.ASTType.Rule]
 
 
 def _safety(program: Program, declared: str) -> None:

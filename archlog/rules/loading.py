@@ -13,6 +13,7 @@ clingo, so a row is given to it only when a rule can read it, or when asked for:
 
 from __future__ import annotations
 
+import functools
 import time
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -48,12 +49,22 @@ class Reads:
         return {sig for sig, _pattern in self.atoms}
 
 
+@functools.lru_cache(maxsize=1024)
+def parse(text: str) -> tuple[tuple[clingo.ast.AST, ...], tuple[str, ...] | None]:
+    """A rule program's statements, parsed once; or clingo's messages about why it cannot be."""
+    found: list[clingo.ast.AST] = []
+    messages: list[str] = []
+    try:
+        clingo.ast.parse_string(text, found.append, logger=lambda _code, message: messages.append(message))
+    except RuntimeError:
+        return (), tuple(messages)
+    return tuple(found), None
+
+
 def reads_of(texts: Iterable[str]) -> list[Reads] | None:
-    """The rules of rule program texts, in order; None when a text holds other statements than
-    rules (`#const`, `#show`, a `#program` part), which are then grounded as written, at once."""
-    statements: list[clingo.ast.AST] = []
-    for text in texts:
-        clingo.ast.parse_string(text, statements.append)
+    """The rules of (valid) rule program texts, in order; None when a text holds other statements
+    than rules (`#const`, `#show`, a `#program` part), which are then grounded as written, at once."""
+    statements = [statement for text in texts for statement in parse(text)[0]]
     if any(s.ast_type not in _PLAIN and s.ast_type != clingo.ast.ASTType.Program for s in statements) or \
             sum(s.ast_type == clingo.ast.ASTType.Program and s.name != "base" for s in statements):
         return None
@@ -61,8 +72,8 @@ def reads_of(texts: Iterable[str]) -> list[Reads] | None:
     for statement in statements:
         if statement.ast_type != clingo.ast.ASTType.Rule:
             continue
-        atoms = [atom for literal in statement.body if (atom := _positive(literal)) is not None]
-        loose = [sig for literal in statement.body if _positive(literal) is None for sig in _signatures(literal)]
+        atoms = [atom for literal in statement.body if (atom := positive(literal)) is not None]
+        loose = [sig for literal in statement.body if positive(literal) is None for sig in _signatures(literal)]
         heads = _signatures(statement.head)
         found.append(Reads(statement, frozenset(heads), frozenset(heads + loose + [sig for sig, _p in atoms]),
                            tuple(atoms), frozenset(loose)))
@@ -91,7 +102,7 @@ def _signatures(node: clingo.ast.AST) -> list[Signature]:
     return [sig for sig, _position in atoms(node, [])]
 
 
-def _positive(literal: clingo.ast.AST) -> tuple[Signature, tuple[Column, ...]] | None:
+def positive(literal: clingo.ast.AST) -> tuple[Signature, tuple[Column, ...]] | None:
     """A positive body atom: its relation and, per column, ("var", name), ("=", a constant) or None."""
     if literal.ast_type != clingo.ast.ASTType.Literal or literal.sign != clingo.ast.Sign.NoSign or \
             literal.atom.ast_type != clingo.ast.ASTType.SymbolicAtom:
