@@ -95,12 +95,15 @@ class FactStore:
         return "".join([head + ",".join(map(self._text, row)) + ").\n" for row in rows])
 
     def _text(self, cell: Cell) -> str:
+        if type(cell) is str:  # most cells: a plain string needs no escapes
+            if '"' in cell or "\\" in cell or "\n" in cell or "\0" in cell:
+                cell = cell.split("\0", 1)[0].replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+            return '"' + cell + '"'
         if isinstance(cell, Unknown):
             return f"unknown({self._unknowns[cell]})"
         if isinstance(cell, int):
             return str(int(cell))
-        text = cell.split("\0", 1)[0].replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
-        return f'"{text}"'
+        return self._text(str(cell))  # a str subclass
 
     def export(self, directory: Path, fmt: str) -> list[Path]:
         """Write one file per relation (every relation of the schema, even when empty)."""

@@ -14,8 +14,9 @@ clingo, so a row is given to it only when a rule can read it, or when asked for:
 from __future__ import annotations
 
 import functools
+import operator
 import time
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 import clingo
@@ -30,7 +31,6 @@ Position = tuple[int, int]
 FACTS = {(r.name, r.arity) for r in BY_NAME.values()}
 _PLAIN = (clingo.ast.ASTType.Rule, clingo.ast.ASTType.Comment)
 Column = tuple[str, object] | None  # ("var", a variable's name), ("=", a constant) or None (anything)
-Keys = dict[tuple[str, tuple[int, ...]], set[tuple[object, ...]]]  # (relation, columns) -> values in them
 
 
 @dataclass(frozen=True)
@@ -123,11 +123,6 @@ def _column(term: clingo.ast.AST) -> Column:
     return None
 
 
-def _key(cell: Cell) -> object:
-    """A cell as clingo compares it (a string is cut at a NUL character, as clingo.String cuts it)."""
-    return cell.split("\0", 1)[0] if isinstance(cell, str) and "\0" in cell else cell
-
-
 class Grounded:
     """A clingo control with the rules grounded, and the fact rows given to it so far."""
 
@@ -150,14 +145,19 @@ class Grounded:
         for name, wanted in sorted(rows.items()):
             if name in self.loaded:
                 continue
-            given = self._given.setdefault(name, set())
             every = self.store.rows(name)
+            given = self._given.pop(name, set())
+            if wanted is None and not given:
+                text.append(self.store.text(name, every))
+                self.loaded.add(name)
+                continue
             new = [i for i in (range(len(every)) if wanted is None else sorted(wanted)) if i not in given]
             text.append(self.store.text(name, [every[i] for i in new]))
             given.update(new)
             if len(given) == len(every):
                 self.loaded.add(name)
-                del self._given[name]
+            else:
+                self._given[name] = given
         if any(text):
             part = self._part()
             self.ctl.add(part, [], "".join(text))
@@ -204,52 +204,74 @@ def ground(store: FactStore, rules: list[Reads], preamble: str, listed: set[str]
     grounded.load(listed)
     grounded.add_rules([], preamble)
     levels = _levels(rules)
-    keys: Keys = {}
+    values = Values(store)
     for level in sorted(set(levels.values())):
         stratum = [rule for rule in rules if levels[id(rule)] == level]
+        clock = time.perf_counter()  # choosing rows is part of handing facts to clingo
         wanted: dict[str, set[int] | None] = {}
         for rule in stratum:
             if any(grounded.empty(sig) for sig in rule.guards if sig in FACTS or levels.get(sig, level) < level):
                 continue  # a relation it joins is empty: it derives nothing
             for name, _arity in rule.reads & FACTS:
-                if name in wanted and wanted[name] is None:
+                if name in grounded.loaded or (name in wanted and wanted[name] is None):
                     continue
-                rows = _joining(store, rule, name, keys)
+                rows = _joining(values, rule, name)
                 wanted[name] = None if rows is None else rows | (wanted.get(name) or set())
+        grounded.timings["to-clingo"] += time.perf_counter() - clock
         grounded.give(wanted)
         grounded.add_rules([rule.rule for rule in stratum])
     return grounded
 
 
-def _joining(store: FactStore, rule: Reads, relation: str, keys: Keys) -> set[int] | None:
+class Values:
+    """The values in columns of fact relations, each set computed once."""
+
+    def __init__(self, store: FactStore) -> None:
+        self.store = store
+        self._sets: dict[tuple[str, tuple[int, ...]], set[object]] = {}
+        self._nul: dict[str, bool] = {}
+
+    def of(self, relation: str, columns: tuple[int, ...]) -> set[object]:
+        """The values (a tuple per row, or the value for one column) of these columns."""
+        if (relation, columns) not in self._sets:
+            self._sets[(relation, columns)] = set(map(operator.itemgetter(*columns), self.store.rows(relation)))
+        return self._sets[(relation, columns)]
+
+    def has_nul(self, relation: str) -> bool:
+        """Whether a string of the relation holds a NUL character: clingo cuts it there, so values
+        that differ here may be equal there."""
+        if relation not in self._nul:
+            self._nul[relation] = "\0" in "\1".join(c for row in self.store.rows(relation) for c in row if type(c) is str)
+        return self._nul[relation]
+
+
+def _joining(values: Values, rule: Reads, relation: str) -> set[int] | None:
     """The rows of a fact relation that the rule's body can use (None: all): read only in positive
     atoms, a row must match an atom's constants and, for every other fact relation of the body,
-    share the values of their common variables with one of its rows."""
+    share the values of their common variables with one of its rows (relations with a NUL in a
+    string are not filtered, nor used as filters)."""
     if any(name == relation for name, _arity in rule.loose):
         return None
-    every = store.rows(relation)
     found: set[int] = set()
     for index, ((name, _arity), pattern) in enumerate(rule.atoms):
         if name != relation:
             continue
-        tests: list[tuple[list[int], set[tuple[object, ...]]]] = [
-            ([column], {(value,)}) for column, spec in enumerate(pattern) if spec and spec[0] == "="
-            for value in [spec[1]]]
+        tests: list[tuple[Callable[[tuple[Cell, ...]], object], set[object]]] = [
+            (operator.itemgetter(column), {spec[1]}) for column, spec in enumerate(pattern) if spec and spec[0] == "="]
         variables = {spec[1]: column for column, spec in enumerate(pattern) if spec and spec[0] == "var"}
-        for other, (guard, guard_pattern) in enumerate(rule.atoms):
-            if other == index or guard not in FACTS:
-                continue
+        for other, ((guard, _arity), guard_pattern) in enumerate(rule.atoms):
             shared = [(variables[spec[1]], column) for column, spec in enumerate(guard_pattern)
                       if spec and spec[0] == "var" and spec[1] in variables]
-            if shared:
-                columns = tuple(column for _mine, column in shared)
-                if (guard[0], columns) not in keys:
-                    keys[(guard[0], columns)] = {tuple(_key(row[c]) for c in columns) for row in store.rows(guard[0])}
-                tests.append(([mine for mine, _theirs in shared], keys[(guard[0], columns)]))
-        if not tests:
+            if other != index and (guard, len(guard_pattern)) in FACTS and shared and not values.has_nul(guard):
+                allowed = values.of(guard, tuple(column for _mine, column in shared))
+                tests.append((operator.itemgetter(*(mine for mine, _theirs in shared)), allowed))
+        if not tests or values.has_nul(relation):
             return None
-        found.update(i for i, row in enumerate(every)
-                     if all(tuple(_key(row[c]) for c in columns) in allowed for columns, allowed in tests))
+        every = values.store.rows(relation)
+        rows: Iterable[int] = range(len(every))
+        for key, allowed in tests:
+            rows = [i for i in rows if key(every[i]) in allowed]
+        found.update(rows)
     return found
 
 
