@@ -30,7 +30,7 @@ GOALS = [
     "publisher(P, N, T, Ty)",
     "subscriber(_, N, T, _), not published(T)",
     "publisher(_, N, T, _), publisher(_, M, T, _), N != M",
-    "near_miss(T, P, N, R, T2, Q, M, R2, D)",
+    "near_miss(T, P, N, R, T2, Q, M, R2, D, O)",
     "queue_size(P, S), port_node(P, N)",
 ]
 
