@@ -125,3 +125,17 @@ def test_rows_no_join_can_use_are_given_when_a_query_asks() -> None:
     assert session.query("unused_remap(F, E, T, W)").rows == []  # the remap is used: p2's name is remapped
     assert sorted(session.query("port_source_name(P, F)").rows) == [("p1", "/out"), ("p2", "/in")]
     assert session.grounded.given("port_source_name") == 2
+
+
+def test_rule_files_with_other_statements_are_grounded_with_every_fact(tmp_path: Path) -> None:
+    """A `#const` (or `#show`) is grounded as written, in one program with every fact."""
+    path = tmp_path / "early.lp"
+    path.write_text(HEADER + "#const limit = 10.\nearly(T, P) :- publisher(P, _, T, _), location(P, _, L, _), L < limit.\n")
+    store = FactStore()
+    store.add("publisher", "p1", "/a", "/topic4", "std_msgs/String")
+    store.locate("p1", "a.py", 4, 1)
+    store.add("name_namespace", "/topic4", "/")
+    engine = Engine(load_rules([path], builtin=False))
+    grounded = engine.start(store)
+    assert {"location", "name_namespace"} <= grounded.loaded
+    assert shown(engine.findings(grounded.ctl, store)) == [("USR9", "a.py", 4, "/topic4 is published early")]
