@@ -72,9 +72,8 @@ def test_a_relation_only_a_query_names_is_queryable() -> None:
     store = corpus_store("misplaced_remap")
     session = Session(store, load_rules([]))
     assert "name_namespace" not in session.grounded.loaded and store.count("name_namespace")
-    rows = session.query("name_namespace(T, NS)").sorted_rows()  # the whole relation, read as it is
-    assert len(rows) == store.count("name_namespace")
-    assert sorted(map(tuple, rows)) == sorted(map(tuple, store.rows("name_namespace")))
+    rows = session.query("name_namespace(T, NS)").rows  # the whole relation, read from the store
+    assert rows == store.rows("name_namespace") and "name_namespace" not in session.grounded.loaded
     joined = session.query('name_namespace(T, NS), subscriber(_, _, T, _), NS != "/"').rows
     assert joined and all(row[1] != "/" for row in joined)
     counts = {name: count for name, _arity, count, kind in session.relations() if kind == "fact"}
@@ -112,7 +111,8 @@ def test_a_user_rule_reading_location_works(tmp_path: Path) -> None:
 
 def test_rows_no_join_can_use_are_given_when_a_query_asks() -> None:
     """`remap_used` joins `port_source_name` with `remap` on the remapped name: only the ports whose
-    source name a remap names reach clingo, until a query reads the relation."""
+    source name a remap names reach clingo, until a query joins the relation (a query of the whole
+    relation reads the store's rows)."""
     store = FactStore()
     store.add("node", "/a", "pkg", "a", "e1")
     store.add("publisher", "p1", "/a", "/out", "std_msgs/String")
@@ -123,7 +123,9 @@ def test_rows_no_join_can_use_are_given_when_a_query_asks() -> None:
     session = Session(store, load_rules([]))
     assert session.grounded.given("port_source_name") == 1
     assert session.query("unused_remap(F, E, T, W)").rows == []  # the remap is used: p2's name is remapped
-    assert sorted(session.query("port_source_name(P, F)").rows) == [("p1", "/out"), ("p2", "/in")]
+    assert sorted(session.query("port_source_name(P, F)").rows) == [("p1", "/out"), ("p2", "/in")]  # the store's
+    assert session.grounded.given("port_source_name") == 1
+    assert session.query("port_source_name(P, F), publisher(P, _, _, _)").rows == [("p1", "/out")]
     assert session.grounded.given("port_source_name") == 2
 
 
@@ -139,3 +141,14 @@ def test_rule_files_with_other_statements_are_grounded_with_every_fact(tmp_path:
     grounded = engine.start(store)
     assert {"location", "name_namespace"} <= grounded.loaded
     assert shown(engine.findings(grounded.ctl, store)) == [("USR9", "a.py", 4, "/topic4 is published early")]
+
+
+def test_a_whole_fact_relation_reads_as_clingo_holds_it() -> None:
+    """clingo cuts a string at a NUL character: the store's rows are read back the same way."""
+    store = FactStore()
+    for name in ("/a\0b", "/a", "/c\0d", "/c\0e"):
+        store.add("name_namespace", name, "/")
+    session = Session(store, load_rules([]))
+    whole = session.query("name_namespace(T, NS)").rows
+    assert whole == [("/a", "/"), ("/c", "/")]
+    assert sorted(session.query('name_namespace(T, NS), NS = "/"').rows) == whole  # given to clingo

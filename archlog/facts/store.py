@@ -5,7 +5,7 @@ from __future__ import annotations
 import csv
 import json
 from collections import defaultdict
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 import clingo
@@ -49,6 +49,19 @@ class FactStore:
 
     def rows(self, relation: str) -> list[tuple[Cell, ...]]:
         return list(self._rows.get(relation, ()))
+
+    def read_back(self, relation: str) -> Iterator[tuple[Cell, ...]]:
+        """The rows of a relation as clingo holds them, in order: a string is cut at a NUL
+        character, so rows that differ only after one are one row."""
+        rows = self._rows.get(relation, {})
+        cut: set[tuple[Cell, ...]] = set()
+        for row in list(rows):
+            if any(type(cell) is str and "\0" in cell for cell in row):
+                row = tuple(cell.split("\0", 1)[0] if type(cell) is str else cell for cell in row)
+                if row in rows or row in cut:
+                    continue
+                cut.add(row)
+            yield row
 
     def count(self, relation: str) -> int:
         return len(self._rows.get(relation, ()))

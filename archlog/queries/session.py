@@ -28,6 +28,7 @@ from archlog.rules.engine import (
     unknown_relation,
 )
 from archlog.rules.functions import FUNCTIONS, NAMES
+from archlog.rules.loading import FACTS
 from archlog.rules.ruleset import BUILTIN, Program, RuleError, RuleSet, parse_rule_file
 from archlog.values import order
 
@@ -147,9 +148,10 @@ class Session:
         body = goal.strip().rstrip(".").strip()
         variables = _variables(body)
         whole = _whole_relation(body)
-        if whole is not None and whole in self._known():  # one relation, all columns: read it as it is
+        if whole is not None and whole in FACTS:  # a fact relation, all columns: the store's rows
+            return Result(variables, self.store.read_back(whole[0]), time.perf_counter() - start)
+        if whole is not None and whole in self._known():  # a derived relation, all columns: read it as it is
             self._finish_open()
-            self._load([whole[0]])
             atoms = self.ctl.symbolic_atoms.by_signature(*whole)
         else:
             self.parts += 1
