@@ -52,12 +52,13 @@ def corpus() -> None:
 
 
 def fleet(nodes: int) -> FactStore:
-    """A fleet of robots with ten nodes each: three publishers, one subscriber, one parameter read
-    (default unknown) per node, every port located."""
+    """A fleet of robots with ten nodes each, their sources read (not opaque): three publishers, one
+    subscriber, one parameter read (default unknown) per node, every port located."""
     store = FactStore()
     for i in range(nodes):
         robot, node = f"/robot{i // 10}", f"/robot{i // 10}/node{i % 10}"
         store.add("node", node, "pkg", f"exe{i % 10}", f"e{i}")
+        store.add("node_source", node, "python")
         store.locate(f"e{i}", "fleet.launch", i + 1)
         ports = [("publisher", f"{robot}/topic{(i + k) % 10}", "std_msgs/String") for k in range(3)]
         for kind, name, type_ in [*ports, ("subscriber", f"{robot}/topic{i % 10}", "std_msgs/String")]:
