@@ -25,7 +25,7 @@ DEBIAN_PYTHON = {
     "tests/support/roslaunch_oracle.py",
     "tests/support/topic_monitor.py",
 }
-LOCAL = {"archlog", "support", "conftest", "python_bench"}  # this repository's own modules
+LOCAL = {"archlog", "support", "conftest", "python_bench", "scale_bench"}  # this repository's own modules
 
 
 def _normal(dist: str) -> str:

@@ -158,3 +158,24 @@ def test_dialect_is_decided_by_content_not_file_name(tmp_path: Path, body: str, 
     config = LaunchInterpreter(Workspace([tmp_path], sink), sink).load([tmp_path / "main.launch.xml"], {})
     assert [n.name for n in config.nodes] == nodes
     assert [(d.line, d.code) for d in sink.items] == diagnostics
+
+
+def test_a_file_included_many_times_is_parsed_once_and_each_include_spends_the_budget(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from archlog import budget
+    from archlog.extract.launch import ros1_scope
+
+    parsed: list[Path] = []
+    real = ros1_scope.open_xml
+    monkeypatch.setattr(ros1_scope, "open_xml", lambda path, *rest: parsed.append(path) or real(path, *rest))
+    unit = '<launch><arg name="ns"/><group ns="$(arg ns)"><node pkg="p" type="t" name="a"/>' \
+           '<node pkg="p" type="t" name="b"/></group></launch>'
+    main = "<launch>" + "".join(f'<include file="$(dirname)/unit.launch"><arg name="ns" value="r{i}"/></include>'
+                                for i in range(5)) + "</launch>"
+    config, sink = load(tmp_path, {"main.launch": main, "unit.launch": unit})
+    assert sorted(n.name for n in config.nodes) == sorted(f"/r{i}/{n}" for i in range(5) for n in "ab")
+    assert parsed.count(tmp_path / "unit.launch") == 1 and not sink.items
+    with budget.active({"elements": 12}):  # each include spends 5: itself, the file's arg, group and nodes
+        config, sink = load(tmp_path, {"main.launch": main, "unit.launch": unit})
+    assert [n.name for n in config.nodes] == ["/r0/a", "/r0/b", "/r1/a", "/r1/b"]
+    assert [d.code for d in sink.items] == ["budget-exceeded"]

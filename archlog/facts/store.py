@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import json
 from collections import defaultdict
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 import clingo
@@ -19,8 +20,7 @@ class FactStore:
     """Rows of every relation in `archlog.facts.schema`, checked against their arity."""
 
     def __init__(self) -> None:
-        self._rows: dict[str, list[tuple[Cell, ...]]] = defaultdict(list)
-        self._seen: set[tuple[str, tuple[Cell, ...]]] = set()
+        self._rows: dict[str, dict[tuple[Cell, ...], None]] = defaultdict(dict)  # rows in order, once each
         self._unknowns: dict[Unknown, int] = {}
         self._by_number: dict[int, Unknown] = {}
         self._locations: dict[str, tuple[str, int, int]] = {}
@@ -35,11 +35,10 @@ class FactStore:
         rel = BY_NAME[relation]
         if len(row) != rel.arity:
             raise ValueError(f"{relation} takes {rel.arity} columns, got {len(row)}")
-        key = (relation, row)
-        if key in self._seen:
+        rows = self._rows[relation]
+        if row in rows:
             return
-        self._seen.add(key)
-        self._rows[relation].append(row)
+        rows[row] = None
         if relation == "location":
             self._locations.setdefault(str(row[0]), (str(row[1]), int(str(row[2])), int(str(row[3]))))
         for cell in row:
@@ -50,6 +49,22 @@ class FactStore:
 
     def rows(self, relation: str) -> list[tuple[Cell, ...]]:
         return list(self._rows.get(relation, ()))
+
+    def read_back(self, relation: str) -> Iterator[tuple[Cell, ...]]:
+        """The rows of a relation as clingo holds them, in order: a string is cut at a NUL
+        character, so rows that differ only after one are one row."""
+        rows = self._rows.get(relation, {})
+        cut: set[tuple[Cell, ...]] = set()
+        for row in list(rows):
+            if any(type(cell) is str and "\0" in cell for cell in row):
+                row = tuple(cell.split("\0", 1)[0] if type(cell) is str else cell for cell in row)
+                if row in rows or row in cut:
+                    continue
+                cut.add(row)
+            yield row
+
+    def count(self, relation: str) -> int:
+        return len(self._rows.get(relation, ()))
 
     def locate(self, ident: str, file: str, line: int, column: int = 0) -> None:
         if ident not in self._locations:
@@ -81,26 +96,34 @@ class FactStore:
         """A CSV- and JSON-friendly form: an unknown is written `?(expr)` (`unknown_value` has its place)."""
         return str(cell) if isinstance(cell, Unknown) else cell
 
-    def program(self) -> str:
-        """Every row as a clingo fact, one program text: clingo parses it, with no Python call
-        per fact (a string is cut at a NUL character, as clingo.String cuts it)."""
-        return "".join(f"{name}({','.join(map(self._text, row))}).\n" for name, rows in self._rows.items()
-                       for row in rows)
+    def program(self, relations: Iterable[str] | None = None) -> str:
+        """The rows of these relations (default: all) as clingo facts, one program text."""
+        return "".join(self.text(name, self._rows.get(name, ())) for name in (self._rows if relations is None else
+                                                                             relations))
+
+    def text(self, relation: str, rows: Iterable[tuple[Cell, ...]]) -> str:
+        """Rows of a relation as clingo facts: clingo parses them, with no Python call per fact (a
+        string is cut at a NUL character, as clingo.String cuts it)."""
+        head = relation + "("
+        return "".join([head + ",".join(map(self._text, row)) + ").\n" for row in rows])
 
     def _text(self, cell: Cell) -> str:
+        if type(cell) is str:  # most cells: a plain string needs no escapes
+            if '"' in cell or "\\" in cell or "\n" in cell or "\0" in cell:
+                cell = cell.split("\0", 1)[0].replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+            return '"' + cell + '"'
         if isinstance(cell, Unknown):
             return f"unknown({self._unknowns[cell]})"
         if isinstance(cell, int):
             return str(int(cell))
-        text = cell.split("\0", 1)[0].replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
-        return f'"{text}"'
+        return self._text(str(cell))  # a str subclass
 
     def export(self, directory: Path, fmt: str) -> list[Path]:
         """Write one file per relation (every relation of the schema, even when empty)."""
         directory.mkdir(parents=True, exist_ok=True)
         written = []
         for rel in RELATIONS:
-            rows = self._rows.get(rel.name, [])
+            rows = self._rows.get(rel.name, {})
             path = directory / f"{rel.name}.{fmt}"
             header = [c.name for c in rel.columns]
             if fmt == "csv":

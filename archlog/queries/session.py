@@ -28,6 +28,7 @@ from archlog.rules.engine import (
     unknown_relation,
 )
 from archlog.rules.functions import FUNCTIONS, NAMES
+from archlog.rules.loading import FACTS
 from archlog.rules.ruleset import BUILTIN, Program, RuleError, RuleSet, parse_rule_file
 from archlog.values import order
 
@@ -104,7 +105,8 @@ class Session:
         self.store, self.ruleset, self.config = store, ruleset, config or Config()
         self.engine = Engine(ruleset)
         start = time.perf_counter()
-        self.ctl = self.engine.ground(store)
+        self.grounded = self.engine.start(store)
+        self.ctl = self.grounded.ctl
         self.ground_seconds = time.perf_counter() - start
         self.disabled: set[str] = set()
         self.parts = 0
@@ -130,14 +132,14 @@ class Session:
 
     # -- relations ------------------------------------------------------------------------
     def relations(self) -> list[tuple[str, int, int, str]]:
-        """(name, arity, number of tuples, 'fact' or 'derived') of everything grounded."""
-        counts: dict[Signature, int] = {}
-        for atom in self.ctl.symbolic_atoms:
-            sig = (atom.symbol.name, len(atom.symbol.arguments))
-            counts[sig] = counts.get(sig, 0) + 1
-        signatures = {(r.name, r.arity) for r in BY_NAME.values()} | set(counts)
-        return sorted((n, a, counts.get((n, a), 0), "fact" if n in BY_NAME else "derived")
-                      for n, a in signatures if not n.startswith("__"))
+        """(name, arity, number of tuples, 'fact' or 'derived') of every fact relation (loaded into
+        clingo or not) and of everything derived."""
+        counts = {(r.name, r.arity): self.store.count(r.name) for r in BY_NAME.values()}
+        for name, arity, _positive in self.ctl.symbolic_atoms.signatures:
+            if (name, arity) not in counts:
+                counts[(name, arity)] = sum(1 for _ in self.ctl.symbolic_atoms.by_signature(name, arity))
+        return sorted((n, a, count, "fact" if n in BY_NAME else "derived")
+                      for (n, a), count in counts.items() if not n.startswith("__"))
 
     # -- queries and rules ----------------------------------------------------------------
     def query(self, goal: str) -> Result:
@@ -146,7 +148,9 @@ class Session:
         body = goal.strip().rstrip(".").strip()
         variables = _variables(body)
         whole = _whole_relation(body)
-        if whole is not None and whole in self._known():  # one relation, all columns: read it as it is
+        if whole is not None and whole in FACTS:  # a fact relation, all columns: the store's rows
+            return Result(variables, self.store.read_back(whole[0]), time.perf_counter() - start)
+        if whole is not None and whole in self._known():  # a derived relation, all columns: read it as it is
             self._finish_open()
             atoms = self.ctl.symbolic_atoms.by_signature(*whole)
         else:
@@ -188,6 +192,7 @@ class Session:
             _safety(program, "".join(f"#defined {n}/{a}. " for n, a in sorted(known)) + "\n")
         except RuleError as exc:
             raise QueryError(f"{exc.message} (line {exc.line}, column {exc.column})") from None
+        self._load(name for (name, _arity), _pos in parsed.body)
         self._finish_open()
         self.parts += 1
         part = f"p{self.parts}"
@@ -195,6 +200,13 @@ class Session:
         self.ctl.ground([(part, [])], context=FUNCTIONS)
         self.extra.append(program)
         self._known_cache = self._known() | set(parsed.heads)
+
+    def _load(self, relations: Iterable[str]) -> None:
+        """Give clingo the fact relations it lacks of these (grounding them ends the open result)."""
+        missing = [name for name in relations if name in BY_NAME and name not in self.grounded.loaded]
+        if missing:
+            self._finish_open()
+            self.grounded.load(missing)
 
     def _known(self) -> set[Signature]:
         if self._known_cache is None:
@@ -205,6 +217,7 @@ class Session:
     # -- explanations ---------------------------------------------------------------------
     def explain(self, atom: clingo.Symbol, depth: int = 4) -> Explanation:
         """The rule that derives `atom` and, recursively, what its body used (facts at the leaves)."""
+        self._load([atom.name])
         if self.ctl.symbolic_atoms[atom] is None:
             return Explanation(self.show(atom), "false")
         if atom.name in BY_NAME:

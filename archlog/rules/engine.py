@@ -12,21 +12,21 @@ from typing import NamedTuple
 import clingo
 import clingo.ast
 
-from archlog.facts.schema import RELATIONS
+from archlog.facts.schema import BY_NAME, RELATIONS
 from archlog.facts.store import Cell, FactStore
+from archlog.rules import loading
 from archlog.rules.functions import FUNCTIONS, NAMES
+from archlog.rules.loading import Position, Signature, atoms, positive
 from archlog.rules.ruleset import Program, Rule, RuleError, RuleSet
 
 SUBJECT_KINDS = {"node": "nodes", "topic": "topics", "service": "services", "action": "actions",
                  "param": "parameters", "type": "types"}
 _SPAN = re.compile(r"<(?:block|string)>:(\d+):(\d+)(?:-\d+(?::\d+)?)?:\s*")
 
-Signature = tuple[str, int]
 _HINTS = {
     "unsafe": "every variable must occur in a positive body literal (not only under `not` or in a comparison)",
     "syntax error": "check parentheses and commas, and end each rule with a period",
 }
-Position = tuple[int, int]
 _FACT_SIGNATURES = {(r.name, r.arity) for r in RELATIONS}
 
 
@@ -69,6 +69,7 @@ class Engine:
     def __init__(self, ruleset: RuleSet) -> None:
         self.ruleset = ruleset
         self.declared = check(ruleset)
+        self.reads = loading.reads_of(p.text for p in ruleset.programs)
         self.timings: dict[str, float] = {}  # seconds of the last run's phases
 
     def run(self, store: FactStore) -> tuple[clingo.Control, list[Finding]]:
@@ -76,17 +77,25 @@ class Engine:
         return ctl, self.findings(ctl, store)
 
     def ground(self, store: FactStore) -> clingo.Control:
+        return self.start(store).ctl
+
+    def start(self, store: FactStore) -> loading.Grounded:
+        """The rules grounded with the facts they read (`loading`); other relations load on demand."""
+        if self.reads is None:
+            grounded = loading.Grounded(store)
+            grounded.load(BY_NAME)
+            grounded.ctl.add("base", [], self.declared + "\n".join(p.text for p in self.ruleset.programs))
+            grounded.ground("base")
+        else:
+            listed = {relation for rule in self.ruleset.rules for relation, _column in rule.lists.values()}
+            grounded = loading.ground(store, self.reads, self.declared, listed)
+        ctl = grounded.ctl
         clock = time.perf_counter()
-        ctl = clingo.Control(["--warn=none"])
-        ctl.add("base", [], self.declared + "\n".join(p.text for p in self.ruleset.programs))
-        ctl.add("base", [], store.program())
-        self.timings["to-clingo"] = time.perf_counter() - clock
-        clock = time.perf_counter()
-        ctl.ground([("base", [])], context=FUNCTIONS)
         stratified = ctl.solve().satisfiable and ctl.statistics["problem"]["lp"]["bodies"] == 0
-        self.timings["ground"] = time.perf_counter() - clock
+        self.timings = {"to-clingo": grounded.timings["to-clingo"],
+                        "ground": grounded.timings["ground"] + time.perf_counter() - clock}
         if stratified:
-            return ctl  # every atom is a fact
+            return grounded  # every atom is a fact
         for atom in ctl.symbolic_atoms:
             if not atom.is_fact:
                 name = atom.symbol.name
@@ -94,7 +103,7 @@ class Engine:
                 raise RuleError(program.file if program else "<rules>", program.first_line if program else 0,
                                 f"rules are not stratified: {name} depends on itself through `not` (hint: define "
                                 "the negated relation without the one that negates it)")
-        return ctl
+        return grounded
 
     def findings(self, ctl: clingo.Control, store: FactStore) -> list[Finding]:
         clock = time.perf_counter()
@@ -207,43 +216,26 @@ def column_types(rules: list[clingo.ast.AST]) -> dict[Signature, list[str | None
     """The column types (`id`, `name`, ...) of every relation, derived ones inferred from the fact
     columns their rules' head variables come from; None where the rules disagree or tell nothing."""
     types: dict[Signature, list[str | None]] = {(r.name, r.arity): [c.type for c in r.columns] for r in RELATIONS}
+    shapes = [(defined, [atom for literal in rule.body if (atom := positive(literal)) is not None])
+              for rule in rules if (defined := positive(rule.head)) is not None and defined[0] not in _FACT_SIGNATURES]
     seen: dict[Signature, list[set[str]]] = {}
     changed = True
     while changed:
         changed = False
-        for rule in rules:
-            if rule.head.ast_type != clingo.ast.ASTType.Literal or \
-                    rule.head.atom.ast_type != clingo.ast.ASTType.SymbolicAtom or \
-                    rule.head.atom.symbol.ast_type != clingo.ast.ASTType.Function:
-                continue
-            head = rule.head.atom.symbol
-            sig = (head.name, len(head.arguments))
-            if sig in _FACT_SIGNATURES:
-                continue
-            bound = _variable_types(rule.body, types)
-            slots = seen.setdefault(sig, [set() for _ in head.arguments])
-            for slot, arg in zip(slots, head.arguments):
-                new = bound.get(arg.name, set()) if arg.ast_type == clingo.ast.ASTType.Variable else set()
+        for (sig, head), body in shapes:
+            bound: dict[object, set[str]] = {}  # the types the body's positive atoms give its variables
+            for relation, columns in body:
+                for column, type_ in zip(columns, types.get(relation, [])):
+                    if column is not None and column[0] == "var" and type_ is not None:
+                        bound.setdefault(column[1], set()).add(type_)
+            slots = seen.setdefault(sig, [set() for _ in head])
+            for slot, column in zip(slots, head):
+                new = bound.get(column[1], set()) if column is not None and column[0] == "var" else set()
                 if not new <= slot:
                     slot |= new
                     changed = True
             types[sig] = [next(iter(slot)) if len(slot) == 1 else None for slot in slots]
     return types
-
-
-def _variable_types(body: list[clingo.ast.AST], types: dict[Signature, list[str | None]]) -> dict[str, set[str]]:
-    """The types a rule body's positive atoms give its variables (a variable in a column of type t)."""
-    found: dict[str, set[str]] = {}
-    for literal in body:
-        if literal.ast_type != clingo.ast.ASTType.Literal or literal.sign != clingo.ast.Sign.NoSign or \
-                literal.atom.ast_type != clingo.ast.ASTType.SymbolicAtom or \
-                literal.atom.symbol.ast_type != clingo.ast.ASTType.Function:
-            continue
-        symbol = literal.atom.symbol
-        for arg, type_ in zip(symbol.arguments, types.get((symbol.name, len(symbol.arguments)), [])):
-            if arg.ast_type == clingo.ast.ASTType.Variable and type_ is not None:
-                found.setdefault(arg.name, set()).add(type_)
-    return found
 
 
 def check_locations(rule: Rule, types: list[str | None]) -> None:
@@ -269,44 +261,21 @@ class Parsed(NamedTuple):
 
 def _parse(program: Program) -> Parsed:
     parsed = Parsed({}, [], [])
-    messages: list[str] = []
-
-    def visit(statement: clingo.ast.AST) -> None:
+    statements, messages = loading.parse(program.text)
+    if messages is not None:
+        raise _error(program, list(messages))
+    for statement in statements:
         if statement.ast_type == clingo.ast.ASTType.Rule:
-            for sig, pos in _atoms(statement.head, parsed.functions):
+            for sig, pos in atoms(statement.head, parsed.functions):
                 parsed.heads.setdefault(sig, pos)
             for literal in statement.body:
-                parsed.body.extend(_atoms(literal, parsed.functions))
-
-    try:
-        clingo.ast.parse_string(program.text, visit, logger=lambda _c, m: messages.append(m))
-    except RuntimeError:
-        raise _error(program, messages) from None
+                parsed.body.extend(atoms(literal, parsed.functions))
     return parsed
 
 
 def rules_of(program: Program) -> list[clingo.ast.AST]:
     """The rules of a program (already checked), as clingo ASTs."""
-    found: list[clingo.ast.AST] = []
-    clingo.ast.parse_string(program.text, lambda s: found.append(s) if s.ast_type == clingo.ast.ASTType.Rule else None)
-    return found
-
-
-def _atoms(node: clingo.ast.AST, functions: list[tuple[str, Position]]) -> list[tuple[Signature, Position]]:
-    """The atoms under a node; the @functions it calls are added to `functions`."""
-    found = []
-    if node.ast_type == clingo.ast.ASTType.SymbolicAtom and node.symbol.ast_type == clingo.ast.ASTType.Function:
-        begin = node.symbol.location.begin
-        found.append(((node.symbol.name, len(node.symbol.arguments)), (begin.line, begin.column)))
-    elif node.ast_type == clingo.ast.ASTType.Function and node.external:
-        begin = node.location.begin
-        functions.append((node.name, (begin.line, begin.column)))
-    for key in node.child_keys:
-        child = getattr(node, key)
-        for item in child if isinstance(child, (list, clingo.ast.ASTSequence)) else [child]:
-            if isinstance(item, clingo.ast.AST):
-                found.extend(_atoms(item, functions))
-    return found
+    return [s for s in loading.parse(program.text)[0] if s.ast_type == clingo.ast.ASTType.Rule]
 
 
 def _safety(program: Program, declared: str) -> None:

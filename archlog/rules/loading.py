@@ -1,0 +1,336 @@
+"""Which facts clingo parses, and when. Parsing fact text is most of the cost of handing facts to
+clingo, so a row is given to it only when a rule can read it, or when asked for:
+
+- the rules are grounded stratum by stratum (a relation after every relation it reads);
+- before a stratum, each of its rules is given the rows of the fact relations it reads, unless a
+  relation of a positive body atom of the rule is already known to be empty (then the rule derives
+  nothing, like AL401's `remap_user` guarding its read of `location`);
+- a relation read only in positive body atoms gets only the rows that can join with the other fact
+  relations of that body (same value where they share a variable, the constant it is written with);
+- every other row (of a relation no rule reads, or rows no join can use) when a query, an
+  on-the-fly rule or an explanation names its relation (`Grounded.load`).
+"""
+
+from __future__ import annotations
+
+import functools
+import operator
+import time
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+
+import clingo
+import clingo.ast
+
+from archlog.facts.schema import BY_NAME
+from archlog.facts.store import Cell, FactStore
+from archlog.rules.functions import FUNCTIONS
+
+Signature = tuple[str, int]
+Position = tuple[int, int]
+FACTS = {(r.name, r.arity) for r in BY_NAME.values()}
+_PLAIN = (clingo.ast.ASTType.Rule, clingo.ast.ASTType.Comment)
+Column = tuple[str, object] | None  # ("var", a variable's name), ("=", a constant) or None (anything)
+
+
+@dataclass(frozen=True)
+class Reads:
+    """One rule: the relations it defines and reads, its positive body atoms (signature and column
+    patterns) and the relations it reads otherwise (under `not`, in aggregates and conditions)."""
+
+    rule: clingo.ast.AST
+    heads: frozenset[Signature]
+    reads: frozenset[Signature]
+    atoms: tuple[tuple[Signature, tuple[Column, ...]], ...]
+    loose: frozenset[Signature]
+
+    @property
+    def guards(self) -> set[Signature]:
+        return {sig for sig, _pattern in self.atoms}
+
+
+@functools.lru_cache(maxsize=1024)
+def parse(text: str) -> tuple[tuple[clingo.ast.AST, ...], tuple[str, ...] | None]:
+    """A rule program's statements, parsed once; or clingo's messages about why it cannot be."""
+    found: list[clingo.ast.AST] = []
+    messages: list[str] = []
+    try:
+        clingo.ast.parse_string(text, found.append, logger=lambda _code, message: messages.append(message))
+    except RuntimeError:
+        return (), tuple(messages)
+    return tuple(found), None
+
+
+def reads_of(texts: Iterable[str]) -> list[Reads] | None:
+    """The rules of (valid) rule program texts, in order; None when a text holds other statements
+    than rules (`#const`, `#show`, a `#program` part), which are then grounded as written, at once."""
+    statements = [statement for text in texts for statement in parse(text)[0]]
+    if any(s.ast_type not in _PLAIN and s.ast_type != clingo.ast.ASTType.Program for s in statements) or \
+            sum(s.ast_type == clingo.ast.ASTType.Program and s.name != "base" for s in statements):
+        return None
+    found = []
+    for statement in statements:
+        if statement.ast_type != clingo.ast.ASTType.Rule:
+            continue
+        atoms = [atom for literal in statement.body if (atom := positive(literal)) is not None]
+        loose = [sig for literal in statement.body if positive(literal) is None for sig in _signatures(literal)]
+        heads = _signatures(statement.head)
+        found.append(Reads(statement, frozenset(heads), frozenset(heads + loose + [sig for sig, _p in atoms]),
+                           tuple(atoms), frozenset(loose)))
+    return found
+
+
+def atoms(node: clingo.ast.AST, functions: list[tuple[str, Position]]) -> list[tuple[Signature, Position]]:
+    """The atoms under a node; the @functions it calls are added to `functions`."""
+    found = []
+    if node.ast_type == clingo.ast.ASTType.SymbolicAtom and node.symbol.ast_type == clingo.ast.ASTType.Function:
+        begin = node.symbol.location.begin
+        found.append(((node.symbol.name, len(node.symbol.arguments)), (begin.line, begin.column)))
+    elif node.ast_type == clingo.ast.ASTType.Function and node.external:
+        begin = node.location.begin
+        functions.append((node.name, (begin.line, begin.column)))
+    for key in node.child_keys:
+        child = getattr(node, key)
+        for item in child if isinstance(child, (list, clingo.ast.ASTSequence)) else [child]:
+            if isinstance(item, clingo.ast.AST):
+                found.extend(atoms(item, functions))
+    return found
+
+
+def _signatures(node: clingo.ast.AST) -> list[Signature]:
+    """The relations of every atom under a node (not @functions)."""
+    return [sig for sig, _position in atoms(node, [])]
+
+
+def positive(literal: clingo.ast.AST) -> tuple[Signature, tuple[Column, ...]] | None:
+    """A positive body atom: its relation and, per column, ("var", name), ("=", a constant) or None."""
+    if literal.ast_type != clingo.ast.ASTType.Literal or literal.sign != clingo.ast.Sign.NoSign or \
+            literal.atom.ast_type != clingo.ast.ASTType.SymbolicAtom:
+        return None
+    symbol = literal.atom.symbol
+    if symbol.ast_type != clingo.ast.ASTType.Function or symbol.external:
+        return None
+    return (symbol.name, len(symbol.arguments)), tuple(map(_column, symbol.arguments))
+
+
+def _column(term: clingo.ast.AST) -> Column:
+    if term.ast_type == clingo.ast.ASTType.Variable and term.name != "_":
+        return "var", term.name
+    if term.ast_type == clingo.ast.ASTType.SymbolicTerm and term.symbol.type == clingo.SymbolType.String:
+        return "=", term.symbol.string
+    if term.ast_type == clingo.ast.ASTType.SymbolicTerm and term.symbol.type == clingo.SymbolType.Number:
+        return "=", term.symbol.number
+    return None
+
+
+class Grounded:
+    """A clingo control with the rules grounded, and the fact rows given to it so far."""
+
+    def __init__(self, store: FactStore) -> None:
+        self.ctl = clingo.Control(["--warn=none"])
+        self.store = store
+        self.loaded: set[str] = set()  # relations given whole
+        self.timings = {"to-clingo": 0.0, "ground": 0.0}
+        self._given: dict[str, set[int]] = {}  # rows (indexes) given of the other relations
+        self._parts = 0
+
+    def load(self, relations: Iterable[str]) -> None:
+        """Give clingo every row it lacks of these fact relations (other names are ignored)."""
+        self.give({name: None for name in relations if name in BY_NAME})
+
+    def give(self, rows: dict[str, set[int] | None]) -> None:
+        """Give clingo these rows (indexes; None: all) of fact relations, those it lacks."""
+        text: list[str] = []
+        clock = time.perf_counter()
+        for name, wanted in sorted(rows.items()):
+            if name in self.loaded:
+                continue
+            every = self.store.rows(name)
+            given = self._given.pop(name, set())
+            if wanted is None and not given:
+                text.append(self.store.text(name, every))
+                self.loaded.add(name)
+                continue
+            new = [i for i in (range(len(every)) if wanted is None else sorted(wanted)) if i not in given]
+            text.append(self.store.text(name, [every[i] for i in new]))
+            given.update(new)
+            if len(given) == len(every):
+                self.loaded.add(name)
+            else:
+                self._given[name] = given
+        if any(text):
+            part = self._part()
+            self.ctl.add(part, [], "".join(text))
+            self.timings["to-clingo"] += time.perf_counter() - clock
+            self.ground(part)
+
+    def given(self, relation: str) -> int:
+        """How many rows of a fact relation clingo has."""
+        return self.store.count(relation) if relation in self.loaded else len(self._given.get(relation, ()))
+
+    def add_rules(self, rules: list[clingo.ast.AST], preamble: str = "") -> None:
+        """Ground rules on top of what is grounded (they may read only relations grounded before
+        them or defined among themselves)."""
+        part = self._part()
+        if preamble:
+            self.ctl.add(part, [], preamble)
+        with clingo.ast.ProgramBuilder(self.ctl) as builder:
+            begin = clingo.ast.Position("<rules>", 1, 1)
+            builder.add(clingo.ast.Program(clingo.ast.Location(begin, begin), part, []))
+            for rule in rules:
+                builder.add(rule)
+        self.ground(part)
+
+    def ground(self, part: str) -> None:
+        clock = time.perf_counter()
+        self.ctl.ground([(part, [])], context=FUNCTIONS)
+        self.timings["ground"] += time.perf_counter() - clock
+
+    def empty(self, signature: Signature) -> bool:
+        """Whether a relation has no rows (a fact relation in the store, a derived one in clingo)."""
+        if signature in FACTS:
+            return self.store.count(signature[0]) == 0
+        return next(iter(self.ctl.symbolic_atoms.by_signature(*signature)), None) is None
+
+    def _part(self) -> str:
+        self._parts += 1
+        return f"__part{self._parts}"
+
+
+def ground(store: FactStore, rules: list[Reads], preamble: str, listed: set[str]) -> Grounded:
+    """Ground the rules stratum by stratum, each with the fact rows it can read (see the module).
+    `listed` are relations findings list (read from clingo, whole)."""
+    grounded = Grounded(store)
+    grounded.load(listed)
+    grounded.add_rules([], preamble)
+    levels = _levels(rules)
+    values = Values(store)
+    for level in sorted(set(levels.values())):
+        stratum = [rule for rule in rules if levels[id(rule)] == level]
+        clock = time.perf_counter()  # choosing rows is part of handing facts to clingo
+        wanted: dict[str, set[int] | None] = {}
+        for rule in stratum:
+            if any(grounded.empty(sig) for sig in rule.guards if sig in FACTS or levels.get(sig, level) < level):
+                continue  # a relation it joins is empty: it derives nothing
+            for name, _arity in rule.reads & FACTS:
+                if name in grounded.loaded or (name in wanted and wanted[name] is None):
+                    continue
+                rows = _joining(values, rule, name)
+                wanted[name] = None if rows is None else rows | (wanted.get(name) or set())
+        grounded.timings["to-clingo"] += time.perf_counter() - clock
+        grounded.give(wanted)
+        grounded.add_rules([rule.rule for rule in stratum])
+    return grounded
+
+
+class Values:
+    """The values in columns of fact relations, each set computed once."""
+
+    def __init__(self, store: FactStore) -> None:
+        self.store = store
+        self._sets: dict[tuple[str, tuple[int, ...]], set[object]] = {}
+        self._nul: dict[str, bool] = {}
+
+    def of(self, relation: str, columns: tuple[int, ...]) -> set[object]:
+        """The values (a tuple per row, or the value for one column) of these columns."""
+        if (relation, columns) not in self._sets:
+            self._sets[(relation, columns)] = set(map(operator.itemgetter(*columns), self.store.rows(relation)))
+        return self._sets[(relation, columns)]
+
+    def has_nul(self, relation: str) -> bool:
+        """Whether a string of the relation holds a NUL character: clingo cuts it there, so values
+        that differ here may be equal there."""
+        if relation not in self._nul:
+            self._nul[relation] = "\0" in "\1".join(c for row in self.store.rows(relation) for c in row if type(c) is str)
+        return self._nul[relation]
+
+
+def _joining(values: Values, rule: Reads, relation: str) -> set[int] | None:
+    """The rows of a fact relation that the rule's body can use (None: all): read only in positive
+    atoms, a row must match an atom's constants and, for every other fact relation of the body,
+    share the values of their common variables with one of its rows (relations with a NUL in a
+    string are not filtered, nor used as filters)."""
+    if any(name == relation for name, _arity in rule.loose):
+        return None
+    found: set[int] = set()
+    for index, ((name, _arity), pattern) in enumerate(rule.atoms):
+        if name != relation:
+            continue
+        tests: list[tuple[Callable[[tuple[Cell, ...]], object], set[object]]] = [
+            (operator.itemgetter(column), {spec[1]}) for column, spec in enumerate(pattern) if spec and spec[0] == "="]
+        variables = {spec[1]: column for column, spec in enumerate(pattern) if spec and spec[0] == "var"}
+        for other, ((guard, _arity), guard_pattern) in enumerate(rule.atoms):
+            shared = [(variables[spec[1]], column) for column, spec in enumerate(guard_pattern)
+                      if spec and spec[0] == "var" and spec[1] in variables]
+            if other != index and (guard, len(guard_pattern)) in FACTS and shared and not values.has_nul(guard):
+                allowed = values.of(guard, tuple(column for _mine, column in shared))
+                tests.append((operator.itemgetter(*(mine for mine, _theirs in shared)), allowed))
+        if not tests or values.has_nul(relation):
+            return None
+        every = values.store.rows(relation)
+        rows: Iterable[int] = range(len(every))
+        for key, allowed in tests:
+            rows = [i for i in rows if key(every[i]) in allowed]
+        found.update(rows)
+    return found
+
+
+def _levels(rules: list[Reads]) -> dict[object, int]:
+    """The stratum of each rule (by id) and derived relation: 1 + the highest stratum of the
+    derived relations its rules read, outside its own cycle (a cycle's relations share one)."""
+    defined = {sig for rule in rules for sig in rule.heads}
+    depends: dict[Signature, set[Signature]] = {sig: set() for sig in defined}
+    for rule in rules:
+        for head in rule.heads:
+            depends[head] |= (rule.reads & defined) | rule.heads
+    component = _components(depends)
+    level: dict[int, int] = {}
+
+    def of(comp: int) -> int:
+        if comp not in level:
+            members = [sig for sig, c in component.items() if c == comp]
+            level[comp] = 1 + max((of(component[d]) for m in members for d in depends[m] if component[d] != comp),
+                                  default=0)
+        return level[comp]
+
+    levels: dict[object, int] = {sig: of(component[sig]) for sig in defined}
+    for rule in rules:
+        levels[id(rule)] = levels[next(iter(rule.heads))] if rule.heads else \
+            1 + max((levels[d] for d in rule.reads & defined), default=0)
+    return levels
+
+
+def _components(graph: dict[Signature, set[Signature]]) -> dict[Signature, int]:
+    """Strongly connected components (Tarjan, iterative): relation -> component number."""
+    index: dict[Signature, int] = {}
+    low: dict[Signature, int] = {}
+    component: dict[Signature, int] = {}
+    stack: list[Signature] = []
+    for root in graph:
+        if root in index:
+            continue
+        index[root] = low[root] = len(index)
+        stack.append(root)
+        work = [(root, iter(sorted(graph[root])))]
+        while work:
+            node, children = work[-1]
+            child = next(children, None)
+            if child is not None:
+                if child not in index:
+                    index[child] = low[child] = len(index)
+                    stack.append(child)
+                    work.append((child, iter(sorted(graph[child]))))
+                elif child not in component:
+                    low[node] = min(low[node], index[child])
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[node])
+            if low[node] == index[node]:
+                number = index[node]
+                while True:
+                    member = stack.pop()
+                    component[member] = number
+                    if member == node:
+                        break
+    return component

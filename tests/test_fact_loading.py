@@ -1,0 +1,154 @@
+"""Fact relations reach clingo only when something can read them (archlog/rules/loading.py): the
+findings are those of grounding every fact, and every relation stays available to queries, rules
+defined on the fly, user rule files and explanations."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import clingo
+import pytest
+from conftest import CORPUS, load_case
+
+from archlog.analysis import analyse
+from archlog.facts.store import FactStore
+from archlog.queries.session import Session
+from archlog.rules.engine import Engine, Finding
+from archlog.rules.functions import FUNCTIONS
+from archlog.rules.ruleset import load_rules
+
+HEADER = """%! id: USR9
+%! name: early-publisher
+%! severity: warning
+%! summary: a publisher declared in the first lines of its file
+%! finding: early(topic, port)
+%! location: port
+%! message: "{topic} is published early"
+"""
+
+
+def corpus_store(name: str) -> FactStore:
+    variant = CORPUS / name / "buggy"
+    case = load_case(variant)
+    return analyse([variant], case["launch"], case.get("args", {}), []).store
+
+
+def every_fact(engine: Engine, store: FactStore) -> list[Finding]:
+    """The findings of the rules grounded together with every fact relation, as one program."""
+    ctl = clingo.Control(["--warn=none"])
+    ctl.add("base", [], engine.declared + "\n".join(p.text for p in engine.ruleset.programs) + store.program())
+    ctl.ground([("base", [])], context=FUNCTIONS)
+    return engine.findings(ctl, store)
+
+
+def shown(findings: list[Finding]) -> list[tuple[str, str, int, str]]:
+    return [(f.rule.id, f.location.file, f.location.line, f.message) for f in findings]
+
+
+@pytest.mark.parametrize("name", ["misplaced_remap", "unused_remap_duplicate", "unread_topic_param"])
+def test_findings_are_those_of_grounding_every_fact(name: str) -> None:
+    store, engine = corpus_store(name), Engine(load_rules([]))
+    grounded = engine.start(store)
+    lazy = engine.findings(grounded.ctl, store)
+    assert lazy and shown(lazy) == shown(every_fact(engine, store))
+    assert "name_namespace" not in grounded.loaded  # no rule reads it
+
+
+def test_a_guarded_relation_loads_only_when_its_guard_holds() -> None:
+    """AL401 reads `location` only for remaps that no node uses (its guard `remap_user`)."""
+    engine = Engine(load_rules([]))
+    misplaced = engine.start(corpus_store("misplaced_remap"))
+    assert "location" in misplaced.loaded
+    assert any("declared before the remap" in f.message or "outside the remap's scope" in f.message
+               for f in engine.findings(misplaced.ctl, misplaced.store) if f.rule.id == "AL401")
+    store = FactStore()
+    store.add("node", "/a", "pkg", "a", "e1")
+    store.locate("e1", "a.launch", 3)
+    store.add("publisher", "p1", "/a", "/x", "std_msgs/String")
+    assert "location" not in engine.start(store).loaded
+
+
+def test_a_relation_only_a_query_names_is_queryable() -> None:
+    store = corpus_store("misplaced_remap")
+    session = Session(store, load_rules([]))
+    assert "name_namespace" not in session.grounded.loaded and store.count("name_namespace")
+    rows = session.query("name_namespace(T, NS)").rows  # the whole relation, read from the store
+    assert rows == store.rows("name_namespace") and "name_namespace" not in session.grounded.loaded
+    joined = session.query('name_namespace(T, NS), subscriber(_, _, T, _), NS != "/"').rows
+    assert joined and all(row[1] != "/" for row in joined)
+    counts = {name: count for name, _arity, count, kind in session.relations() if kind == "fact"}
+    assert counts["name_namespace"] == store.count("name_namespace")
+
+
+def test_rules_defined_on_the_fly_and_explanations_load_what_they_read() -> None:
+    store = corpus_store("include_missing_remap")
+    session = Session(store, load_rules([]))
+    assert "included_through" not in session.grounded.loaded
+    rule = HEADER.replace("USR9", "USR8").replace("early(topic, port)", "nested(node, elem, include)") \
+        .replace("location: port", "location: elem").replace("{topic} is published early", "{node} is included")
+    assert session.define(rule + "nested(N, E, F) :- node(N, _, _, E), included_through(E, F, _).\n") == ["nested"]
+    expected = {(n, f) for n, _p, _x, e in store.rows("node") for e2, f, _d in store.rows("included_through") if e2 == e}
+    assert expected and {(f.values["node"], f.values["include"]) for f in session.findings()
+                         if f.rule.id == "USR8"} == expected
+    session = Session(store, load_rules([]))
+    first = store.rows("node_namespace")[0]
+    atom = clingo.Function("node_namespace", [store.term(cell) for cell in first])
+    assert session.explain(atom).kind == "fact"
+
+
+def test_a_user_rule_reading_location_works(tmp_path: Path) -> None:
+    path = tmp_path / "early.lp"
+    path.write_text(HEADER + "early(T, P) :- publisher(P, _, T, _), location(P, _, L, _), L < 10.\n")
+    store = FactStore()
+    for port, line in (("p1", 4), ("p2", 40)):
+        store.add("publisher", port, "/a", f"/topic{line}", "std_msgs/String")
+        store.locate(port, "a.py", line, 1)
+    engine = Engine(load_rules([path], builtin=False))
+    grounded = engine.start(store)
+    assert "location" in grounded.loaded
+    assert shown(engine.findings(grounded.ctl, store)) == [("USR9", "a.py", 4, "/topic4 is published early")]
+
+
+def test_rows_no_join_can_use_are_given_when_a_query_asks() -> None:
+    """`remap_used` joins `port_source_name` with `remap` on the remapped name: only the ports whose
+    source name a remap names reach clingo, until a query joins the relation (a query of the whole
+    relation reads the store's rows)."""
+    store = FactStore()
+    store.add("node", "/a", "pkg", "a", "e1")
+    store.add("publisher", "p1", "/a", "/out", "std_msgs/String")
+    store.add("subscriber", "p2", "/a", "/y", "std_msgs/String")
+    store.add("port_source_name", "p1", "/out")
+    store.add("port_source_name", "p2", "/in")
+    store.add("remap", "e2", "/a", "/in", "/y")
+    session = Session(store, load_rules([]))
+    assert session.grounded.given("port_source_name") == 1
+    assert session.query("unused_remap(F, E, T, W)").rows == []  # the remap is used: p2's name is remapped
+    assert sorted(session.query("port_source_name(P, F)").rows) == [("p1", "/out"), ("p2", "/in")]  # the store's
+    assert session.grounded.given("port_source_name") == 1
+    assert session.query("port_source_name(P, F), publisher(P, _, _, _)").rows == [("p1", "/out")]
+    assert session.grounded.given("port_source_name") == 2
+
+
+def test_rule_files_with_other_statements_are_grounded_with_every_fact(tmp_path: Path) -> None:
+    """A `#const` (or `#show`) is grounded as written, in one program with every fact."""
+    path = tmp_path / "early.lp"
+    path.write_text(HEADER + "#const limit = 10.\nearly(T, P) :- publisher(P, _, T, _), location(P, _, L, _), L < limit.\n")
+    store = FactStore()
+    store.add("publisher", "p1", "/a", "/topic4", "std_msgs/String")
+    store.locate("p1", "a.py", 4, 1)
+    store.add("name_namespace", "/topic4", "/")
+    engine = Engine(load_rules([path], builtin=False))
+    grounded = engine.start(store)
+    assert {"location", "name_namespace"} <= grounded.loaded
+    assert shown(engine.findings(grounded.ctl, store)) == [("USR9", "a.py", 4, "/topic4 is published early")]
+
+
+def test_a_whole_fact_relation_reads_as_clingo_holds_it() -> None:
+    """clingo cuts a string at a NUL character: the store's rows are read back the same way."""
+    store = FactStore()
+    for name in ("/a\0b", "/a", "/c\0d", "/c\0e"):
+        store.add("name_namespace", name, "/")
+    session = Session(store, load_rules([]))
+    whole = session.query("name_namespace(T, NS)").rows
+    assert whole == [("/a", "/"), ("/c", "/")]
+    assert sorted(session.query('name_namespace(T, NS), NS = "/"').rows) == whole  # given to clingo
