@@ -4,6 +4,8 @@ planted defect is found and shrunk to at most 3 input messages, each fixed twin 
 
 from __future__ import annotations
 
+import importlib.util
+import json
 import math
 import subprocess
 import sys
@@ -14,11 +16,12 @@ import pytest
 from conftest import finding_keys, requires_ros, run_case
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from support.testgen_corpus import CORPUS, Outcome, prepare, run_generated, systems
+from support.testgen_corpus import CORPUS, ROOT, Outcome, prepare, run_generated, systems
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.workspace.index import Workspace
 from archlog.testgen.msgspec import message_specs, parse_msg
+from archlog.testgen.ros2 import Ros2Machine, Ros2Session, message_class, run_command, to_json, to_message
 from archlog.testgen.settings import SettingsError, load_settings
 from archlog.testgen.strategies import INTS, Strategies
 
@@ -130,6 +133,90 @@ def test_static_rules_cannot_tell_the_twins_apart(system: Path) -> None:
     """The planted defects are behavioral: the rules report the same (rule, subject) on both twins."""
     keys = [{(rule, subject) for rule, _f, _l, subject in finding_keys(run_case(system / v)[1])} for v in ("buggy", "clean")]
     assert keys[0] == keys[1]
+
+
+# -- ROS 2: the generated module against a stand-in of rclpy and rosidl's message classes ----------
+
+ROS2_SYSTEM = ROOT / "corpus" / "ros2" / "yaml_remap_near_miss" / "clean"
+STANDIN = Path(__file__).resolve().parent / "support" / "ros2_standin"
+
+
+@pytest.fixture
+def ros2_module(tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
+    """The test generated for the ROS 2 velocity smoother in isolation, imported with the stand-in."""
+    subprocess.run([sys.executable, "-m", "archlog", "testgen", str(ROS2_SYSTEM), "--launch",
+                    "teleop/launch/teleop.launch.yaml", "--nodes", "/robot1/smoother", "--output", str(tmp_path)],
+                   check=True, capture_output=True, text=True)
+    monkeypatch.syspath_prepend(str(STANDIN))
+    for name in [m for m in sys.modules if m.split(".")[0] in ("rclpy", "geometry_msgs", "std_msgs", "builtin_interfaces")]:
+        monkeypatch.delitem(sys.modules, name)
+    spec = importlib.util.spec_from_file_location("test_teleop_generated", tmp_path / "test_teleop.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_ros2_module_uses_rclpy_and_the_ros2_message_classes(ros2_module) -> None:
+    machine = ros2_module.TeleopMachine
+    assert issubclass(machine, Ros2Machine) and machine.rclpy is sys.modules["rclpy"]
+    twist = sys.modules["geometry_msgs.msg"].Twist
+    assert machine.classes == {"geometry_msgs/msg/Twist": twist}
+    assert hasattr(machine, "publish_robot1_cmd_vel")
+    assert ros2_module.MODEL["inputs"] == {"/robot1/cmd_vel": "geometry_msgs/msg/Twist"}
+    assert ros2_module.MODEL["outputs"] == {"/robot1/cmd_vel_smoothed": "geometry_msgs/msg/Twist"}
+    command = run_command(ros2_module.MODEL["commands"][0], {"/robot1/smoother/max_step": 0.5})
+    assert command == ["ros2", "run", "teleop", "velocity_smoother", "--ros-args", "-r", "__node:=smoother",
+                       "-r", "__ns:=/robot1", "-r", "/robot1/cmd_vel_in:=/robot1/cmd_vel",
+                       "-r", "/robot1/cmd_vel_out:=/robot1/cmd_vel_smoothed", "-p", "max_step:=0.5"]
+
+
+def test_ros2_strategies_draw_what_the_message_classes_accept(ros2_module) -> None:
+    """Every drawn Twist becomes a message the rosidl-style setters accept, and reads back the same;
+    the session publishes it with the stand-in's rclpy."""
+    session = Ros2Session(ros2_module.MODEL, ros2_module.rclpy, ros2_module.TeleopMachine.classes)
+    session.start()
+    twist = ros2_module.TeleopMachine.classes["geometry_msgs/msg/Twist"]
+    drawn: list[dict] = []
+
+    @settings(max_examples=50, deadline=None)
+    @given(ros2_module.STRATEGIES.message("geometry_msgs/msg/Twist"))
+    def check(msg: dict) -> None:
+        sent = to_message(msg, twist, now=100.0)
+        assert isinstance(sent, twist) and json.dumps(to_json(sent), sort_keys=True) == json.dumps(msg, sort_keys=True)
+        session.send({"op": "publish", "topic": "/robot1/cmd_vel", "msg": msg})
+        drawn.append(msg)
+
+    try:
+        check()
+    finally:
+        session.close()
+    assert session.events.empty()  # no value was refused
+    assert len(session.publishers["/robot1/cmd_vel"].published) == len(drawn) == 50
+
+
+def test_ros2_specs_and_header_stamps() -> None:
+    """ROS 2 names: nested types as pkg/msg/Name, Header without seq, a stamp near the moment of sending."""
+    specs = message_specs(Workspace([ROS2_SYSTEM], DiagnosticSink()),
+                          {"geometry_msgs/msg/PoseWithCovarianceStamped": ("test", 1)}, DiagnosticSink())
+    assert specs["std_msgs/msg/Header"]["fields"] == [["stamp", "builtin_interfaces/msg/Time", None],
+                                                    ["frame_id", "string", None]]
+    assert ["covariance", "float64", 36] in specs["geometry_msgs/msg/PoseWithCovariance"]["fields"]
+    sys.path.insert(0, str(STANDIN))
+    try:
+        stamped = message_class("geometry_msgs/msg/PoseWithCovarianceStamped")  # the stand-in's
+
+        @settings(max_examples=30, deadline=None)
+        @given(Strategies(specs, load_settings(None)).message("geometry_msgs/msg/PoseWithCovarianceStamped"))
+        def check(msg: dict) -> None:
+            built = to_message(msg, stamped, now=1000.0)
+            assert 999 <= built.header.stamp.sec <= 1000 and len(built.pose.covariance) == 36
+
+        check()
+    finally:
+        sys.path.remove(str(STANDIN))
+        for name in [m for m in sys.modules if m.split(".")[0] in ("geometry_msgs", "std_msgs", "builtin_interfaces")]:
+            del sys.modules[name]
 
 
 # -- the generated tests against the running corpus systems (Debian's ROS 1) -------------------

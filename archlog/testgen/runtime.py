@@ -29,7 +29,7 @@ import xmlrpc.client
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 from hypothesis import note
 from hypothesis import strategies as st
@@ -209,14 +209,33 @@ class Session:
                                                           for kind in ("publishers", "subscribers", "services")))
 
 
-_SESSIONS: dict[str, Session] = {}
+class System(Protocol):
+    """What the state machine drives: a `Session` (ROS 1) or a ros2.Ros2Session."""
+
+    model: dict[str, Any]
+    events: queue.Queue
+    launches: int
+    launched_params: dict[str, Any] | None
+
+    @property
+    def log(self) -> Path: ...
+    def start(self) -> None: ...
+    def send(self, command: dict[str, Any]) -> None: ...
+    def launch(self, params: dict[str, Any]) -> None: ...
+    def stop_nodes(self) -> None: ...
+    def node_alive(self, node: str) -> bool: ...
+    def graph(self) -> observe.Architecture: ...
+    def close(self) -> None: ...
 
 
-def shared_session(model: dict[str, Any]) -> Session:
-    """The session of this model for the whole run (started on first use, closed at exit)."""
+_SESSIONS: dict[str, System] = {}
+
+
+def shared_session(model: dict[str, Any], create: Callable[[], System]) -> System:
+    """The session of this model for the whole run (created and started on first use, closed at exit)."""
     key = json.dumps(model, sort_keys=True)
     if key not in _SESSIONS:
-        session = Session(model)
+        session = create()
         _SESSIONS[key] = session
         atexit.register(session.close)
         session.start()
@@ -275,7 +294,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
 
     def __init__(self) -> None:
         super().__init__()
-        self.session = shared_session(self.model)
+        self.session = shared_session(self.model, self.new_session)
         self.strategies = Strategies(self.model["specs"], self.settings)
         self.properties = self.properties_class()
         self.actions: list[dict[str, Any]] = []
@@ -285,6 +304,9 @@ class ArchitectureMachine(RuleBasedStateMachine):
         self.started = 0.0
         self.failure: str | None = None
         self.periodic: dict[str, float] = {}  # the periodic outputs seen at their period after launch
+
+    def new_session(self) -> System:
+        return Session(self.model)
 
     # -- set-up -------------------------------------------------------------------------
 
@@ -414,7 +436,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
                                                     "actions": self.actions, "reason": reason}, indent=1) + "\n")
 
 
-def run(session: Session, params: dict[str, Any], reuse: bool) -> None:
+def run(session: System, params: dict[str, Any], reuse: bool) -> None:
     """Launch the nodes under test (in `reuse` mode only if they are down or their parameters changed)."""
     up = reuse and session.launches > 0 and session.launched_params == params \
         and all(session.node_alive(n) for n in session.model["nodes"])
@@ -423,7 +445,7 @@ def run(session: Session, params: dict[str, Any], reuse: bool) -> None:
     _drain(session)
 
 
-def _drain(session: Session) -> list[dict[str, Any]]:
+def _drain(session: System) -> list[dict[str, Any]]:
     drained = []
     while True:
         try:

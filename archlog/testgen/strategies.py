@@ -19,6 +19,7 @@ INTS = {"byte": (-2**7, 2**7 - 1), "char": (0, 2**8 - 1), "int8": (-2**7, 2**7 -
         "uint32": (0, 2**32 - 1), "int64": (-2**63, 2**63 - 1), "uint64": (0, 2**64 - 1)}
 NSECS = (0, 999_999_999)
 SPECIALS = (math.nan, math.inf, -math.inf, -0.0)
+STRING_SIZE = 16  # longest string drawn unless the field's settings say otherwise
 
 
 class Strategies:
@@ -35,8 +36,9 @@ class Strategies:
 
     def _build(self, type_: str) -> st.SearchStrategy:
         spec = self.specs.get(type_, {"fields": [], "constants": {}})
-        if type_ == "std_msgs/Header":
-            return st.fixed_dictionaries({"seq": st.just(0), "stamp": stamp_near_now(),
+        if type_ in ("std_msgs/Header", "std_msgs/msg/Header"):  # ROS 1's has a seq, ROS 2's none
+            seq = {"seq": st.just(0)} if type_ == "std_msgs/Header" else {}
+            return st.fixed_dictionaries({**seq, "stamp": stamp_near_now(),
                                           "frame_id": self._field(type_, ["frame_id", "string", None], spec)})
         return st.fixed_dictionaries({name: self._field(type_, [name, base, size], spec)
                                       for name, base, size in spec["fields"]})
@@ -44,6 +46,9 @@ class Strategies:
     def _field(self, type_: str, field: list, spec: dict) -> st.SearchStrategy:
         name, base, size = field
         options: dict[str, Any] = self.settings.fields.get(type_, {}).get(name, {})
+        if name in spec.get("bounds", {}):  # ROS 2's string<=N and T[<=N]
+            longest = options.get("max_size", self.settings.max_array if size is not None else STRING_SIZE)
+            options = {**options, "max_size": min(int(longest), spec["bounds"][name])}
         if "fixed" in options:
             return st.just(options["fixed"])
         if options.get("counter"):
@@ -81,7 +86,7 @@ class Strategies:
             # Hypothesis draws NaN and infinities rarely; a quarter of the draws are one of them (or -0.0)
             return st.one_of(floats, floats, floats, st.sampled_from(SPECIALS)) if specials else floats
         if base == "string":
-            return st.text(max_size=int(options.get("max_size", 16)))
+            return st.text(max_size=int(options.get("max_size", STRING_SIZE)))
         if base == "time":
             return st.fixed_dictionaries({"secs": st.integers(*INTS["uint32"]), "nsecs": st.integers(*NSECS)})
         if base == "duration":
