@@ -39,7 +39,7 @@ from hypothesis.stateful import RuleBasedStateMachine, initialize, invariant, pr
 from archlog import observe
 from archlog.testgen import processes
 from archlog.testgen.settings import Settings
-from archlog.testgen.strategies import Strategies, fill_counters, stale
+from archlog.testgen.strategies import Strategies, fill_counters, pick, stale
 
 with contextlib.suppress(ImportError, ValueError):  # each example runs real processes: shrinking is bounded in time
     from hypothesis.internal.conjecture import engine as _engine
@@ -334,7 +334,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
     def drop(self, data: st.DataObject) -> None:
         """Lose the next message of a topic: the topic's sequence skips one (what the lost message held
         cannot matter, so it is not drawn)."""
-        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        topic = data.draw(pick(sorted(self.model["inputs"])), label="topic")
         seq = self._next(topic)
         if self.failure is None:
             self.actions.append({"op": "drop", "topic": topic, "seq": seq})
@@ -343,14 +343,14 @@ class ArchitectureMachine(RuleBasedStateMachine):
     @rule(data=st.data())
     def resend(self, data: st.DataObject) -> None:
         """Send the last message of a topic again, unchanged (a duplicate)."""
-        topic = data.draw(st.sampled_from(sorted(self.last)), label="topic")
+        topic = data.draw(pick(sorted(self.last)), label="topic")
         self._send(topic, self.last[topic])
 
     @precondition(lambda self: bool(self.model["inputs"]))
     @rule(data=st.data())
     def reorder(self, data: st.DataObject) -> None:
         """Draw the next two messages of a topic and send them in swapped order."""
-        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        topic = data.draw(pick(sorted(self.model["inputs"])), label="topic")
         strategy = self.strategies.message(self.model["inputs"][topic])
         first, second = (fill_counters(data.draw(strategy, label=n), self._next(topic)) for n in ("first", "second"))
         self._send(topic, second, settle=False)
@@ -360,7 +360,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
     @rule(data=st.data(), count=st.integers(2, 3))
     def burst(self, data: st.DataObject, count: int) -> None:
         """Send `count` messages of a topic back to back."""
-        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        topic = data.draw(pick(sorted(self.model["inputs"])), label="topic")
         msg = data.draw(self.strategies.message(self.model["inputs"][topic]), label="msg")
         for n in range(count):
             self._send(topic, fill_counters(msg, self._next(topic)), settle=n == count - 1)
@@ -369,7 +369,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
     @rule(data=st.data(), age=st.floats(1.0, 3600.0))
     def send_stale(self, data: st.DataObject, age: float) -> None:
         """Send the next message of a topic with its Header stamps `age` seconds in the past."""
-        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        topic = data.draw(pick(sorted(self.model["inputs"])), label="topic")
         msg = data.draw(self.strategies.message(self.model["inputs"][topic]), label="msg")
         self._send(topic, stale(fill_counters(msg, self._next(topic)), age))
 
@@ -457,7 +457,7 @@ def _drain(session: System) -> list[dict[str, Any]]:
 def param_strategy(options: dict[str, Any], default: str | None) -> st.SearchStrategy:
     """Values for a parameter: the listed ones, or a number between min and max typed like its default."""
     if "values" in options:
-        return st.sampled_from(options["values"])
+        return pick(options["values"])
     integer = default is not None and default.lstrip("-").isdigit()
     low, high = options.get("min"), options.get("max")
     return st.integers(low, high) if integer else st.floats(low, high, allow_nan=False)
