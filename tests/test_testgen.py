@@ -22,6 +22,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.workspace.index import Workspace
 from archlog.testgen.msgspec import message_specs, parse_msg
 from archlog.testgen.ros2 import Ros2Machine, Ros2Session, message_class, run_command, to_json, to_message
+from archlog.testgen.runtime import check_log
 from archlog.testgen.settings import SettingsError, load_settings
 from archlog.testgen.strategies import INTS, Strategies
 
@@ -106,6 +107,20 @@ def test_unknown_setting_names_its_line(tmp_path: Path) -> None:
     path.write_text("[testgen]\nsettle = 0.5\nspeed = 3\n")
     with pytest.raises(SettingsError, match=r"t\.toml:3: unknown setting: speed"):
         load_settings(path)
+
+
+def test_an_exception_logged_by_a_callback_fails_unless_switched_off(tmp_path: Path) -> None:
+    """rospy's "bad callback" ERROR (with its traceback) fails the callbacks property; an ERROR
+    without a traceback does not; `callbacks = false` in the settings turns the property off."""
+    text = ("bad callback: <bound method Monitor.on_voltage>\nTraceback (most recent call last):\n"
+            '  File "monitor.py", line 16, in on_voltage\nValueError: cannot convert float NaN to integer\n')
+    event = {"ev": "log", "node": "/battery_monitor", "t": 0.0, "text": text}
+    with pytest.raises(AssertionError, match="/battery_monitor raised in a callback: ValueError: cannot convert"):
+        check_log(load_settings(None), event)
+    check_log(load_settings(None), {**event, "text": "battery voltage out of range"})
+    path = tmp_path / "t.toml"
+    path.write_text("[properties]\ncallbacks = false\n")
+    check_log(load_settings(path), event)
 
 
 def test_generation_keeps_the_users_properties(tmp_path: Path) -> None:

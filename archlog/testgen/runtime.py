@@ -99,7 +99,8 @@ class Session:
                     raise StartError(f"roscore did not start:\n{processes.tail(self.tmp / 'roscore.log')}") from None
                 time.sleep(0.1)
         spec = self.tmp / "bridge.json"
-        spec.write_text(json.dumps({"inputs": self.model["inputs"], "outputs": self.model["outputs"]}))
+        spec.write_text(json.dumps({"inputs": self.model["inputs"], "outputs": self.model["outputs"],
+                                    "nodes": self.model["nodes"]}))
         with open(self.tmp / "bridge.log", "ab") as log:
             self.bridge = subprocess.Popen([str(processes.SYSTEM_PYTHON), str(DEBIAN / "bridge.py"), str(spec)],
                                            env=self.env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=log,
@@ -499,6 +500,8 @@ def _record(machine: ArchitectureMachine) -> None:
     for event in _drain(machine.session):
         if event["ev"] == "error":
             raise AssertionError(f"the bridge could not publish on {event['topic']}: {event['error']}")
+        if event["ev"] == "log" and event["t"] >= machine.started:
+            check_log(machine.settings, event)
         if event["ev"] != "msg" or event["t"] < machine.started:
             continue
         received = Event(event["topic"], event["t"], event["msg"])
@@ -507,6 +510,16 @@ def _record(machine: ArchitectureMachine) -> None:
         hook: Callable[[Event], None] | None = getattr(machine.properties, hook_name(received.topic), None)
         if hook is not None:
             hook(received)
+
+
+def check_log(settings: Settings, event: dict[str, Any]) -> None:
+    """An ERROR a node under test logged with a Python traceback fails the `callbacks` property:
+    rospy caught an exception raised in one of the node's callbacks ("bad callback"), logged it to
+    /rosout, and the node lives on (no other property would see it)."""
+    text = event["text"]
+    if settings.properties["callbacks"] and "Traceback (most recent call last)" in text:
+        last = text.strip().splitlines()[-1]
+        raise AssertionError(f"{event['node']} raised in a callback: {last}")
 
 
 def _check_requires(machine: ArchitectureMachine, event: Event) -> None:
