@@ -31,7 +31,7 @@ import pytest
 from hypothesis import HealthCheck, settings
 from hypothesis.stateful import rule
 {imports}
-from archlog.testgen.runtime import close_sessions, load_properties
+from archlog.testgen.runtime import bounded_shrinking, close_sessions, load_properties
 from archlog.testgen.settings import Settings
 from archlog.testgen.strategies import Strategies
 
@@ -64,8 +64,9 @@ Test{cls} = {cls}.TestCase
 
 
 @pytest.fixture(scope="module", autouse=True)
-def _stop_the_system():
-    yield
+def _run_the_system():
+    with bounded_shrinking():
+        yield
     close_sessions()
 '''
 

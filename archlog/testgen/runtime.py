@@ -26,7 +26,7 @@ import tempfile
 import threading
 import time
 import xmlrpc.client
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
@@ -41,14 +41,36 @@ from archlog.testgen import processes
 from archlog.testgen.settings import Settings
 from archlog.testgen.strategies import Strategies, fill_counters, pick, stale
 
-with contextlib.suppress(ImportError, ValueError):  # each example runs real processes: shrinking is bounded in time
-    from hypothesis.internal.conjecture import engine as _engine
-
-    _engine.MAX_SHRINKING_SECONDS = int(os.environ.get("ARCHLOG_TESTGEN_SHRINK_SECONDS", "300"))
-
 DEBIAN = Path(__file__).resolve().parent / "debian"
 _POLL = 0.05
 STEP_SETTLE = 0.1  # seconds after a step's messages before the properties are checked
+
+
+@contextlib.contextmanager
+def bounded_shrinking() -> Iterator[None]:
+    """Shrinking fit for examples that each run real processes (a second or more), while a generated
+    test runs: bounded by ARCHLOG_TESTGEN_SHRINK_SECONDS (default 300), and without Hypothesis's
+    coarse first pass, which tries to lower every rule choice of the example (a step made a `drop`,
+    `publish`, ...) with up to three re-randomised runs each and used the whole budget before any
+    message was removed; the passes that follow (a step made trivial, a choice lowered) do that."""
+    from hypothesis.internal.conjecture import engine, shrinker
+
+    saved = engine.MAX_SHRINKING_SECONDS, shrinker.Shrinker.initial_coarse_reduction
+    engine.MAX_SHRINKING_SECONDS = int(os.environ.get("ARCHLOG_TESTGEN_SHRINK_SECONDS", "300"))
+    shrinker.Shrinker.initial_coarse_reduction = lambda self: None  # type: ignore[method-assign]
+    try:
+        yield
+    finally:
+        engine.MAX_SHRINKING_SECONDS, shrinker.Shrinker.initial_coarse_reduction = saved  # type: ignore[method-assign]
+
+
+class Violation(AssertionError):
+    """A property that failed at a known moment (`since`, wall clock) before it was checked: what was
+    sent after that moment played no part in the failure."""
+
+    def __init__(self, message: str, since: float) -> None:
+        super().__init__(message)
+        self.since = since
 
 
 class StartError(RuntimeError):
@@ -299,6 +321,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
         self.strategies = Strategies(self.model["specs"], self.settings)
         self.properties = self.properties_class()
         self.actions: list[dict[str, Any]] = []
+        self.times: list[float] = []  # when each action was taken
         self.counters: dict[str, int] = {}
         self.last: dict[str, dict[str, Any]] = {}
         self.first_sent: dict[str, float] = {}
@@ -315,7 +338,11 @@ class ArchitectureMachine(RuleBasedStateMachine):
     def launch(self, data: st.DataObject) -> None:
         params = {name: data.draw(param_strategy(options, self.model["params"].get(name)), label=name)
                   for name, options in sorted(self.settings.params.items())}
-        self.actions.append({"op": "params", "params": params})
+        self.start(params)
+
+    def start(self, params: dict[str, Any]) -> None:
+        """Launch the nodes under test with `params` and see which periodic outputs show their period."""
+        self._act({"op": "params", "params": params})
         run(self.session, params, self.settings.reuse)
         self.started = time.time()
         if self.settings.properties["periodic"]:
@@ -338,7 +365,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
         topic = data.draw(pick(sorted(self.model["inputs"])), label="topic")
         seq = self._next(topic)
         if self.failure is None:
-            self.actions.append({"op": "drop", "topic": topic, "seq": seq})
+            self._act({"op": "drop", "topic": topic, "seq": seq})
 
     @precondition(lambda self: bool(self.last))
     @rule(data=st.data())
@@ -378,7 +405,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
     def spin(self, seconds: float) -> None:
         """Let the system run (a delay between messages)."""
         if self.failure is None:
-            self.actions.append({"op": "spin", "seconds": seconds})
+            self._act({"op": "spin", "seconds": seconds})
             time.sleep(seconds)
 
     @invariant()
@@ -412,14 +439,22 @@ class ArchitectureMachine(RuleBasedStateMachine):
             return
         self.first_sent.setdefault(topic, time.time())  # before: the answer may come back at once
         self.session.send({"op": "publish", "topic": topic, "msg": msg})
-        self.actions.append({"op": "publish", "topic": topic, "msg": msg})
+        self._act({"op": "publish", "topic": topic, "msg": msg})
         self.properties.sent.append({"topic": topic, "msg": msg})
         if settle:
             time.sleep(STEP_SETTLE)
 
+    def _act(self, action: dict[str, Any]) -> None:
+        self.actions.append(action)
+        self.times.append(time.time())
+
     def _check(self, final: bool) -> None:
         try:
             check_properties(self, final)
+        except Violation as exc:  # the actions after the moment it failed are not part of the failure
+            kept = sum(t <= exc.since for t in self.times)
+            self.failure = f"{exc} (by step {kept}, seen after step {len(self.actions)})"
+            del self.actions[max(kept, 1):], self.times[max(kept, 1):]
         except AssertionError as exc:
             self.failure = f"{exc} (after step {len(self.actions)})"
 
@@ -482,9 +517,9 @@ def check_properties(machine: ArchitectureMachine, final: bool) -> None:
                 continue
             bound = settings.response_bound + model["periodic"].get(topic, 0.0)
             after = [e for e in machine.properties.history if e.topic == topic and e.time >= max(sent)]
-            if now - max(sent) >= bound:
-                assert after, f"{topic} requires {', '.join(inputs)}, which was published, but nothing came " \
-                              f"on {topic} within {bound:.1f} s"
+            if now - max(sent) >= bound and not after:
+                raise Violation(f"{topic} requires {', '.join(inputs)}, which was published, but nothing came "
+                                f"on {topic} within {bound:.1f} s", max(sent) + bound)
     if settings.properties["interface"] and final:
         want = observe.Architecture.from_json(model["interface"])
         differences = {kind: row for kind, row in observe.compare(want, session.graph()).items()
@@ -561,7 +596,8 @@ def _allowed(machine: ArchitectureMachine, period: float) -> float:
 def _check_period(machine: ArchitectureMachine, topic: str, period: float, now: float) -> None:
     """A confirmed periodic output is never silent for longer than its period and tolerance."""
     times = [e.time for e in machine.properties.history if e.topic == topic] + [now]
-    worst = max(b - a for a, b in zip(times, times[1:]))
     allowed = _allowed(machine, period)
-    assert worst <= allowed or math.isclose(worst, allowed), \
-        f"{topic} is recovered as published every {period} s, was, then was silent for {worst:.2f} s"
+    for before, after in zip(times, times[1:]):
+        if after - before > allowed and not math.isclose(after - before, allowed):
+            raise Violation(f"{topic} is recovered as published every {period} s, was, then was silent for "
+                            f"{after - before:.2f} s", before + allowed)

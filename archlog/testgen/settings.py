@@ -8,7 +8,7 @@ per-parameter choices. Every key is optional; an unknown key is an error naming 
     response_bound = 2.0     # seconds within which an output follows its required input
     period_tolerance = 0.5   # a periodic output may be this fraction slower than recovered
     reuse = false            # keep the nodes up across examples (only for stateless nodes)
-    max_messages = 10        # at most this many rule steps per example
+    max_messages = 6         # at most this many rule steps per example
 
     [properties]             # the built-in properties, each on by default
     alive = true             # every node under test keeps its process and master registration
@@ -59,7 +59,7 @@ class Settings:
     response_bound: float = 2.0
     period_tolerance: float = 0.5
     reuse: bool = False
-    max_messages: int = 10
+    max_messages: int = 6  # a shrink attempt is a run of the system: fewer steps, fewer to make trivial
     properties: dict[str, bool] = field(default_factory=lambda: dict.fromkeys(PROPERTIES, True))
     fields: dict[str, dict[str, dict[str, Any]]] = field(default_factory=dict)
     params: dict[str, dict[str, Any]] = field(default_factory=dict)
