@@ -210,6 +210,26 @@ def test_ros2_strategies_draw_what_the_message_classes_accept(ros2_module) -> No
     assert len(session.publishers["/robot1/cmd_vel"].published) == len(drawn) == 50
 
 
+def test_ros2_syntax_bounds_and_defaults() -> None:
+    """ROS 2 .msg syntax: bounded strings and arrays are drawn within their bound, a default value
+    after the name is read as a field, nested and time types get ROS 2 names."""
+    sink = DiagnosticSink()
+    spec = parse_msg("string<=3 name\nint32[<=2] ids\nfloat64 speed 0.5\ntime at\nPoint target\n", "nav",
+                     "nav/msg/Goal.msg", sink, ros2=True)
+    assert sink.items == []
+    assert spec["fields"] == [["name", "string", None], ["ids", "int32", -1], ["speed", "float64", None],
+                              ["at", "builtin_interfaces/msg/Time", None], ["target", "nav/msg/Point", None]]
+    assert spec["bounds"] == {"name": 3, "ids": 2}
+    specs = {"nav/msg/Goal": {**spec, "fields": spec["fields"][:3]}}
+
+    @settings(max_examples=50, deadline=None)
+    @given(Strategies(specs, load_settings(None)).message("nav/msg/Goal"))
+    def check(goal: dict) -> None:
+        assert len(goal["name"]) <= 3 and len(goal["ids"]) <= 2
+
+    check()
+
+
 def test_ros2_specs_and_header_stamps() -> None:
     """ROS 2 names: nested types as pkg/msg/Name, Header without seq, a stamp near the moment of sending."""
     specs = message_specs(Workspace([ROS2_SYSTEM], DiagnosticSink()),

@@ -88,6 +88,7 @@ ROS1_IMPORTS = """
 from archlog.testgen.runtime import ArchitectureMachine"""
 ROS2_IMPORTS = """
 rclpy = pytest.importorskip("rclpy", reason="a ROS 2 test: source ROS 2's setup first")
+import rclpy.context  # noqa: E402
 import rclpy.executors  # noqa: E402
 {modules}
 from archlog.testgen.ros2 import Ros2Machine"""

@@ -113,7 +113,7 @@ class Ros2Session:
 
     def start(self) -> None:
         rclpy = self.rclpy
-        self.context = rclpy.Context()
+        self.context = rclpy.context.Context()
         rclpy.init(context=self.context, domain_id=self.domain)
         self.node = rclpy.create_node("archlog_testgen_bridge", context=self.context)
         inputs, outputs = self.model["inputs"], self.model["outputs"]

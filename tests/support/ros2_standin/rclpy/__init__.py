@@ -3,13 +3,7 @@
 
 import time
 
-
-class Context:
-    def __init__(self):
-        self.domain_id = None
-
-    def try_shutdown(self):
-        self.domain_id = None
+from .context import Context  # noqa: F401 (rclpy exports it)
 
 
 def init(*, context=None, domain_id=None):
