@@ -3,7 +3,7 @@
 
 import time
 
-from .context import Context  # noqa: F401 (rclpy exports it)
+from .context import Context  # rclpy exports it
 
 
 def init(*, context=None, domain_id=None):
