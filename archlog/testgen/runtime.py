@@ -49,19 +49,39 @@ STEP_SETTLE = 0.1  # seconds after a step's messages before the properties are c
 @contextlib.contextmanager
 def bounded_shrinking() -> Iterator[None]:
     """Shrinking fit for examples that each run real processes (a second or more), while a generated
-    test runs: bounded by ARCHLOG_TESTGEN_SHRINK_SECONDS (default 300), and without Hypothesis's
-    coarse first pass, which tries to lower every rule choice of the example (a step made a `drop`,
-    `publish`, ...) with up to three re-randomised runs each and used the whole budget before any
-    message was removed; the passes that follow (a step made trivial, a choice lowered) do that."""
+    test runs: bounded by ARCHLOG_TESTGEN_SHRINK_SECONDS (default 300), and starting with the steps.
+    Hypothesis's coarse first pass tries to lower every rule choice of the example with up to three
+    re-randomised runs each, and its next pass makes every part of the example trivial in turn (a
+    needed step's every field too); with a run of the system per attempt that used the whole budget
+    before the last steps were reached. The first pass here makes each step trivial (a `drop`), first
+    to last, one attempt each (two when the step's shape changes); the usual passes follow."""
     from hypothesis.internal.conjecture import engine, shrinker
 
     saved = engine.MAX_SHRINKING_SECONDS, shrinker.Shrinker.initial_coarse_reduction
     engine.MAX_SHRINKING_SECONDS = int(os.environ.get("ARCHLOG_TESTGEN_SHRINK_SECONDS", "300"))
-    shrinker.Shrinker.initial_coarse_reduction = lambda self: None  # type: ignore[method-assign]
+    shrinker.Shrinker.initial_coarse_reduction = _trivial_steps  # type: ignore[method-assign]
     try:
         yield
     finally:
         engine.MAX_SHRINKING_SECONDS, shrinker.Shrinker.initial_coarse_reduction = saved  # type: ignore[method-assign]
+
+
+def _trivial_steps(shrinker: Any) -> None:
+    """Hypothesis's "make this span trivial" attempt for each step of the state machine, in order."""
+    from hypothesis.stateful import STATE_MACHINE_RUN_LABEL
+
+    class At:  # the chooser the attempt asks which span to try
+        def __init__(self, index: int) -> None:
+            self.index = index
+
+        def choose(self, values: Any, condition: Any = None) -> int:
+            return self.index
+
+    index = 0
+    while index < len(shrinker.spans):
+        if shrinker.spans[index].label == STATE_MACHINE_RUN_LABEL:
+            shrinker.try_trivial_spans(At(index))
+        index += 1
 
 
 class Violation(AssertionError):
