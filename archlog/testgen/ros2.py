@@ -100,7 +100,7 @@ class Ros2Session:
         self.model, self.rclpy, self.classes = model, rclpy, classes
         self.tmp = Path(tempfile.mkdtemp(prefix="archlog-testgen-"))
         self.events: queue.Queue = queue.Queue()
-        self.procs: list[subprocess.Popen] = []
+        self.procs: dict[str, subprocess.Popen] = {}  # node under test -> its process
         self.launched_params: dict[str, Any] | None = None
         self.launches = 0
         self.domain = 1 + os.getpid() % 100  # a domain of its own (ROS_DOMAIN_ID 1-101)
@@ -149,12 +149,13 @@ class Ros2Session:
         self.launches += 1
         self.launched_params = params
         with open(self.log, "ab") as out:
-            self.procs = [subprocess.Popen(run_command(node, params), env=self.env, stdout=out, stderr=subprocess.STDOUT,
-                                           stdin=subprocess.DEVNULL, start_new_session=True)
-                          for node in self.model["commands"]]
+            self.procs = {node["name"]: subprocess.Popen(run_command(node, params), env=self.env, stdout=out,
+                                                         stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                                         start_new_session=True)
+                          for node in self.model["commands"]}
         deadline = time.monotonic() + timeout
         while not all(self.node_alive(n) for n in self.model["nodes"]):
-            if any(p.poll() is not None for p in self.procs):
+            if any(p.poll() is not None for p in self.procs.values()):
                 return  # a node died starting: the properties say so
             if time.monotonic() > deadline:
                 raise RuntimeError(f"the nodes under test did not come up:\n{processes.tail(self.log)}")
@@ -162,15 +163,16 @@ class Ros2Session:
         self.send({"op": "wait", "timeout": 5.0})
 
     def stop_nodes(self) -> None:
-        for proc in self.procs:
+        for proc in self.procs.values():
             with contextlib.suppress(ProcessLookupError):
                 os.killpg(proc.pid, signal.SIGKILL)
             proc.wait()
-        self.procs = []
+        self.procs = {}
 
     def node_alive(self, node: str) -> bool:
         """The node is in the graph and its process runs."""
-        return all(p.poll() is None for p in self.procs) and node in self._names()
+        proc = self.procs.get(node)
+        return proc is not None and proc.poll() is None and node in self._names()
 
     def _names(self) -> dict[str, tuple[str, str]]:
         return {(ns.rstrip("/") + "/" + name): (name, ns) for name, ns in self.node.get_node_names_and_namespaces()}
