@@ -35,6 +35,7 @@ from hypothesis import note
 from hypothesis import strategies as st
 from hypothesis.errors import InvalidArgument
 from hypothesis.stateful import RuleBasedStateMachine, initialize, invariant, precondition, rule
+from hypothesis.strategies._internal.featureflags import FeatureFlags
 
 from archlog import observe
 from archlog.testgen import processes
@@ -337,6 +338,10 @@ class ArchitectureMachine(RuleBasedStateMachine):
 
     def __init__(self) -> None:
         super().__init__()
+        # Every rule in every example (no swarm testing, which turns some rules off per example): a step
+        # of a failing example can then always become a `drop` while shrinking, not only once the rule
+        # flags were shrunk open (each attempt being a run of the system).
+        self._rules_strategy.enabled_rules_strategy = st.just(FeatureFlags())  # without data: all on
         self.session = shared_session(self.model, self.new_session)
         self.strategies = Strategies(self.model["specs"], self.settings)
         self.properties = self.properties_class()
@@ -457,16 +462,17 @@ class ArchitectureMachine(RuleBasedStateMachine):
         self.last[topic] = msg  # even after a failure: what may be drawn next must not depend on timing
         if self.failure is not None:  # the example has failed: the steps left are drawn but do nothing
             return
-        self.first_sent.setdefault(topic, time.time())  # before: the answer may come back at once
+        now = time.time()  # before sending: the answer may come back at once
+        self.first_sent.setdefault(topic, now)
         self.session.send({"op": "publish", "topic": topic, "msg": msg})
-        self._act({"op": "publish", "topic": topic, "msg": msg})
+        self._act({"op": "publish", "topic": topic, "msg": msg}, now)
         self.properties.sent.append({"topic": topic, "msg": msg})
         if settle:
             time.sleep(STEP_SETTLE)
 
-    def _act(self, action: dict[str, Any]) -> None:
+    def _act(self, action: dict[str, Any], at: float | None = None) -> None:
         self.actions.append(action)
-        self.times.append(time.time())
+        self.times.append(time.time() if at is None else at)
 
     def _check(self, final: bool) -> None:
         try:
@@ -564,7 +570,12 @@ def _record(machine: ArchitectureMachine) -> None:
         _check_requires(machine, received)
         hook: Callable[[Event], None] | None = getattr(machine.properties, hook_name(received.topic), None)
         if hook is not None:
-            hook(received)
+            try:
+                hook(received)
+            except Violation:
+                raise
+            except AssertionError as exc:  # about a message received at a known moment
+                raise Violation(str(exc), received.time) from exc
 
 
 def check_log(settings: Settings, event: dict[str, Any]) -> None:
@@ -574,7 +585,7 @@ def check_log(settings: Settings, event: dict[str, Any]) -> None:
     text = event["text"]
     if settings.properties["callbacks"] and "Traceback (most recent call last)" in text:
         last = text.strip().splitlines()[-1]
-        raise AssertionError(f"{event['node']} raised in a callback: {last}")
+        raise Violation(f"{event['node']} raised in a callback: {last}", event["t"])
 
 
 def _check_requires(machine: ArchitectureMachine, event: Event) -> None:

@@ -15,8 +15,8 @@ lines on stdin:
 
 and writes JSON lines on stdout: {"ev": "msg", "topic": T, "t": wall time, "msg": {...}} for every
 message received on an output ({"ev": "error", ...} for a message that could not be published), and
-{"ev": "log", "node": N, "t": wall time, "text": ...} for every ERROR or FATAL a node under test logs
-to /rosout.
+{"ev": "log", "node": N, "t": when it was logged, "text": ...} for every ERROR or FATAL a node under
+test logs to /rosout.
 Stops when stdin closes.
 """
 
@@ -100,7 +100,7 @@ def main(spec_path):
         {"ev": "msg", "topic": t, "t": time.time(), "msg": to_json(m)}), queue_size=100) for t in spec["outputs"]]
     nodes = set(spec["nodes"])
     rosout = rospy.Subscriber("/rosout", Log, lambda m: m.level >= Log.ERROR and m.name in nodes and emit(
-        {"ev": "log", "node": m.name, "t": time.time(), "text": m.msg}), queue_size=100)
+        {"ev": "log", "node": m.name, "t": m.header.stamp.to_sec() or time.time(), "text": m.msg}), queue_size=100)
     master = rosgraph.Master(rospy.get_name())
     for line in sys.stdin:
         command = json.loads(line)
