@@ -262,7 +262,7 @@ def _ros(test):
     return test
 
 
-BUDGET = {"examples": 12, "steps": 5, "shrink_seconds": 10}  # for a buggy system; a fixed twin runs 2 examples
+BUDGET = {"examples": 12, "steps": 5, "shrink_seconds": 8}  # for a buggy system; a fixed twin runs 2 examples
 REPLAYED = "zero_division"  # its replay file is run again with `archlog replay` (roscpp: quick to start)
 
 

@@ -28,7 +28,7 @@ import os
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, settings
+from hypothesis import HealthCheck, Phase, settings
 from hypothesis.stateful import rule
 {imports}
 from archlog.testgen.runtime import bounded_shrinking, close_sessions, load_properties
@@ -59,6 +59,7 @@ FOOTER = '''
 {cls}.TestCase.settings = settings(
     max_examples=int(os.environ.get("ARCHLOG_TESTGEN_EXAMPLES", "{examples}")),
     stateful_step_count=int(os.environ.get("ARCHLOG_TESTGEN_STEPS", SETTINGS.max_messages)), deadline=None, database=None,
+    phases=[phase for phase in Phase if phase is not Phase.explain],  # explaining runs the system again and again
     suppress_health_check=list(HealthCheck))
 Test{cls} = {cls}.TestCase
 
