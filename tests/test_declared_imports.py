@@ -25,7 +25,8 @@ DEBIAN_PYTHON = {
     "tests/support/roslaunch_oracle.py",
     "tests/support/topic_monitor.py",
 }
-LOCAL = {"archlog", "support", "conftest", "python_bench", "scale_bench"}  # this repository's own modules
+LOCAL = {"archlog", "support", "conftest", "python_bench", "scale_bench",  # this repository's own modules
+         "rosidl_standin"}  # tests/support/ros2_standin: a stand-in for ROS 2's Python API
 
 
 def _normal(dist: str) -> str:

@@ -4,6 +4,8 @@ planted defect is found and shrunk to at most 3 input messages, each fixed twin 
 
 from __future__ import annotations
 
+import importlib.util
+import json
 import math
 import subprocess
 import sys
@@ -14,11 +16,13 @@ import pytest
 from conftest import finding_keys, requires_ros, run_case
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from support.testgen_corpus import CORPUS, Outcome, prepare, run_generated, systems
+from support.testgen_corpus import CORPUS, ROOT, Outcome, prepare, run_generated, systems
 
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.workspace.index import Workspace
 from archlog.testgen.msgspec import message_specs, parse_msg
+from archlog.testgen.ros2 import Ros2Machine, Ros2Session, message_class, run_command, to_json, to_message
+from archlog.testgen.runtime import check_log
 from archlog.testgen.settings import SettingsError, load_settings
 from archlog.testgen.strategies import INTS, Strategies
 
@@ -105,6 +109,20 @@ def test_unknown_setting_names_its_line(tmp_path: Path) -> None:
         load_settings(path)
 
 
+def test_an_exception_logged_by_a_callback_fails_unless_switched_off(tmp_path: Path) -> None:
+    """rospy's "bad callback" ERROR (with its traceback) fails the callbacks property; an ERROR
+    without a traceback does not; `callbacks = false` in the settings turns the property off."""
+    text = ("bad callback: <bound method Monitor.on_voltage>\nTraceback (most recent call last):\n"
+            '  File "monitor.py", line 16, in on_voltage\nValueError: cannot convert float NaN to integer\n')
+    event = {"ev": "log", "node": "/battery_monitor", "t": 0.0, "text": text}
+    with pytest.raises(AssertionError, match="/battery_monitor raised in a callback: ValueError: cannot convert"):
+        check_log(load_settings(None), event)
+    check_log(load_settings(None), {**event, "text": "battery voltage out of range"})
+    path = tmp_path / "t.toml"
+    path.write_text("[properties]\ncallbacks = false\n")
+    check_log(load_settings(path), event)
+
+
 def test_generation_keeps_the_users_properties(tmp_path: Path) -> None:
     variant = CORPUS / "nan_command" / "buggy"
     command = [sys.executable, "-m", "archlog", "testgen", str(variant), "--launch", "base_safety/launch/limiter.launch",
@@ -132,6 +150,110 @@ def test_static_rules_cannot_tell_the_twins_apart(system: Path) -> None:
     assert keys[0] == keys[1]
 
 
+# -- ROS 2: the generated module against a stand-in of rclpy and rosidl's message classes ----------
+
+ROS2_SYSTEM = ROOT / "corpus" / "ros2" / "yaml_remap_near_miss" / "clean"
+STANDIN = Path(__file__).resolve().parent / "support" / "ros2_standin"
+
+
+@pytest.fixture
+def ros2_module(tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
+    """The test generated for the ROS 2 velocity smoother in isolation, imported with the stand-in."""
+    subprocess.run([sys.executable, "-m", "archlog", "testgen", str(ROS2_SYSTEM), "--launch",
+                    "teleop/launch/teleop.launch.yaml", "--nodes", "/robot1/smoother", "--output", str(tmp_path)],
+                   check=True, capture_output=True, text=True)
+    monkeypatch.syspath_prepend(str(STANDIN))
+    for name in [m for m in sys.modules if m.split(".")[0] in ("rclpy", "geometry_msgs", "std_msgs", "builtin_interfaces")]:
+        monkeypatch.delitem(sys.modules, name)
+    spec = importlib.util.spec_from_file_location("test_teleop_generated", tmp_path / "test_teleop.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_ros2_module_uses_rclpy_and_the_ros2_message_classes(ros2_module) -> None:
+    machine = ros2_module.TeleopMachine
+    assert issubclass(machine, Ros2Machine) and machine.rclpy is sys.modules["rclpy"]
+    twist = sys.modules["geometry_msgs.msg"].Twist
+    assert machine.classes == {"geometry_msgs/msg/Twist": twist}
+    assert hasattr(machine, "publish_robot1_cmd_vel")
+    assert ros2_module.MODEL["inputs"] == {"/robot1/cmd_vel": "geometry_msgs/msg/Twist"}
+    assert ros2_module.MODEL["outputs"] == {"/robot1/cmd_vel_smoothed": "geometry_msgs/msg/Twist"}
+    command = run_command(ros2_module.MODEL["commands"][0], {"/robot1/smoother/max_step": 0.5})
+    assert command == ["ros2", "run", "teleop", "velocity_smoother", "--ros-args", "-r", "__node:=smoother",
+                       "-r", "__ns:=/robot1", "-r", "/robot1/cmd_vel_in:=/robot1/cmd_vel",
+                       "-r", "/robot1/cmd_vel_out:=/robot1/cmd_vel_smoothed", "-p", "max_step:=0.5"]
+
+
+def test_ros2_strategies_draw_what_the_message_classes_accept(ros2_module) -> None:
+    """Every drawn Twist becomes a message the rosidl-style setters accept, and reads back the same;
+    the session publishes it with the stand-in's rclpy."""
+    session = Ros2Session(ros2_module.MODEL, ros2_module.rclpy, ros2_module.TeleopMachine.classes)
+    session.start()
+    twist = ros2_module.TeleopMachine.classes["geometry_msgs/msg/Twist"]
+    drawn: list[dict] = []
+
+    @settings(max_examples=50, deadline=None)
+    @given(ros2_module.STRATEGIES.message("geometry_msgs/msg/Twist"))
+    def check(msg: dict) -> None:
+        sent = to_message(msg, twist, now=100.0)
+        assert isinstance(sent, twist) and json.dumps(to_json(sent), sort_keys=True) == json.dumps(msg, sort_keys=True)
+        session.send({"op": "publish", "topic": "/robot1/cmd_vel", "msg": msg})
+        drawn.append(msg)
+
+    try:
+        check()
+    finally:
+        session.close()
+    assert session.events.empty()  # no value was refused
+    assert len(session.publishers["/robot1/cmd_vel"].published) == len(drawn) == 50
+
+
+def test_ros2_syntax_bounds_and_defaults() -> None:
+    """ROS 2 .msg syntax: bounded strings and arrays are drawn within their bound, a default value
+    after the name is read as a field, nested and time types get ROS 2 names."""
+    sink = DiagnosticSink()
+    spec = parse_msg("string<=3 name\nint32[<=2] ids\nfloat64 speed 0.5\ntime at\nPoint target\n", "nav",
+                     "nav/msg/Goal.msg", sink, ros2=True)
+    assert sink.items == []
+    assert spec["fields"] == [["name", "string", None], ["ids", "int32", -1], ["speed", "float64", None],
+                              ["at", "builtin_interfaces/msg/Time", None], ["target", "nav/msg/Point", None]]
+    assert spec["bounds"] == {"name": 3, "ids": 2}
+    specs = {"nav/msg/Goal": {**spec, "fields": spec["fields"][:3]}}
+
+    @settings(max_examples=50, deadline=None)
+    @given(Strategies(specs, load_settings(None)).message("nav/msg/Goal"))
+    def check(goal: dict) -> None:
+        assert len(goal["name"]) <= 3 and len(goal["ids"]) <= 2
+
+    check()
+
+
+def test_ros2_specs_and_header_stamps() -> None:
+    """ROS 2 names: nested types as pkg/msg/Name, Header without seq, a stamp near the moment of sending."""
+    specs = message_specs(Workspace([ROS2_SYSTEM], DiagnosticSink()),
+                          {"geometry_msgs/msg/PoseWithCovarianceStamped": ("test", 1)}, DiagnosticSink())
+    assert specs["std_msgs/msg/Header"]["fields"] == [["stamp", "builtin_interfaces/msg/Time", None],
+                                                    ["frame_id", "string", None]]
+    assert ["covariance", "float64", 36] in specs["geometry_msgs/msg/PoseWithCovariance"]["fields"]
+    sys.path.insert(0, str(STANDIN))
+    try:
+        stamped = message_class("geometry_msgs/msg/PoseWithCovarianceStamped")  # the stand-in's
+
+        @settings(max_examples=30, deadline=None)
+        @given(Strategies(specs, load_settings(None)).message("geometry_msgs/msg/PoseWithCovarianceStamped"))
+        def check(msg: dict) -> None:
+            built = to_message(msg, stamped, now=1000.0)
+            assert 999 <= built.header.stamp.sec <= 1000 and len(built.pose.covariance) == 36
+
+        check()
+    finally:
+        sys.path.remove(str(STANDIN))
+        for name in [m for m in sys.modules if m.split(".")[0] in ("geometry_msgs", "std_msgs", "builtin_interfaces")]:
+            del sys.modules[name]
+
+
 # -- the generated tests against the running corpus systems (Debian's ROS 1) -------------------
 
 def _ros(test):
@@ -140,7 +262,7 @@ def _ros(test):
     return test
 
 
-BUDGET = {"examples": 12, "steps": 5, "shrink_seconds": 10}  # for a buggy system; a fixed twin runs 2 examples
+BUDGET = {"examples": 12, "steps": 5, "shrink_seconds": 8}  # for a buggy system; a fixed twin runs 2 examples
 REPLAYED = "zero_division"  # its replay file is run again with `archlog replay` (roscpp: quick to start)
 
 

@@ -1,6 +1,8 @@
 """Write the generated test for a test model: `test_NAME.py` (regenerated every time: the model,
 the settings and one `publish_<topic>` rule per open input; it imports its runtime from
-archlog.testgen) and `NAME_properties.py` (the user's properties, written only when absent)."""
+archlog.testgen) and `NAME_properties.py` (the user's properties, written only when absent).
+A ROS 2 configuration's module imports rclpy (skipped without it) and the message classes of its
+inputs and outputs from their ROS 2 packages, and extends ros2.Ros2Machine."""
 
 from __future__ import annotations
 
@@ -18,7 +20,7 @@ Do not edit: regenerating overwrites this file. Write properties in {properties}
 (fields, parameters, switches) go in the settings file given to `archlog testgen --settings`.
 Run with pytest; ARCHLOG_TESTGEN_EXAMPLES sets the number of examples (default {examples}),
 ARCHLOG_TESTGEN_STEPS the steps per example, ARCHLOG_TESTGEN_SHRINK_SECONDS the time spent shrinking
-a failure (default 300). Each example starts the nodes under test afresh on a private master
+a failure (default 300). Each example starts the nodes under test afresh on a private {private}
 (about 1-3 s an example) unless reuse is set.
 """
 
@@ -26,10 +28,10 @@ import os
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, settings
+from hypothesis import HealthCheck, Phase, settings
 from hypothesis.stateful import rule
-
-from archlog.testgen.runtime import ArchitectureMachine, close_sessions, load_properties
+{imports}
+from archlog.testgen.runtime import bounded_shrinking, close_sessions, load_properties
 from archlog.testgen.settings import Settings
 from archlog.testgen.strategies import Strategies
 
@@ -39,11 +41,11 @@ SETTINGS = Settings.from_dict({settings})
 STRATEGIES = Strategies(MODEL["specs"], SETTINGS)
 
 
-class {cls}(ArchitectureMachine):
+class {cls}({base}):
     model = MODEL
     settings = SETTINGS
     properties_class = load_properties(HERE / "{properties}")
-    replay_path = HERE / "replay" / "{name}.json"
+    replay_path = HERE / "replay" / "{name}.json"{classes}
 '''
 
 RULE = '''
@@ -57,13 +59,15 @@ FOOTER = '''
 {cls}.TestCase.settings = settings(
     max_examples=int(os.environ.get("ARCHLOG_TESTGEN_EXAMPLES", "{examples}")),
     stateful_step_count=int(os.environ.get("ARCHLOG_TESTGEN_STEPS", SETTINGS.max_messages)), deadline=None, database=None,
+    phases=[phase for phase in Phase if phase is not Phase.explain],  # explaining runs the system again and again
     suppress_health_check=list(HealthCheck))
 Test{cls} = {cls}.TestCase
 
 
 @pytest.fixture(scope="module", autouse=True)
-def _stop_the_system():
-    yield
+def _run_the_system():
+    with bounded_shrinking():
+        yield
     close_sessions()
 '''
 
@@ -81,6 +85,15 @@ class Properties(Generated):
         """Assert here what must hold after every step (self.history holds what was seen)."""
 '''
 
+ROS1_IMPORTS = """
+from archlog.testgen.runtime import ArchitectureMachine"""
+ROS2_IMPORTS = """
+rclpy = pytest.importorskip("rclpy", reason="a ROS 2 test: source ROS 2's setup first")
+import rclpy.context  # noqa: E402
+import rclpy.executors  # noqa: E402
+{modules}
+from archlog.testgen.ros2 import Ros2Machine"""
+
 HOOK = '''    def {hook}(self, event: Event) -> None:
         """{topic} ({type})"""
 
@@ -95,9 +108,17 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     what = f"{', '.join(model['nodes'])} ({'in isolation' if model['isolated'] else ', '.join(model['launch'])})"
     what = what.replace('"', "'").replace("\\", "/")
     properties = f"{name}_properties.py"
+    ros2 = model.get("ros") == 2
+    types = sorted({*model["inputs"].values(), *model["outputs"].values()})
+    modules = sorted({t.split("/")[0] for t in types})
+    imports = ROS2_IMPORTS.format(modules="\n".join(f"import {m}.msg  # noqa: E402" for m in modules)) if ros2 \
+        else ROS1_IMPORTS
+    classes = ", ".join(f'"{t}": {t.replace("/", ".")}' for t in types)
+    classes = f"\n    rclpy = rclpy\n    classes = {{{classes}}}" if ros2 else ""
     text = HEADER.format(what=what, properties=properties, model=pformat(model, width=110),
                          settings=pformat(settings.to_dict(), width=110), cls=cls, name=name,
-                         examples=examples)
+                         examples=examples, imports=imports, base="Ros2Machine" if ros2 else "ArchitectureMachine",
+                         classes=classes, private="DDS domain" if ros2 else "master")
     for topic, type_ in model["inputs"].items():
         if not model["specs"].get(type_, {}).get("missing"):
             text += RULE.format(type=type_, ident=hook_name(topic).removeprefix("on_"), topic=topic)

@@ -2,7 +2,9 @@
 the nodes under test, their open inputs and outputs with types, the recovered interface, the
 periodic outputs and the inputs each output requires, the parameters the nodes read, and the
 message definitions of the inputs' types (outputs are recorded by the bridge with the installed
-message classes)."""
+message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
+also holds how to start each node under test (package, executable, remaps, the configuration's
+parameters), as a ROS 2 test starts them with `ros2 run`."""
 
 from __future__ import annotations
 
@@ -12,6 +14,7 @@ from typing import Any
 import clingo
 
 from archlog.analysis import Analysis, resolve_launch
+from archlog.facts.store import FactStore
 from archlog.observe import Architecture, from_facts
 from archlog.reports.behavior import behavior_model
 from archlog.testgen.msgspec import message_specs
@@ -52,7 +55,10 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     periodic, requires = _behavior(analysis, ctl, chosen, outputs, inputs)
     params = {str(name): (None if isinstance(default, Unknown) else str(default))
               for _p, n, name, default in store.rows("param_read") if str(n) in chosen and not isinstance(name, Unknown)}
+    ros = 2 if any("/msg/" in ty for ty in (*inputs.values(), *outputs.values())) else 1
     return {
+        "ros": ros,
+        "commands": _commands(store, chosen) if ros == 2 else [],
         "paths": [str(p.resolve()) for p in paths],
         "launch": [str(resolve_launch(spec, analysis.workspace).resolve()) for spec in launches],
         "args": dict(args),
@@ -66,6 +72,20 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
         "params": dict(sorted(params.items())),
         "specs": message_specs(analysis.workspace, where, analysis.diagnostics),
     }
+
+
+def _commands(store: FactStore, chosen: list[str]) -> list[dict[str, Any]]:
+    """How to start each node under test: package, executable, remaps and the configuration's
+    parameters of the node (resolved names; those with unknown parts left out)."""
+    known = (str, int, float)
+    remaps: dict[str, list[list[str]]] = {}
+    for _e, node, source, target in store.rows("remap"):
+        if isinstance(source, str) and isinstance(target, str):
+            remaps.setdefault(str(node), []).append([source, target])
+    params = [(name, value) for name, value, _e in store.rows("param") if isinstance(name, str) and isinstance(value, known)]
+    return [{"name": str(node), "pkg": str(pkg), "exe": str(exe), "remaps": remaps.get(str(node), []),
+             "params": {name: str(value) for name, value in params if name.startswith(f"{node}/")}}
+            for node, pkg, exe, _e in store.rows("node") if str(node) in chosen]
 
 
 def _behavior(analysis: Analysis, ctl: clingo.Control, chosen: list[str], outputs: dict[str, str],

@@ -1,7 +1,13 @@
-"""ROS 1 message definitions (.msg) as plain data for strategies: fields with their base type and
-array shape, and constants. Definitions come from archlog's message index (the workspace's
-packages and the installed share dirs); a line that does not parse is a diagnostic with its file
-and line, and its field is left out."""
+"""Message definitions (.msg) as plain data for strategies: fields with their base type and array
+shape, and constants. Definitions come from archlog's message index (the workspace's packages and
+the installed share dirs); a line that does not parse is a diagnostic with its file and line, and
+its field is left out.
+
+ROS 2 types are named `pkg/msg/Name` and looked up as `pkg/Name` (the installed share dirs may be
+ROS 1's: the common definitions are the same). Their nested types are named the ROS 2 way,
+`time`/`duration` are builtin_interfaces' Time/Duration, a Header has no `seq`, and the ROS 2
+syntax is read: bounded strings and arrays (`string<=N`, `T[<=N]`, their bound kept in "bounds")
+and default values after the field name."""
 
 from __future__ import annotations
 
@@ -14,11 +20,16 @@ from archlog.extract.workspace.messages import message_files
 
 BUILTIN = ("bool", "byte", "char", "int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uint64",
            "float32", "float64", "string", "time", "duration")
-_FIELD = re.compile(r"^(?P<type>[A-Za-z][\w/]*)(?P<array>\[(?P<size>\d*)\])?\s+(?P<name>[A-Za-z]\w*)"
-                    r"(?:\s*=\s*(?P<value>.*))?$")
+_FIELD = re.compile(r"^(?P<type>[A-Za-z][\w/]*)(?:<=(?P<strbound>\d+))?"
+                    r"(?P<array>\[(?P<bounded><=)?(?P<size>\d*)\])?\s+(?P<name>[A-Za-z]\w*)"
+                    r"(?:\s*=\s*(?P<value>.*)|\s+(?P<default>\S.*))?$")
+ROS2_TIME = {"fields": [["sec", "int32", None], ["nanosec", "uint32", None]], "constants": {}}
+ROS2_BUILTIN = {"builtin_interfaces/msg/Time": ROS2_TIME, "builtin_interfaces/msg/Duration": ROS2_TIME,
+                "std_msgs/msg/Header": {"fields": [["stamp", "builtin_interfaces/msg/Time", None],
+                                                   ["frame_id", "string", None]], "constants": {}}}
 
 # type -> {"fields": [[name, base type, array size (None: scalar, -1: variable)]],
-#          "constants": {name: [base type, value]}}
+#          "constants": {name: [base type, value]}, "bounds": {name: longest string or array} (if any)}
 Specs = dict[str, dict]
 
 
@@ -32,7 +43,10 @@ def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagn
         name, where = todo.pop()
         if name in specs or name in BUILTIN:
             continue
-        kind_path = files.get(name)
+        if name in ROS2_BUILTIN:
+            specs[name] = ROS2_BUILTIN[name]
+            continue
+        kind_path = files.get(name.replace("/msg/", "/"))
         if kind_path is None or kind_path[0] != "msg":
             diagnostics.add(*where, "testgen-message", f"no definition found for message type {name}")
             specs[name] = {"fields": [], "constants": {}, "missing": True}
@@ -45,15 +59,17 @@ def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagn
             specs[name] = {"fields": [], "constants": {}, "missing": True}
             continue
         shown = workspace.display(path)
-        specs[name] = parse_msg(text, name.split("/")[0], shown, diagnostics)
+        specs[name] = parse_msg(text, name.split("/")[0], shown, diagnostics, ros2="/msg/" in name)
         todo += [(base, (shown, 1)) for _n, base, _a in specs[name]["fields"] if base not in BUILTIN]
     return specs
 
 
-def parse_msg(text: str, package: str, shown: str, diagnostics: DiagnosticSink) -> dict:
-    """One .msg file: fields (nested types made `pkg/Name`; `Header` is std_msgs/Header) and constants."""
+def parse_msg(text: str, package: str, shown: str, diagnostics: DiagnosticSink, ros2: bool = False) -> dict:
+    """One .msg file: fields (nested types made `pkg/Name`, or `pkg/msg/Name` for ROS 2; `Header` is
+    std_msgs') and constants."""
     fields: list[list] = []
     constants: dict[str, list] = {}
+    bounds: dict[str, int] = {}
     for number, raw in enumerate(text.splitlines(), 1):
         line = raw.split("#", 1)[0].strip() if "=" not in raw.split("#", 1)[0] else raw.strip()
         if not line:
@@ -62,21 +78,28 @@ def parse_msg(text: str, package: str, shown: str, diagnostics: DiagnosticSink) 
         if not found:
             diagnostics.add(shown, number, "testgen-message", f"not a field or constant: {line!r}", "warning")
             continue
-        base = _qualified(found["type"], package)
+        base = _qualified(found["type"], package, ros2)
         if found["value"] is not None:
             value = found["value"] if base == "string" else found["value"].split("#", 1)[0].strip()
             constants[found["name"]] = [base, _constant(base, value)]
             continue
-        size = None if not found["array"] else int(found["size"]) if found["size"] else -1
+        size = None if not found["array"] else int(found["size"]) if found["size"] and not found["bounded"] else -1
         fields.append([found["name"], base, size])
-    return {"fields": fields, "constants": constants}
+        if found["bounded"] or found["strbound"]:
+            bounds[found["name"]] = int(found["size"] if found["bounded"] else found["strbound"])
+    return {"fields": fields, "constants": constants, **({"bounds": bounds} if bounds else {})}
 
 
-def _qualified(name: str, package: str) -> str:
+def _qualified(name: str, package: str, ros2: bool = False) -> str:
+    if ros2 and name in ("time", "duration"):
+        return f"builtin_interfaces/msg/{name.capitalize()}"
     if name in BUILTIN:
         return name
     if name == "Header":
-        return "std_msgs/Header"
+        return "std_msgs/msg/Header" if ros2 else "std_msgs/Header"
+    if ros2:
+        pkg, _, short = name.rpartition("/")
+        return f"{pkg or package}/msg/{short}" if "/msg/" not in name else name
     return name if "/" in name else f"{package}/{name}"
 
 

@@ -7,7 +7,7 @@ import json
 import time
 from pathlib import Path
 
-from archlog.testgen.runtime import ArchitectureMachine, close_sessions, run
+from archlog.testgen.runtime import ArchitectureMachine, close_sessions
 from archlog.testgen.settings import Settings
 
 
@@ -24,8 +24,7 @@ def replay_file(path: Path) -> bool:
     try:
         for action in data["actions"]:
             if action["op"] == "params":
-                run(machine.session, action["params"], reuse=False)
-                machine.started = time.time()
+                machine.start(action["params"])
             elif action["op"] == "publish":
                 machine._send(action["topic"], action["msg"])
             elif action["op"] == "spin":

@@ -26,29 +26,72 @@ import tempfile
 import threading
 import time
 import xmlrpc.client
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 from hypothesis import note
 from hypothesis import strategies as st
 from hypothesis.errors import InvalidArgument
 from hypothesis.stateful import RuleBasedStateMachine, initialize, invariant, precondition, rule
+from hypothesis.strategies._internal.featureflags import FeatureFlags
 
 from archlog import observe
 from archlog.testgen import processes
 from archlog.testgen.settings import Settings
-from archlog.testgen.strategies import Strategies, fill_counters, stale
-
-with contextlib.suppress(ImportError, ValueError):  # each example runs real processes: shrinking is bounded in time
-    from hypothesis.internal.conjecture import engine as _engine
-
-    _engine.MAX_SHRINKING_SECONDS = int(os.environ.get("ARCHLOG_TESTGEN_SHRINK_SECONDS", "300"))
+from archlog.testgen.strategies import Strategies, fill_counters, pick, stale
 
 DEBIAN = Path(__file__).resolve().parent / "debian"
 _POLL = 0.05
 STEP_SETTLE = 0.1  # seconds after a step's messages before the properties are checked
+
+
+@contextlib.contextmanager
+def bounded_shrinking() -> Iterator[None]:
+    """Shrinking fit for examples that each run real processes (a second or more), while a generated
+    test runs: bounded by ARCHLOG_TESTGEN_SHRINK_SECONDS (default 300), and starting with the steps.
+    Hypothesis's coarse first pass tries to lower every rule choice of the example with up to three
+    re-randomised runs each, and its next pass makes every part of the example trivial in turn (a
+    needed step's every field too); with a run of the system per attempt that used the whole budget
+    before the last steps were reached. The first pass here makes each step trivial (a `drop`), first
+    to last, one attempt each (two when the step's shape changes); the usual passes follow."""
+    from hypothesis.internal.conjecture import engine, shrinker
+
+    saved = engine.MAX_SHRINKING_SECONDS, shrinker.Shrinker.initial_coarse_reduction
+    engine.MAX_SHRINKING_SECONDS = int(os.environ.get("ARCHLOG_TESTGEN_SHRINK_SECONDS", "300"))
+    shrinker.Shrinker.initial_coarse_reduction = _trivial_steps  # type: ignore[method-assign]
+    try:
+        yield
+    finally:
+        engine.MAX_SHRINKING_SECONDS, shrinker.Shrinker.initial_coarse_reduction = saved  # type: ignore[method-assign]
+
+
+def _trivial_steps(shrinker: Any) -> None:
+    """Hypothesis's "make this span trivial" attempt for each step of the state machine, in order."""
+    from hypothesis.stateful import STATE_MACHINE_RUN_LABEL
+
+    class At:  # the chooser the attempt asks which span to try
+        def __init__(self, index: int) -> None:
+            self.index = index
+
+        def choose(self, values: Any, condition: Any = None) -> int:
+            return self.index
+
+    index = 0
+    while index < len(shrinker.spans):
+        if shrinker.spans[index].label == STATE_MACHINE_RUN_LABEL:
+            shrinker.try_trivial_spans(At(index))
+        index += 1
+
+
+class Violation(AssertionError):
+    """A property that failed at a known moment (`since`, wall clock) before it was checked: what was
+    sent after that moment played no part in the failure."""
+
+    def __init__(self, message: str, since: float) -> None:
+        super().__init__(message)
+        self.since = since
 
 
 class StartError(RuntimeError):
@@ -99,7 +142,8 @@ class Session:
                     raise StartError(f"roscore did not start:\n{processes.tail(self.tmp / 'roscore.log')}") from None
                 time.sleep(0.1)
         spec = self.tmp / "bridge.json"
-        spec.write_text(json.dumps({"inputs": self.model["inputs"], "outputs": self.model["outputs"]}))
+        spec.write_text(json.dumps({"inputs": self.model["inputs"], "outputs": self.model["outputs"],
+                                    "nodes": self.model["nodes"]}))
         with open(self.tmp / "bridge.log", "ab") as log:
             self.bridge = subprocess.Popen([str(processes.SYSTEM_PYTHON), str(DEBIAN / "bridge.py"), str(spec)],
                                            env=self.env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=log,
@@ -209,14 +253,33 @@ class Session:
                                                           for kind in ("publishers", "subscribers", "services")))
 
 
-_SESSIONS: dict[str, Session] = {}
+class System(Protocol):
+    """What the state machine drives: a `Session` (ROS 1) or a ros2.Ros2Session."""
+
+    model: dict[str, Any]
+    events: queue.Queue
+    launches: int
+    launched_params: dict[str, Any] | None
+
+    @property
+    def log(self) -> Path: ...
+    def start(self) -> None: ...
+    def send(self, command: dict[str, Any]) -> None: ...
+    def launch(self, params: dict[str, Any]) -> None: ...
+    def stop_nodes(self) -> None: ...
+    def node_alive(self, node: str) -> bool: ...
+    def graph(self) -> observe.Architecture: ...
+    def close(self) -> None: ...
 
 
-def shared_session(model: dict[str, Any]) -> Session:
-    """The session of this model for the whole run (started on first use, closed at exit)."""
+_SESSIONS: dict[str, System] = {}
+
+
+def shared_session(model: dict[str, Any], create: Callable[[], System]) -> System:
+    """The session of this model for the whole run (created and started on first use, closed at exit)."""
     key = json.dumps(model, sort_keys=True)
     if key not in _SESSIONS:
-        session = Session(model)
+        session = create()
         _SESSIONS[key] = session
         atexit.register(session.close)
         session.start()
@@ -275,10 +338,15 @@ class ArchitectureMachine(RuleBasedStateMachine):
 
     def __init__(self) -> None:
         super().__init__()
-        self.session = shared_session(self.model)
+        # Every rule in every example (no swarm testing, which turns some rules off per example): a step
+        # of a failing example can then always become a `drop` while shrinking, not only once the rule
+        # flags were shrunk open (each attempt being a run of the system).
+        self._rules_strategy.enabled_rules_strategy = st.just(FeatureFlags())  # without data: all on
+        self.session = shared_session(self.model, self.new_session)
         self.strategies = Strategies(self.model["specs"], self.settings)
         self.properties = self.properties_class()
         self.actions: list[dict[str, Any]] = []
+        self.times: list[float] = []  # when each action was taken
         self.counters: dict[str, int] = {}
         self.last: dict[str, dict[str, Any]] = {}
         self.first_sent: dict[str, float] = {}
@@ -286,13 +354,20 @@ class ArchitectureMachine(RuleBasedStateMachine):
         self.failure: str | None = None
         self.periodic: dict[str, float] = {}  # the periodic outputs seen at their period after launch
 
+    def new_session(self) -> System:
+        return Session(self.model)
+
     # -- set-up -------------------------------------------------------------------------
 
     @initialize(data=st.data())
     def launch(self, data: st.DataObject) -> None:
         params = {name: data.draw(param_strategy(options, self.model["params"].get(name)), label=name)
                   for name, options in sorted(self.settings.params.items())}
-        self.actions.append({"op": "params", "params": params})
+        self.start(params)
+
+    def start(self, params: dict[str, Any]) -> None:
+        """Launch the nodes under test with `params` and see which periodic outputs show their period."""
+        self._act({"op": "params", "params": params})
         run(self.session, params, self.settings.reuse)
         self.started = time.time()
         if self.settings.properties["periodic"]:
@@ -312,23 +387,23 @@ class ArchitectureMachine(RuleBasedStateMachine):
     def drop(self, data: st.DataObject) -> None:
         """Lose the next message of a topic: the topic's sequence skips one (what the lost message held
         cannot matter, so it is not drawn)."""
-        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        topic = data.draw(pick(sorted(self.model["inputs"])), label="topic")
         seq = self._next(topic)
         if self.failure is None:
-            self.actions.append({"op": "drop", "topic": topic, "seq": seq})
+            self._act({"op": "drop", "topic": topic, "seq": seq})
 
     @precondition(lambda self: bool(self.last))
     @rule(data=st.data())
     def resend(self, data: st.DataObject) -> None:
         """Send the last message of a topic again, unchanged (a duplicate)."""
-        topic = data.draw(st.sampled_from(sorted(self.last)), label="topic")
+        topic = data.draw(pick(sorted(self.last)), label="topic")
         self._send(topic, self.last[topic])
 
     @precondition(lambda self: bool(self.model["inputs"]))
     @rule(data=st.data())
     def reorder(self, data: st.DataObject) -> None:
         """Draw the next two messages of a topic and send them in swapped order."""
-        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        topic = data.draw(pick(sorted(self.model["inputs"])), label="topic")
         strategy = self.strategies.message(self.model["inputs"][topic])
         first, second = (fill_counters(data.draw(strategy, label=n), self._next(topic)) for n in ("first", "second"))
         self._send(topic, second, settle=False)
@@ -338,7 +413,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
     @rule(data=st.data(), count=st.integers(2, 3))
     def burst(self, data: st.DataObject, count: int) -> None:
         """Send `count` messages of a topic back to back."""
-        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        topic = data.draw(pick(sorted(self.model["inputs"])), label="topic")
         msg = data.draw(self.strategies.message(self.model["inputs"][topic]), label="msg")
         for n in range(count):
             self._send(topic, fill_counters(msg, self._next(topic)), settle=n == count - 1)
@@ -347,7 +422,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
     @rule(data=st.data(), age=st.floats(1.0, 3600.0))
     def send_stale(self, data: st.DataObject, age: float) -> None:
         """Send the next message of a topic with its Header stamps `age` seconds in the past."""
-        topic = data.draw(st.sampled_from(sorted(self.model["inputs"])), label="topic")
+        topic = data.draw(pick(sorted(self.model["inputs"])), label="topic")
         msg = data.draw(self.strategies.message(self.model["inputs"][topic]), label="msg")
         self._send(topic, stale(fill_counters(msg, self._next(topic)), age))
 
@@ -355,7 +430,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
     def spin(self, seconds: float) -> None:
         """Let the system run (a delay between messages)."""
         if self.failure is None:
-            self.actions.append({"op": "spin", "seconds": seconds})
+            self._act({"op": "spin", "seconds": seconds})
             time.sleep(seconds)
 
     @invariant()
@@ -387,16 +462,25 @@ class ArchitectureMachine(RuleBasedStateMachine):
         self.last[topic] = msg  # even after a failure: what may be drawn next must not depend on timing
         if self.failure is not None:  # the example has failed: the steps left are drawn but do nothing
             return
-        self.first_sent.setdefault(topic, time.time())  # before: the answer may come back at once
+        now = time.time()  # before sending: the answer may come back at once
+        self.first_sent.setdefault(topic, now)
         self.session.send({"op": "publish", "topic": topic, "msg": msg})
-        self.actions.append({"op": "publish", "topic": topic, "msg": msg})
+        self._act({"op": "publish", "topic": topic, "msg": msg}, now)
         self.properties.sent.append({"topic": topic, "msg": msg})
         if settle:
             time.sleep(STEP_SETTLE)
 
+    def _act(self, action: dict[str, Any], at: float | None = None) -> None:
+        self.actions.append(action)
+        self.times.append(time.time() if at is None else at)
+
     def _check(self, final: bool) -> None:
         try:
             check_properties(self, final)
+        except Violation as exc:  # the actions after the moment it failed are not part of the failure
+            kept = sum(t <= exc.since for t in self.times)
+            self.failure = f"{exc} (by step {kept}, seen after step {len(self.actions)})"
+            del self.actions[max(kept, 1):], self.times[max(kept, 1):]
         except AssertionError as exc:
             self.failure = f"{exc} (after step {len(self.actions)})"
 
@@ -414,7 +498,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
                                                     "actions": self.actions, "reason": reason}, indent=1) + "\n")
 
 
-def run(session: Session, params: dict[str, Any], reuse: bool) -> None:
+def run(session: System, params: dict[str, Any], reuse: bool) -> None:
     """Launch the nodes under test (in `reuse` mode only if they are down or their parameters changed)."""
     up = reuse and session.launches > 0 and session.launched_params == params \
         and all(session.node_alive(n) for n in session.model["nodes"])
@@ -423,7 +507,7 @@ def run(session: Session, params: dict[str, Any], reuse: bool) -> None:
     _drain(session)
 
 
-def _drain(session: Session) -> list[dict[str, Any]]:
+def _drain(session: System) -> list[dict[str, Any]]:
     drained = []
     while True:
         try:
@@ -435,7 +519,7 @@ def _drain(session: Session) -> list[dict[str, Any]]:
 def param_strategy(options: dict[str, Any], default: str | None) -> st.SearchStrategy:
     """Values for a parameter: the listed ones, or a number between min and max typed like its default."""
     if "values" in options:
-        return st.sampled_from(options["values"])
+        return pick(options["values"])
     integer = default is not None and default.lstrip("-").isdigit()
     low, high = options.get("min"), options.get("max")
     return st.integers(low, high) if integer else st.floats(low, high, allow_nan=False)
@@ -459,9 +543,9 @@ def check_properties(machine: ArchitectureMachine, final: bool) -> None:
                 continue
             bound = settings.response_bound + model["periodic"].get(topic, 0.0)
             after = [e for e in machine.properties.history if e.topic == topic and e.time >= max(sent)]
-            if now - max(sent) >= bound:
-                assert after, f"{topic} requires {', '.join(inputs)}, which was published, but nothing came " \
-                              f"on {topic} within {bound:.1f} s"
+            if now - max(sent) >= bound and not after:
+                raise Violation(f"{topic} requires {', '.join(inputs)}, which was published, but nothing came "
+                                f"on {topic} within {bound:.1f} s", max(sent) + bound)
     if settings.properties["interface"] and final:
         want = observe.Architecture.from_json(model["interface"])
         differences = {kind: row for kind, row in observe.compare(want, session.graph()).items()
@@ -477,6 +561,8 @@ def _record(machine: ArchitectureMachine) -> None:
     for event in _drain(machine.session):
         if event["ev"] == "error":
             raise AssertionError(f"the bridge could not publish on {event['topic']}: {event['error']}")
+        if event["ev"] == "log" and event["t"] >= machine.started:
+            check_log(machine.settings, event)
         if event["ev"] != "msg" or event["t"] < machine.started:
             continue
         received = Event(event["topic"], event["t"], event["msg"])
@@ -484,7 +570,22 @@ def _record(machine: ArchitectureMachine) -> None:
         _check_requires(machine, received)
         hook: Callable[[Event], None] | None = getattr(machine.properties, hook_name(received.topic), None)
         if hook is not None:
-            hook(received)
+            try:
+                hook(received)
+            except Violation:
+                raise
+            except AssertionError as exc:  # about a message received at a known moment
+                raise Violation(str(exc), received.time) from exc
+
+
+def check_log(settings: Settings, event: dict[str, Any]) -> None:
+    """An ERROR a node under test logged with a Python traceback fails the `callbacks` property:
+    rospy caught an exception raised in one of the node's callbacks ("bad callback"), logged it to
+    /rosout, and the node lives on (no other property would see it)."""
+    text = event["text"]
+    if settings.properties["callbacks"] and "Traceback (most recent call last)" in text:
+        last = text.strip().splitlines()[-1]
+        raise Violation(f"{event['node']} raised in a callback: {last}", event["t"])
 
 
 def _check_requires(machine: ArchitectureMachine, event: Event) -> None:
@@ -526,7 +627,8 @@ def _allowed(machine: ArchitectureMachine, period: float) -> float:
 def _check_period(machine: ArchitectureMachine, topic: str, period: float, now: float) -> None:
     """A confirmed periodic output is never silent for longer than its period and tolerance."""
     times = [e.time for e in machine.properties.history if e.topic == topic] + [now]
-    worst = max(b - a for a, b in zip(times, times[1:]))
     allowed = _allowed(machine, period)
-    assert worst <= allowed or math.isclose(worst, allowed), \
-        f"{topic} is recovered as published every {period} s, was, then was silent for {worst:.2f} s"
+    for before, after in zip(times, times[1:]):
+        if after - before > allowed and not math.isclose(after - before, allowed):
+            raise Violation(f"{topic} is recovered as published every {period} s, was, then was silent for "
+                            f"{after - before:.2f} s", before + allowed)

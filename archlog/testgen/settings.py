@@ -8,13 +8,14 @@ per-parameter choices. Every key is optional; an unknown key is an error naming 
     response_bound = 2.0     # seconds within which an output follows its required input
     period_tolerance = 0.5   # a periodic output may be this fraction slower than recovered
     reuse = false            # keep the nodes up across examples (only for stateless nodes)
-    max_messages = 10        # at most this many rule steps per example
+    max_messages = 6         # at most this many rule steps per example
 
     [properties]             # the built-in properties, each on by default
     alive = true             # every node under test keeps its process and master registration
     interface = true         # the live graph of the nodes under test equals the recovered one
     periodic = true          # periodic outputs keep their recovered period
     requires = true          # an output requiring input X is silent until X, then starts in time
+    callbacks = true         # no node under test logs an exception raised in a callback (rospy)
 
     [fields."pkg/Type".field]    # one field of a message type, wherever the type is used
     min = 0                      # bounds of a number
@@ -41,7 +42,7 @@ from typing import Any
 
 TESTGEN = {"specials": bool, "max_array": int, "settle": float, "response_bound": float, "period_tolerance": float,
            "reuse": bool, "max_messages": int}
-PROPERTIES = ("alive", "interface", "periodic", "requires")
+PROPERTIES = ("alive", "interface", "periodic", "requires", "callbacks")
 FIELD_KEYS = {"min", "max", "values", "enum", "fixed", "counter", "max_size", "specials"}
 PARAM_KEYS = {"values", "min", "max"}
 
@@ -58,7 +59,7 @@ class Settings:
     response_bound: float = 2.0
     period_tolerance: float = 0.5
     reuse: bool = False
-    max_messages: int = 10
+    max_messages: int = 6  # a shrink attempt is a run of the system: fewer steps, fewer to make trivial
     properties: dict[str, bool] = field(default_factory=lambda: dict.fromkeys(PROPERTIES, True))
     fields: dict[str, dict[str, dict[str, Any]]] = field(default_factory=dict)
     params: dict[str, dict[str, Any]] = field(default_factory=dict)
@@ -68,7 +69,10 @@ class Settings:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> Settings:
-        return cls(**data)
+        """Settings written by to_dict (a property added since then is on)."""
+        settings = cls(**{k: v for k, v in data.items() if k != "properties"})
+        settings.properties.update(data.get("properties", {}))
+        return settings
 
 
 def load_settings(path: Path | None) -> Settings:

@@ -59,14 +59,15 @@ def prepare(variant: Path, work: Path) -> tuple[Path, dict]:
     return out, case
 
 
-def run_generated(out: Path, examples: int, seed: int, shrink_seconds: int = 60, steps: int = 10,
+def run_generated(out: Path, examples: int, seed: int, shrink_seconds: int = 60, steps: int | None = None,
                   timeout: float = 600) -> Outcome:
-    """Run the generated test module in `out` with pytest; the outcome and how long it took."""
+    """Run the generated test module in `out` with pytest (steps per example: the settings' max_messages
+    unless given); the outcome and how long it took."""
     (out / "replay").exists() and shutil.rmtree(out / "replay")
     stats = out / "stats.json"
     stats.unlink(missing_ok=True)
     env = dict(os.environ, ARCHLOG_TESTGEN_EXAMPLES=str(examples), ARCHLOG_TESTGEN_SHRINK_SECONDS=str(shrink_seconds),
-               ARCHLOG_TESTGEN_STATS=str(stats), ARCHLOG_TESTGEN_STEPS=str(steps))
+               ARCHLOG_TESTGEN_STATS=str(stats), **({"ARCHLOG_TESTGEN_STEPS": str(steps)} if steps else {}))
     start = time.monotonic()
     result = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-x",
                              f"--hypothesis-seed={seed}", str(out)], env=env, capture_output=True, text=True,

@@ -3,16 +3,20 @@
 
     bridge.py SPEC.json
 
-SPEC: {"inputs": {topic: type}, "outputs": {topic: type}}. Reads JSON lines on stdin:
+SPEC: {"inputs": {topic: type}, "outputs": {topic: type}, "nodes": [nodes under test]}. Reads JSON
+lines on stdin:
 
     {"op": "publish", "topic": T, "msg": {...}}   publish a message given as a dict; a
                                                    {"now": offset} time is now + offset seconds
     {"op": "wait", "timeout": S}                   answer {"ev": "ready", "missing": [...]} once every
                                                    input has a subscriber and every output a publisher
-                                                   connected (or after S seconds, naming the topics without)
+                                                   connected, and every node under test's /rosout (or after
+                                                   S seconds, naming the topics and nodes without)
 
 and writes JSON lines on stdout: {"ev": "msg", "topic": T, "t": wall time, "msg": {...}} for every
-message received on an output ({"ev": "error", ...} for a message that could not be published).
+message received on an output ({"ev": "error", ...} for a message that could not be published), and
+{"ev": "log", "node": N, "t": when it was logged, "text": ...} for every ERROR or FATAL a node under
+test logs to /rosout.
 Stops when stdin closes.
 """
 
@@ -22,8 +26,10 @@ import threading
 import time
 
 import genpy
+import rosgraph
 import roslib.message
 import rospy
+from rosgraph_msgs.msg import Log
 
 _LOCK = threading.Lock()
 _BYTES = ("uint8[", "char[")
@@ -70,6 +76,20 @@ def to_json(value):
     return value
 
 
+def unheard(master, rosout, nodes):
+    """The nodes under test whose /rosout is not connected to the bridge yet."""
+    connected = {c.endpoint_id for c in rosout.impl.connections}
+    missing = []
+    for node in sorted(nodes):
+        try:
+            uri = master.lookupNode(node)
+        except (rosgraph.MasterError, OSError):
+            uri = None
+        if uri not in connected:
+            missing.append(node)
+    return missing
+
+
 def main(spec_path):
     with open(spec_path) as f:
         spec = json.load(f)
@@ -78,6 +98,10 @@ def main(spec_path):
     publishers = {t: rospy.Publisher(t, classes[t], queue_size=100) for t in spec["inputs"]}
     subscribers = [rospy.Subscriber(t, classes[t], lambda m, t=t: emit(
         {"ev": "msg", "topic": t, "t": time.time(), "msg": to_json(m)}), queue_size=100) for t in spec["outputs"]]
+    nodes = set(spec["nodes"])
+    rosout = rospy.Subscriber("/rosout", Log, lambda m: m.level >= Log.ERROR and m.name in nodes and emit(
+        {"ev": "log", "node": m.name, "t": m.header.stamp.to_sec() or time.time(), "text": m.msg}), queue_size=100)
+    master = rosgraph.Master(rospy.get_name())
     for line in sys.stdin:
         command = json.loads(line)
         if command["op"] == "publish":
@@ -90,7 +114,8 @@ def main(spec_path):
             end = time.monotonic() + command["timeout"]
             while True:
                 missing = sorted([t for t, p in publishers.items() if p.get_num_connections() == 0]
-                                 + [s.name for s in subscribers if s.get_num_connections() == 0])
+                                 + [s.name for s in subscribers if s.get_num_connections() == 0]
+                                 + unheard(master, rosout, nodes))
                 if not missing or time.monotonic() > end:
                     break
                 time.sleep(0.02)

@@ -1,0 +1,212 @@
+"""The ROS 2 side of a generated test: the nodes under test started with `ros2 run` (their package,
+executable, name, namespace, remaps and parameters as recovered) on a private DDS domain, fed and
+watched by an rclpy node inside the test process, with the message classes the generated module
+imports. `Ros2Session` has the interface of runtime.Session, so the state machine, its steps and
+its properties are the same for ROS 1 and ROS 2.
+
+archlog never imports rclpy: the generated module does (it is skipped where ROS 2 is missing) and
+hands it to the machine with the message classes.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib
+import json
+import os
+import queue
+import shutil
+import signal
+import subprocess
+import tempfile
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+from archlog import observe
+from archlog.testgen import processes
+from archlog.testgen.runtime import ArchitectureMachine
+
+_POLL = 0.05
+
+
+def message_class(type_: str) -> type:
+    """The rosidl class of `pkg/msg/Name` (or `pkg/Name`, as get_fields_and_field_types names nested types)."""
+    package, _, name = type_.replace("/msg/", "/").partition("/")
+    return getattr(importlib.import_module(f"{package}.msg"), name)
+
+
+def to_message(value: dict[str, Any], cls: type, now: float) -> Any:
+    """An instance of the rosidl class `cls` from a drawn message (a dict); a {"now": offset} time
+    is `now` + offset seconds."""
+    msg = cls()
+    for name, kind in cls.get_fields_and_field_types().items():  # type: ignore[attr-defined]
+        if name in value:
+            setattr(msg, name, _field(value[name], kind, now))
+    return msg
+
+
+def _field(value: Any, kind: str, now: float) -> Any:
+    """A field's value for its rosidl type string ('double', 'sequence<int32, 5>', 'double[9]',
+    'octet', 'geometry_msgs/Vector3', 'string<10>', ...)."""
+    if kind.startswith("sequence<"):
+        element = kind[len("sequence<"):-1].split(",")[0].strip()
+        return [_field(v, element, now) for v in value]
+    if kind.endswith("]"):
+        return [_field(v, kind[:kind.index("[")], now) for v in value]
+    if kind == "octet":
+        return bytes([value & 0xFF])
+    if isinstance(value, dict):
+        if set(value) == {"now"}:
+            stamp = max(now + value["now"], 0.0)
+            value = {"sec": int(stamp), "nanosec": int((stamp - int(stamp)) * 1e9)}
+        return to_message(value, message_class(kind), now)
+    return value
+
+
+def to_json(value: Any) -> Any:
+    """A received message as plain data (arrays as lists, bytes as ints)."""
+    if hasattr(value, "get_fields_and_field_types"):
+        return {name: to_json(getattr(value, name)) for name in value.get_fields_and_field_types()}
+    if isinstance(value, (bytes, bytearray)):
+        return list(value)
+    if hasattr(value, "tolist"):  # array.array and numpy arrays
+        return value.tolist()
+    if isinstance(value, (list, tuple)):
+        return [to_json(v) for v in value]
+    return value
+
+
+def run_command(node: dict[str, Any], params: dict[str, Any]) -> list[str]:
+    """`ros2 run` for a node under test: its name, namespace, remaps, and parameters (the
+    configuration's, then the drawn ones, given as /node/name and set as the node's own)."""
+    namespace, _, base = node["name"].rpartition("/")
+    command = ["ros2", "run", node["pkg"], node["exe"], "--ros-args", "-r", f"__node:={base}",
+               "-r", f"__ns:={namespace or '/'}"]
+    for source, target in node["remaps"]:
+        command += ["-r", f"{source}:={target}"]
+    for name, value in {**node["params"], **params}.items():
+        if name.startswith(node["name"] + "/"):
+            command += ["-p", f"{name[len(node['name']) + 1:].replace('/', '.')}:={json.dumps(value)}"]
+    return command
+
+
+class Ros2Session:
+    """The nodes under test on a private domain, and the rclpy node that feeds and watches them.
+    Events are put on `events` as the ROS 1 bridge writes them ({"ev": "msg" | "ready" | "error"})."""
+
+    def __init__(self, model: dict[str, Any], rclpy: Any, classes: dict[str, type]) -> None:
+        self.model, self.rclpy, self.classes = model, rclpy, classes
+        self.tmp = Path(tempfile.mkdtemp(prefix="archlog-testgen-"))
+        self.events: queue.Queue = queue.Queue()
+        self.procs: dict[str, subprocess.Popen] = {}  # node under test -> its process
+        self.launched_params: dict[str, Any] | None = None
+        self.launches = 0
+        self.domain = 1 + os.getpid() % 100  # a domain of its own (ROS_DOMAIN_ID 1-101)
+        self.env = dict(os.environ, ROS_DOMAIN_ID=str(self.domain), ROS_LOCALHOST_ONLY="1", ROS_HOME=str(self.tmp),
+                        ROS_LOG_DIR=str(self.tmp / "log"), PYTHONUNBUFFERED="1")
+
+    @property
+    def log(self) -> Path:
+        return self.tmp / "launch.log"
+
+    def start(self) -> None:
+        rclpy = self.rclpy
+        self.context = rclpy.context.Context()
+        rclpy.init(context=self.context, domain_id=self.domain)
+        self.node = rclpy.create_node("archlog_testgen_bridge", context=self.context)
+        inputs, outputs = self.model["inputs"], self.model["outputs"]
+        self.publishers = {t: self.node.create_publisher(self.classes[ty], t, 100) for t, ty in inputs.items()}
+        for topic, type_ in outputs.items():
+            self.node.create_subscription(self.classes[type_], topic, lambda m, t=topic: self.events.put(
+                {"ev": "msg", "topic": t, "t": time.time(), "msg": to_json(m)}), 100)
+        self.executor = rclpy.executors.SingleThreadedExecutor(context=self.context)
+        self.executor.add_node(self.node)
+        threading.Thread(target=self.executor.spin, daemon=True).start()
+
+    def send(self, command: dict[str, Any]) -> None:
+        if command["op"] == "publish":
+            topic = command["topic"]
+            try:
+                now = self.node.get_clock().now().nanoseconds / 1e9
+                self.publishers[topic].publish(to_message(command["msg"], self.classes[self.model["inputs"][topic]], now))
+            except (AssertionError, TypeError, ValueError) as exc:  # a value the message class refuses
+                self.events.put({"ev": "error", "topic": topic, "error": f"{type(exc).__name__}: {exc}"})
+        elif command["op"] == "wait":
+            end = time.monotonic() + command["timeout"]
+            while (missing := self._unconnected()) and time.monotonic() < end:
+                time.sleep(_POLL)
+            self.events.put({"ev": "ready", "missing": missing})
+
+    def _unconnected(self) -> list[str]:
+        return sorted([t for t, p in self.publishers.items() if p.get_subscription_count() == 0]
+                      + [t for t in self.model["outputs"] if self.node.count_publishers(t) == 0])
+
+    def launch(self, params: dict[str, Any], timeout: float = 30.0) -> None:
+        """Start the nodes under test with `params`; wait until they are in the graph and connected."""
+        self.stop_nodes()
+        self.launches += 1
+        self.launched_params = params
+        with open(self.log, "ab") as out:
+            self.procs = {node["name"]: subprocess.Popen(run_command(node, params), env=self.env, stdout=out,
+                                                         stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                                         start_new_session=True)
+                          for node in self.model["commands"]}
+        deadline = time.monotonic() + timeout
+        while not all(self.node_alive(n) for n in self.model["nodes"]):
+            if any(p.poll() is not None for p in self.procs.values()):
+                return  # a node died starting: the properties say so
+            if time.monotonic() > deadline:
+                raise RuntimeError(f"the nodes under test did not come up:\n{processes.tail(self.log)}")
+            time.sleep(_POLL)
+        self.send({"op": "wait", "timeout": 5.0})
+
+    def stop_nodes(self) -> None:
+        for proc in self.procs.values():
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+        self.procs = {}
+
+    def node_alive(self, node: str) -> bool:
+        """The node is in the graph and its process runs."""
+        proc = self.procs.get(node)
+        return proc is not None and proc.poll() is None and node in self._names()
+
+    def _names(self) -> dict[str, tuple[str, str]]:
+        return {(ns.rstrip("/") + "/" + name): (name, ns) for name, ns in self.node.get_node_names_and_namespaces()}
+
+    def graph(self) -> observe.Architecture:
+        """The live graph of the nodes under test, minus ROS 2's infrastructure (/rosout,
+        /parameter_events, the parameter services)."""
+        found: dict[str, set] = {"publishers": set(), "subscribers": set(), "services": set()}
+        names = {n: v for n, v in self._names().items() if n in self.model["nodes"]}
+        for full, (name, ns) in names.items():
+            for kind, read in (("publishers", self.node.get_publisher_names_and_types_by_node),
+                               ("subscribers", self.node.get_subscriber_names_and_types_by_node)):
+                found[kind] |= {(full, t, ty) for t, types in read(name, ns) if t not in observe.ROS2_INFRA_TOPICS
+                                for ty in types}
+            parameters = {f"{full}/{x}" for x in observe.ROS2_PARAMETER_SERVICES}
+            found["services"] |= {(full, s) for s, _types in self.node.get_service_names_and_types_by_node(name, ns)
+                                  if s not in parameters}
+        return observe.Architecture(frozenset(names), *(frozenset(found[k]) for k in observe.KINDS[1:]))
+
+    def close(self) -> None:
+        self.stop_nodes()
+        if hasattr(self, "executor"):
+            self.executor.shutdown()
+            self.node.destroy_node()
+            self.context.try_shutdown()
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+
+class Ros2Machine(ArchitectureMachine):
+    """The state machine of a ROS 2 configuration; the generated module sets `rclpy` (the module) and
+    `classes` (each message type of the open inputs and outputs -> the rosidl class it imports)."""
+
+    rclpy: Any = None
+    classes: dict[str, type] = {}
+
+    def new_session(self) -> Ros2Session:
+        return Ros2Session(self.model, self.rclpy, self.classes)

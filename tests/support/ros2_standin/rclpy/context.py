@@ -1,0 +1,6 @@
+class Context:
+    def __init__(self):
+        self.domain_id = None
+
+    def try_shutdown(self):
+        self.domain_id = None
