@@ -193,6 +193,16 @@ def line_finder(text: str) -> Callable[[int], int]:
     return lambda offset: bisect.bisect_left(newlines, offset) + 1
 
 
+_COMMENT_OR_LITERAL = re.compile(r'"(?:[^"\\\n]|\\.)*"|\'(?:[^\'\\\n]|\\.)*\'|//[^\n]*|/\*.*?(?:\*/|\Z)', re.S)
+
+
+def blank_comments(text: str) -> str:
+    """`text` with its comments turned into spaces (newlines kept, so offsets and lines do not
+    move), string and character literals left as they are: a call in a comment is not code."""
+    return _COMMENT_OR_LITERAL.sub(
+        lambda m: m.group() if m.group()[0] in "\"'" else re.sub(r"[^\n]", " ", m.group()), text)
+
+
 def strip(expr: ci.Cursor) -> ci.Cursor:
     """Below implicit conversions, parentheses and temporaries to the expression as written."""
     while expr.kind in (K.UNEXPOSED_EXPR, K.PAREN_EXPR, K.CXX_FUNCTIONAL_CAST_EXPR, K.CSTYLE_CAST_EXPR,

@@ -23,6 +23,7 @@ from archlog.extract.cpp.clang_ast import (
     CursorKey,
     K,
     assignments,
+    blank_comments,
     camera_info,
     default_constructed,
     is_rvalue,
@@ -524,7 +525,7 @@ class _Walker:
     def token_fallback(self, tu: ci.TranslationUnit) -> None:
         """Read NodeHandle calls from the text of lines where the AST produced no port."""
         covered = {p.line for p in self.result.ports if p.file == self.file}
-        text = sandbox.read_text(self.source, "source")
+        text = blank_comments(sandbox.read_text(self.source, "source"))
         if self.ros2:
             ros2_fallback(self, text, covered, tu)
             return
