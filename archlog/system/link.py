@@ -173,7 +173,8 @@ def _with_transforms(summary: NodeSummary, model: NodeSummary | None, node: Laun
     if model is not None and not summary.tf_declared and not summary.tf_waits:
         marks: dict[tuple[str, str] | None, tuple[str, ...]] = \
             {key: port.after_tf for port in model.ports if port.after_tf and (key := _port_key(port))}
-        ports = [replace(port, after_tf=marks.get(_port_key(port), port.after_tf)) for port in summary.ports]
+        ports = [replace(port, after_tf=marks.get(_port_key(port), port.after_tf)) for port in summary.ports] \
+            if marks else summary.ports
         summary = replace(summary, ports=ports, transforms=model.transforms, tf_waits=model.tf_waits,
                           tf_declared=model.tf_declared, tf_description=model.tf_description, tf_args=model.tf_args)
     if not (summary.tf_description or summary.tf_args or spawns(node)):
