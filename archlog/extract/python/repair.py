@@ -71,11 +71,11 @@ def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]
         except SyntaxError as exc:
             if exc.msg in _TOO_DEEP:
                 raise NestedTooDeeply(exc.lineno or 1) from None
-            tabbed = [] if tabs_expanded else [n for n, line in enumerate(lines, 1) if _python2_indent(line) != line]
+            expanded = lines if tabs_expanded else [_python2_indent(line) for line in lines]
             tabs_expanded = True
-            if tabbed:
-                lines = [_python2_indent(line) for line in lines]
-                repaired[tabbed[0]] = None
+            tabbed = next((n for n, (a, b) in enumerate(zip(lines, expanded), 1) if a != b), None)
+            if tabbed is not None:
+                lines, repaired[tabbed] = expanded, None
                 continue
             if len(lines) > REPAIR_LINES or len(repaired) > budget or _round == _REPAIR_ROUNDS:
                 break
