@@ -104,6 +104,12 @@ def node(pkg: str, exe: str, name: str, args: str = "", inner: str = "", respawn
         f'  <node pkg="{pkg}" type="{exe}" name="{name}"{a}/>'
 
 
+def pub(topic: str) -> str:
+    """A `rostopic pub` node feeding `topic` std_msgs/String twice a second (named: rostopic's own
+    names are anonymous)."""
+    return node("rostopic", "rostopic", topic.strip("/") + "_pub", f"pub -r 2 {topic} std_msgs/String 'data: hi'")
+
+
 def p(name: str, value: str) -> str:
     return f'<param name="{name}" value="{value}"/>'
 
@@ -121,17 +127,14 @@ def _cases() -> list[Case]:
     pcl = "ros-perception-pcl"
     ip = "ros-image-pipeline"
     cases = [
-        # ros-ros-comm: topic_tools and rosbag
-        C("relay", "ros-ros-comm", node("topic_tools", "relay", "relay", "chatter chatter_out"),
-          [dict(topic="/chatter", kind="string")]),
-        C("throttle", "ros-ros-comm", node("topic_tools", "throttle", "throttle", "messages chatter 1.0"),
-          [dict(topic="/chatter", kind="string")]),
-        C("drop", "ros-ros-comm", node("topic_tools", "drop", "drop", "chatter 1 2 chatter_drop"),
-          [dict(topic="/chatter", kind="string")]),
-        C("mux", "ros-ros-comm", node("topic_tools", "mux", "mux", "sel_out a b"),
-          [dict(topic="/a", kind="string"), dict(topic="/b", kind="string")]),
-        C("demux", "ros-ros-comm", node("topic_tools", "demux", "demux", "chatter x y"),
-          [dict(topic="/chatter", kind="string")]),
+        # ros-ros-comm: topic_tools and rosbag; relays' inputs fed by `rostopic pub` (scored too)
+        C("relay", "ros-ros-comm", pub("/chatter") + "\n" + node("topic_tools", "relay", "relay", "chatter chatter_out")),
+        C("throttle", "ros-ros-comm",
+          pub("/chatter") + "\n" + node("topic_tools", "throttle", "throttle", "messages chatter 1.0")),
+        C("drop", "ros-ros-comm",
+          pub("/chatter") + "\n" + node("topic_tools", "drop", "drop", "chatter 1 2 chatter_drop")),
+        C("mux", "ros-ros-comm", pub("/a") + "\n" + pub("/b") + "\n" + node("topic_tools", "mux", "mux", "sel_out a b")),
+        C("demux", "ros-ros-comm", pub("/chatter") + "\n" + node("topic_tools", "demux", "demux", "chatter x y")),
         C("transform", "ros-ros-comm",
           node("topic_tools", "transform", "transform", "/chatter /chatter_len std_msgs/UInt32 'len(m.data)'", respawn=True),
           [dict(topic="/chatter", kind="string")]),
@@ -141,6 +144,11 @@ def _cases() -> list[Case]:
           [dict(topic="/chatter", kind="string")]),
         C("rosbag_record", "ros-ros-comm",
           node("rosbag", "record", "record", "-O /tmp/archlog_debian_nodes_record.bag /chatter"),
+          [dict(topic="/chatter", kind="string")]),
+        C("rosbag_record_publish", "ros-ros-comm",
+          node("rosbag", "record", "record", "-p -O /tmp/archlog_debian_nodes_record_p.bag /chatter"),
+          [dict(topic="/chatter", kind="string")]),
+        C("rostopic_echo", "ros-ros-comm", node("rostopic", "rostopic", "echo", "echo -n 1000 /chatter"),
           [dict(topic="/chatter", kind="string")]),
         # ros-geometry: tf
         C("tf_static_transform_publisher", "ros-geometry",

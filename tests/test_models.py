@@ -140,17 +140,18 @@ def test_robot_localization_inputs_exist_only_when_configured(tmp_path: Path) ->
 
 
 def test_model_marked_incomplete_makes_its_node_opaque(tmp_path: Path) -> None:
-    launch = workspace(tmp_path, "<launch><node pkg='topic_tools' type='relay' name='relay' args='scan scan_out'/>"
+    launch = workspace(tmp_path, "<launch><node pkg='rosbag' type='play' name='play' args='run.bag'/>"
                                  "<node pkg='demo' type='planner.py' name='planner'/></launch>")
     result = analyse([tmp_path], [str(launch)], {}, [])
-    assert [n for n, _reason in result.store.rows("node_incomplete")] == ["/relay"]
+    assert [n for n, _reason in result.store.rows("node_incomplete")] == ["/play"]
 
 
 
 def test_relay_topics_come_from_each_instance_command_line(tmp_path: Path) -> None:
     """topic_tools' model names its ports from the arguments (`{argv: "{N}"}`, `{argv_from: N}`), per
-    instance, remapping words left out (and applied); a relay's input has whatever type it carries, transform's
-    output the type it is given; an argument that is not given leaves the name unknown."""
+    instance, remapping words left out (and applied); a relay's input has whatever type it carries, its output
+    the type of its input's publishers (none here: unknown), transform's output the type it is given; an argument
+    that is not given leaves the name unknown, and the default output name is built from the input's."""
     launch = workspace(tmp_path, """<launch>
   <node pkg="topic_tools" type="mux" name="mux" ns="robot" args="cmd_vel joy_vel /nav_vel joy_vel:=joy"/>
   <node pkg="topic_tools" type="transform" name="len" args="/chatter /chatter_len std_msgs/UInt32 'len(m.data)'"/>
@@ -161,8 +162,10 @@ def test_relay_topics_come_from_each_instance_command_line(tmp_path: Path) -> No
     ports = sorted((rel, n, t if isinstance(t, str) else "?", ty if isinstance(ty, str) else "*")
                    for rel in ("publisher", "subscriber", "service_server") for _p, n, t, ty in result.store.rows(rel)
                    if rel != "service_server" or "/mux/" not in t)
-    assert ports == [("publisher", "/len", "/chatter_len", "std_msgs/UInt32"),
+    assert ports == [("publisher", "/bare", "?", "*"), ("publisher", "/len", "/chatter_len", "std_msgs/UInt32"),
+                     ("publisher", "/robot/mux", "/robot/cmd_vel", "*"),
                      ("publisher", "/robot/mux", "/robot/mux/selected", "std_msgs/String"),
+                     ("publisher", "/throttle", "/scan_throttle", "*"),
                      ("service_server", "/robot/mux", "/robot/cmd_vel_select", "topic_tools/MuxSelect"),
                      ("subscriber", "/bare", "?", "*"), ("subscriber", "/len", "/chatter", "*"),
                      ("subscriber", "/robot/mux", "/nav_vel", "*"), ("subscriber", "/robot/mux", "/robot/joy", "*"),

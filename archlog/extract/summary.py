@@ -29,6 +29,7 @@ class Port:
     condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
     info_of: Value | None = None  # image_transport: the image topic (as written) whose remapped sibling this is
     after_tf: tuple[str, ...] = ()  # the node creates it only after these transform waits (TransformWait.id) end
+    type_of: tuple[Value, ...] = ()  # models: it carries the type the publishers of these topics (as written) give
 
 
 @dataclass(frozen=True)
@@ -167,3 +168,4 @@ class NodeSummary:
     tf_args: bool = False
     tf_unknown: bool = False  # its description, arguments or gazebo plugins leave what it broadcasts unknown
     argv_ports: tuple[tuple[str, dict, str], ...] = ()  # models: (kind, entry, file) named from the command line
+    valued_options: tuple[str, ...] = ()  # models: command-line options that take a value (not a positional word)

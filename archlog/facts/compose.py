@@ -10,6 +10,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary, Port, Site
 from archlog.facts.behavior import Sites, add_behavior
+from archlog.facts.followed_types import Following, add_followed
 from archlog.facts.namespaces import add_namespaces
 from archlog.facts.similarity import namespace_steps, near_names, too_long
 from archlog.facts.store import FactStore
@@ -27,6 +28,7 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
     `add_near_names`, once the ports are known)."""
     store = FactStore()
     workspace, config = system.workspace, system.config
+    following: list[Following] = []
     for package in workspace.packages.values():
         store.add("package", package.name, workspace.display(package.path))
         for exe in package.executables.values():
@@ -59,7 +61,8 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
         store.add("node_source", node.name, summary.origin)
         if summary.incomplete:
             store.add("node_incomplete", node.name, summary.incomplete)
-        _instance(store, node, summary, config)
+        _instance(store, node, summary, config, following)
+    add_followed(store, following)
     _param_topics(store, system)
     _private_names(store)
     _unknown_port_names(store, diagnostics)
@@ -116,7 +119,10 @@ def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSi
         store.add("near_scope", b, a, namespace_steps(b, a))
 
 
-def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig) -> None:
+def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig,
+              following: list[Following]) -> None:
+    """The facts of one instance's ports and behavior; ports whose type follows other topics' go to
+    `following`, to be typed once every instance's publishers are known."""
     pairs = [(src, dst) for src, dst, _ in node.remaps]
     remaps = names.resolve_remaps(pairs[::-1] if node.ros2 else pairs, node.namespace, node.name)
     ports = [e for p in summary.ports if _present(p, node, config) for e in _each(p, node, config)]
@@ -152,9 +158,13 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
             store.add("alternative_names", pid, len(resolved))
         last = _bind(port.default, node, config) if port.default is not None else \
             Unknown("no default" if port.kind == "param_read" else "value", port.file, port.line)
+        inputs = tuple(_remapped(_resolve(option, port.handle_ns, node, config, remaps), remaps)
+                       for topic in port.type_of for option in _options(_bind(topic, node, config)))
         for before, after in resolved:
             if port.kind in ("param_read", "param_write"):
                 store.add(port.kind, pid, node.name, after, _single(last))
+            elif port.type_of and isinstance(port.type, Unknown):
+                following.append(Following(pid, port.kind, node.name, after, inputs, port.type))
             else:
                 store.add(port.kind, pid, node.name, after, _type_name(_single(_bind(port.type, node, config))))
             store.add("port_source_name", pid, before)

@@ -96,9 +96,9 @@ def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: Diagn
 
 def _argv_label(raw: object) -> str:
     """A model port named from the command line, as a model-drift note shows it."""
-    if isinstance(raw, dict):
+    if isinstance(raw, dict) and raw.keys() & {"argv", "argv_from"}:
         return f"<argument {raw['argv']}>" if "argv" in raw else f"<arguments from {raw['argv_from']}>"
-    return str(raw)
+    return str(raw.get("default", raw)) if isinstance(raw, dict) else str(raw)
 
 
 def _action_topic(kind: str, name: str, actions: set[str]) -> bool:
@@ -137,13 +137,15 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
     if summary is not None and summary.loads:
         summary = replace(summary, ports=summary.ports + loaded_ports(node, summary, summaries, diagnostics))
-    if summary is not None and summary.argv_ports:
-        summary = replace(summary, ports=summary.ports + argv_ports(summary, node.args))
+    model = models.user.get(node.kind) or models.builtin.get(node.kind)
+    if summary is not None and summary.argv_ports:  # the model is used
+        summary = replace(summary, ports=summary.ports + argv_ports(summary, node.args)[0])
+    elif summary is not None and model is not None and model.argv_ports:
+        summary = replace(summary, ports=_without(summary.ports, *argv_ports(model, node.args)))
     if summary is not None and any(isinstance(p.handle_ns, FullNodeName) for p in summary.ports):
         summary = replace(summary, ports=in_process(node, summary.ports))
     if summary is not None and any(p.info_of is not None for p in summary.ports):
         summary = replace(summary, ports=[placed_camera_info(p, node) for p in summary.ports])
-    model = models.user.get(node.kind) or models.builtin.get(node.kind)
     slots = summary.plugins if summary is not None and summary.plugins else model.plugins if model else ()
     extra = configured_ports(node, config, workspace, diagnostics) + loader_ports(node) + \
         plugin_ports(node, slots, models.classes, config, diagnostics)
@@ -163,6 +165,13 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
                         f"executable: {kind[1]}, publishers: [{{name: TOPIC, type: PKG/TYPE}}], "
                         "subscribers: [], services: [], params: [{name: ~PARAM, default: VALUE}]}", "warning")
     return summary
+
+
+def _without(ports: list[Port], present: list[Port], absent: list[Port]) -> list[Port]:
+    """A source's ports less those its model creates only under a command-line condition this instance
+    does not meet (options the source parses from argv, which extraction does not follow)."""
+    dropped = {_port_key(p) for p in absent} - {_port_key(p) for p in present} - {None}
+    return [port for port in ports if _port_key(port) not in dropped]
 
 
 def _with_transforms(summary: NodeSummary, model: NodeSummary | None, node: LaunchNode, config: LaunchConfig,

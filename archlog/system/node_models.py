@@ -14,9 +14,12 @@ publisher: its camera_info topic is the sibling of the image topic as resolved a
 (system/link.py). `plugins:` lists where a node loads pluginlib classes its parameters choose (see
 `PluginSlot`), and a file's `classes:` the ports such a class creates in the namespace its host
 gives it (system/plugin_slots.py). A model with `incomplete: REASON` lists only some ports, so its
-nodes count as opaque. A name `{argv: "{1}_select", default: ...}` or `{argv_from: 2}`, and a
-type `{argv: "{3}"}` or `*` (whatever the topic carries), come from each instance's command line
-(topic_tools' relays: `argv_ports`). `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the
+nodes count as opaque. A name `{argv: "{1}_select", default: ...}` or `{argv_from: 2}`, a
+type `{argv: "{3}"}` or `*` (whatever the topic carries), and a condition `{option: [-p, --publish]}`
+or `{argv: "{1}", equals: pub}` come from each instance's command line (topic_tools' relays,
+rostopic: `argv_ports`; `valued_options` are the options whose value is no positional word); a
+type `{like: NAME}` is the type the system's publishers of topic NAME give (a relay's output:
+facts/followed_types.py). `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the
 node broadcasts, `tf_waits` which ones it blocks for, and a port's or slot's `after_tf` which of those
 waits come before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
 breaks it is reported at the offending entry's line and its valid models are still used.
@@ -31,7 +34,7 @@ from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeGuard
 
 import jsonschema
 import yaml
@@ -152,7 +155,7 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
         instance = item.get("instance")
         summary = NodeSummary(str(item.get("package", "external")), str(item.get("executable", instance)), "model",
                               default_name=str(item.get("name", instance or item["executable"])),
-                              incomplete=item.get("incomplete"))
+                              incomplete=item.get("incomplete"), valued_options=tuple(item.get("valued_options", ())))
         for section, kind in SECTIONS.items():
             for port in item.get(section) or []:
                 _port(summary, kind, port, shown, diagnostics)
@@ -205,47 +208,95 @@ def _transforms(summary: NodeSummary, item: dict, shown: str, diagnostics: Diagn
 
 
 def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: DiagnosticSink) -> None:
-    if _from_argv(port.get("name")) or _from_argv(port.get("type")):  # placed per instance (argv_ports)
+    if _per_instance(port):  # placed per instance (argv_ports)
         summary.argv_ports += ((kind, port, shown),)
         return
-    summary.ports += _ports(kind, port, shown, _name(port["name"], shown, port["__line__"]), str(port.get("type", "")))
+    line = port["__line__"]
+    summary.ports += _ports(kind, port, shown, _name(port["name"], shown, line), *_typed(port.get("type", ""), [], shown, line))
 
 
-def _ports(kind: str, port: dict, shown: str, name: Value, type_: Value) -> list[Port]:
+def _ports(kind: str, port: dict, shown: str, name: Value, type_: Value, type_of: tuple[Value, ...] = ()) -> list[Port]:
     default = port.get("default")
     condition = port.get("if")
     private = isinstance(port["name"], dict) and port["name"].get("private")
     image = Port(kind, name, type_, shown, port["__line__"], 0, "~" if private else "",
                  None if default is None else str(default), qos=() if "qos" not in port else _qos(port["qos"]),
-                 condition=None if condition is None else _condition(condition, shown),
-                 after_tf=tuple(port.get("after_tf", ())))
+                 condition=None if condition is None or _argv_condition(condition) else _condition(condition, shown),
+                 after_tf=tuple(port.get("after_tf", ())), type_of=type_of)
     if port.get("camera_info") and isinstance(name, str):  # placed beside the remapped image per instance
         return [image, replace(image, name="camera_info", type="sensor_msgs/CameraInfo", default=None, info_of=name)]
     return [image]
+
+
+def _per_instance(port: dict) -> bool:
+    """A port named, typed or conditioned by the instance's command line."""
+    type_ = port.get("type")
+    like = type_.get("like") if isinstance(type_, dict) else None
+    return any(_from_argv(raw) for raw in (port.get("name"), type_, like)) or _argv_condition(port.get("if"))
 
 
 def _from_argv(raw: object) -> bool:
     return raw == "*" or isinstance(raw, dict) and bool(raw.keys() & {"argv", "argv_from"})
 
 
-def argv_ports(summary: NodeSummary, args: str) -> list[Port]:
-    """A model's ports named (or typed) from the command line, for an instance started with `args`
-    (its positional words: remapping words and flags left out, as ros::init and rospy.myargv do)."""
+def _argv_condition(condition: object) -> TypeGuard[dict]:
+    return isinstance(condition, dict) and bool(condition.keys() & {"argv", "option", "never"})
+
+
+def argv_ports(summary: NodeSummary, args: str) -> tuple[list[Port], list[Port]]:
+    """A model's ports named, typed or conditioned by the command line, for an instance started with
+    `args` (its positional words: remapping words, options and the values of `valued_options` left
+    out, as ros::init, rospy.myargv and option parsers leave them out): those the instance has, and
+    those whose command-line condition does not hold."""
     try:
-        words, _options = split_options(shlex.split(args), set())
+        words = shlex.split(args)
     except ValueError:  # reported where the launch file is read
         words = []
-    ports = []
+    positional, _values = split_options(words, set(summary.valued_options))
+    given = {word.split("=", 1)[0] for word in words if word.startswith("-") and ":=" not in word}
+    present: list[Port] = []
+    absent: list[Port] = []
     for kind, port, shown in summary.argv_ports:
         line = port["__line__"]
-        raw, type_ = port["name"], port["type"]
-        found = [_filled(raw["argv"], raw.get("default"), words, shown, line)] if "argv" in raw else \
-            words[raw["argv_from"] - 1:] if "argv_from" in raw else [_name(raw, shown, line)]
-        typed = Unknown("whatever the topic carries", shown, line) if type_ == "*" else \
-            _filled(type_["argv"], None, words, shown, line) if isinstance(type_, dict) else str(type_)
-        for name in found:
-            ports += _ports(kind, port, shown, name, typed)
-    return ports
+        typed = _typed(port.get("type", ""), positional, shown, line)
+        ports = [p for name in _named(port["name"], positional, shown, line) for p in _ports(kind, port, shown, name, *typed)]
+        condition = port.get("if")
+        holds = not _argv_condition(condition) or _argv_holds(condition, positional, given)
+        (present if holds else absent).extend(ports)
+    return present, absent
+
+
+def _named(raw: object, words: list[str], shown: str, line: int) -> list[Value]:
+    """The names a model's name entry gives an instance whose positional words are `words`."""
+    if isinstance(raw, dict) and "argv" in raw:
+        return [_filled(raw["argv"], raw.get("default"), words, shown, line)]
+    if isinstance(raw, dict) and "argv_from" in raw:
+        return list(words[raw["argv_from"] - 1:])
+    return [_name(raw, shown, line)]
+
+
+def _typed(raw: object, words: list[str], shown: str, line: int) -> tuple[Value, tuple[Value, ...]]:
+    """A port's type, and the topics whose publishers' type it carries (`like`; the type stays unknown
+    until the system's publishers are known, facts/followed_types.py)."""
+    if raw == "*":
+        return Unknown("whatever the topic carries", shown, line), ()
+    if isinstance(raw, dict) and "argv" in raw:
+        return _filled(raw["argv"], None, words, shown, line), ()
+    if isinstance(raw, dict):
+        topics = tuple(_named(raw["like"], words, shown, line))
+        return Unknown(f"the type of {', '.join(map(str, topics)) or 'no topic'}", shown, line), topics
+    return str(raw), ()
+
+
+def _argv_holds(condition: dict, words: list[str], given: set[str]) -> bool:
+    """A command-line condition: one of the `option`s is given, or the positional word(s) `argv` names
+    equal (one of) `equals`; `never` does not hold."""
+    if "option" in condition:
+        return bool(given & set(condition["option"]))
+    if "argv" in condition:
+        wanted = condition["equals"] if isinstance(condition["equals"], list) else [condition["equals"]]
+        return _filled(condition["argv"], None, words, "", 0) in [str(w) for w in wanted]
+    return False
 
 
 def _filled(template: str, default: str | None, words: list[str], shown: str, line: int) -> Value:

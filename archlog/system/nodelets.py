@@ -129,7 +129,8 @@ def _placed(port: Port, full: str, load: LoadedNodelet) -> Port:
 
     absolute = isinstance(port.name, str)
     return replace(port, name=placed(port.name), handle_ns="" if absolute else handle, default=_default(port, full),
-                   info_of=placed(port.info_of) if port.info_of is not None else None)
+                   info_of=placed(port.info_of) if port.info_of is not None else None,
+                   type_of=tuple(placed(topic) for topic in port.type_of))
 
 
 def _default(port: Port, full: str) -> Value | None:
