@@ -31,8 +31,9 @@ BASELINE = {
     "image_proc": (17, 0, 0),  # loads debayer and two rectify nodelets into itself (nodelet::Loader)
     "hd_monitor": (1, 0, 0),  # ros-diagnostics, Python
     "robot_state_publisher": (3, 0, 0),  # ports in a catkin library it links (joint_state_listener.cpp)
-    "mux": (9, 1, 0),  # ros-comm topic_tools: names from argv (the model's); the output's type is the input's
-    "relay": (2, 1, 0),  # the input named by argv; the output (the input's type) is not modelled
+    "mux": (11, 0, 0),  # ros-comm topic_tools: names from argv (the model's); the output's type is its inputs'
+    "relay": (3, 0, 0),  # fed by `rostopic pub` (its model): the output has the type that node publishes
+    "rosbag_record_publish": (2, 0, 0),  # recorder.cpp's ports follow the model's conditions (-p; never snapshot)
     "tf2_buffer_server": (7, 0, 0),  # its action server is named by main() in another file (call-site summaries)
     "image_rotate": (9, 0, 0),  # a reconfigure server without a handle: the process's private namespace
 }
