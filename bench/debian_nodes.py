@@ -4,9 +4,9 @@ For each node executable and nodelet of the Debian 12 ROS 1 packages listed in C
 launch file (bench/debian_nodes/CASE.launch), start it on a private loopback master with the inputs
 it needs (bench/debian_nodes/feeder.py publishes them, and subscribes to every output so that lazy
 publishers wire up their inputs; a relay's input comes from a `rostopic pub` node of the launch file
-instead, observed and scored with the case, since a relay's output has its input's type), read the live graph with `archlog observe`, and compare it with
-what archlog recovers from the Debian source package (`archlog diff SRC --launch CASE.launch
---observed OBSERVED --format json`).
+instead, observed and scored with the case, since a relay's output has its input's type), read the
+live graph with `archlog observe`, and compare it with what archlog recovers from the Debian source
+package (`archlog diff SRC --launch CASE.launch --observed OBSERVED --format json`).
 
 Scoring (the study metric): ports are publishers (node, topic, type), subscribers (node, topic) and
 services (node, service), as `archlog diff` compares them; per case, missed = observed ports not
