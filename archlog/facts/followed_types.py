@@ -27,16 +27,18 @@ class Following:
 
 def add_followed(store: FactStore, following: list[Following]) -> None:
     """The fact rows of the ports that follow another topic's type, typed from the store's publishers."""
+    wanted = {topic for port in following for topic in port.inputs}
     fixed: dict[str, set[str]] = {}
-    for _pid, _node, topic, published in store.rows("publisher"):
-        if isinstance(topic, str) and isinstance(published, str):
+    for _pid, _node, topic, published in store.rows("publisher") if wanted else ():
+        if topic in wanted and isinstance(topic, str) and isinstance(published, str):
             fixed.setdefault(topic, set()).add(published)
     types: list[str | None] = [None] * len(following)
     known = fixed
     for _round in range(len(following)):
         known = {topic: set(found) for topic, found in fixed.items()}
         for port, type_ in zip(following, types):
-            if type_ is not None and port.relation == "publisher" and isinstance(port.name, str):
+            if type_ is not None and port.relation == "publisher" and isinstance(port.name, str) \
+                    and port.name in wanted:
                 known.setdefault(port.name, set()).add(type_)
         settled = [_single(port, known) for port in following]
         if settled == types:
