@@ -87,9 +87,23 @@ def test_without_a_publisher_of_known_type_the_type_stays_unknown(tmp_path: Path
     assert _rule_ids(analysis) == []  # the stamped subscriber of the drop's output is no mismatch
 
 
+ROSTOPIC_PACKAGE = """import sys
+import rospy
+def rostopicmain(argv=None):
+    argv = rospy.myargv(argv or sys.argv)
+    rospy.init_node('rostopic', anonymous=True)
+    if argv[1] == 'pub':
+        rospy.Publisher(argv[2], rospy.AnyMsg, queue_size=100)
+"""
+
+
 def test_rostopic_ports_follow_its_subcommand_and_options(tmp_path: Path) -> None:
-    """rostopic's source only calls its package, so its model is used: pub publishes its topic with
-    its type (the value of -r is no argument), echo and hz subscribe, list has no port."""
+    """rostopic's script only calls its package, so its source resolves no port and its model is
+    used: pub publishes its topic with its type (the value of -r is no argument), echo and hz
+    subscribe, list has no port."""
+    pkg = _package(tmp_path, "rostopic", {"rostopic": "#!/usr/bin/env python3\nimport rostopic\nrostopic.rostopicmain()\n"})
+    (pkg / "src" / "rostopic").mkdir(parents=True)
+    (pkg / "src" / "rostopic" / "__init__.py").write_text(ROSTOPIC_PACKAGE)
     analysis = _analyse(tmp_path, """
   <node pkg="rostopic" type="rostopic" name="pub" args="pub -r 10 --latch chatter std_msgs/String 'data: hi'"/>
   <node pkg="rostopic" type="rostopic" name="hz" ns="robot" args="hz -w 5 chatter /scan"/>
@@ -98,6 +112,7 @@ def test_rostopic_ports_follow_its_subcommand_and_options(tmp_path: Path) -> Non
     assert _publishers(analysis) == {("/pub", "/chatter"): "std_msgs/String"}
     assert sorted((str(n), str(t)) for _p, n, t, _ty in analysis.store.rows("subscriber")) == [
         ("/echo", "/chatter"), ("/robot/hz", "/robot/chatter"), ("/robot/hz", "/scan")]
+    assert {origin for _n, origin in analysis.store.rows("node_source")} == {"model"}
 
 
 RECORD = """#!/usr/bin/env python3
