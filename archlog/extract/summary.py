@@ -29,6 +29,7 @@ class Port:
     condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
     info_of: Value | None = None  # image_transport: the image topic (as written) whose remapped sibling this is
     after_tf: tuple[str, ...] = ()  # the node creates it only after these transform waits (TransformWait.id) end
+    optional: bool = False  # an input the node works without (a model's `optional: true`)
 
 
 @dataclass(frozen=True)

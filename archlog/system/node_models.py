@@ -16,9 +16,13 @@ publisher: its camera_info topic is the sibling of the image topic as resolved a
 gives it (system/plugin_slots.py). A model with `incomplete: REASON` lists only some ports, so its
 nodes count as opaque. A name `{argv: "{1}_select", default: ...}` or `{argv_from: 2}`, and a
 type `{argv: "{3}"}` or `*` (whatever the topic carries), come from each instance's command line
-(topic_tools' relays: `argv_ports`). `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the
-node broadcasts, `tf_waits` which ones it blocks for, and a port's or slot's `after_tf` which of those
-waits come before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
+(topic_tools' relays: `argv_ports`), and so do ports with `if: {argv: WORD}` (only when the
+command line holds that word). A port with `since: VERSION` (or a list, one per release line)
+exists only in those releases of the package, checked against the version the configuration uses
+(package.xml, `released`); `optional: true` marks a subscriber the node works without.
+`tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the node broadcasts,
+`tf_waits` which ones it blocks for, and a port's or slot's `after_tf` which of those waits come
+before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
 breaks it is reported at the offending entry's line and its valid models are still used.
 """
 
@@ -27,9 +31,10 @@ from __future__ import annotations
 import json
 import re
 import shlex
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
-from functools import lru_cache
+from functools import cache, lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -101,13 +106,14 @@ class NodeModels:
 def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: DiagnosticSink) -> NodeModels:
     """The shipped models and those in the user's files (a missing file is a ConfigError)."""
     models = NodeModels()
+    version = cache(workspace.version)
     files = [(p, models.builtin) for p in sorted(BUILTIN_DIR.glob("*.yaml"))] + [(p, models.user) for p in paths]
     for index, (path, target) in enumerate(files, 1):
         if not path.is_file():
             raise ConfigError(f"model file not found: {path}")
         shown = workspace.display(path)
         loader = ShippedLoader if target is models.builtin else LineLoader
-        for summary, instance in load_models(path, shown, diagnostics, loader, models.classes):
+        for summary, instance in load_models(path, shown, diagnostics, loader, models.classes, version):
             if instance:
                 line = summary.ports[0].line - 1 if summary.ports else 1
                 element = Element(f"m{index:03d}{len(models.externals):03d}", shown, max(line, 1))
@@ -117,10 +123,12 @@ def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: Diagn
     return models
 
 
-def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
-                loader: type = LineLoader, classes: dict[str, PluginClass] | None = None) -> list[tuple[NodeSummary, str | None]]:
+def load_models(path: Path, shown: str, diagnostics: DiagnosticSink, loader: type = LineLoader,
+                classes: dict[str, PluginClass] | None = None,
+                version: Callable[[str], str | None] | None = None) -> list[tuple[NodeSummary, str | None]]:
     """(summary, external instance name or None) for every valid model in the file; its valid
-    pluginlib classes go into `classes` by lookup name."""
+    pluginlib classes go into `classes` by lookup name. `version` gives a package's version, against
+    which ports with `since` are kept or left out (without it, every port is kept)."""
     try:
         data = yaml.load(sandbox.read_text(path, "config"), Loader=loader)
     except yaml.YAMLError as exc:
@@ -155,7 +163,8 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
                               incomplete=item.get("incomplete"))
         for section, kind in SECTIONS.items():
             for port in item.get(section) or []:
-                _port(summary, kind, port, shown, diagnostics)
+                if "since" not in port or version is None or released(version(summary.package), port["since"]):
+                    _port(summary, kind, port, shown, diagnostics)
         summary.plugins = tuple(PluginSlot(str(slot.get("list", slot.get("param"))), str(slot["namespace"]),
                                            "list" in slot, _without_lines(slot.get("default")), shown,
                                            slot["__line__"], tuple(slot.get("after_tf", ())))
@@ -204,8 +213,28 @@ def _transforms(summary: NodeSummary, item: dict, shown: str, diagnostics: Diagn
                             "of one of its tf_waits", "error")
 
 
+def released(version: str | None, since: str | list[str]) -> bool:
+    """Whether a port that exists `since` a release is in the package's `version` (unknown: it is, as
+    models describe the newest release). A list names the first release with the port in each release
+    line (major.minor) it was added or backported to; the newest one holds for every later release."""
+    if version is None:
+        return True
+    have = _release(version)
+    firsts = sorted(_release(first) for first in ([since] if isinstance(since, str) else since))
+    return have >= firsts[-1] or any(have[:2] == first[:2] and have >= first for first in firsts)
+
+
+def _release(version: str) -> tuple[int, ...]:
+    return tuple(int(n) for n in re.findall(r"[0-9]+", version))
+
+
 def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: DiagnosticSink) -> None:
-    if _from_argv(port.get("name")) or _from_argv(port.get("type")):  # placed per instance (argv_ports)
+    if port.get("optional") and kind != "subscriber":
+        diagnostics.add(shown, port["__line__"], "model-schema", "invalid model: optional marks a subscriber the node "
+                        f"works without; a {kind.replace('_', ' ')} cannot be optional", "error")
+        return
+    if _from_argv(port.get("name")) or _from_argv(port.get("type")) or _from_argv(port.get("if")):
+        # placed per instance (argv_ports)
         summary.argv_ports += ((kind, port, shown),)
         return
     summary.ports += _ports(kind, port, shown, _name(port["name"], shown, port["__line__"]), str(port.get("type", "")))
@@ -213,12 +242,12 @@ def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: 
 
 def _ports(kind: str, port: dict, shown: str, name: Value, type_: Value) -> list[Port]:
     default = port.get("default")
-    condition = port.get("if")
+    condition = port.get("if") if "param" in port.get("if", {}) else None  # an argv condition is settled per instance
     private = isinstance(port["name"], dict) and port["name"].get("private")
     image = Port(kind, name, type_, shown, port["__line__"], 0, "~" if private else "",
                  None if default is None else str(default), qos=() if "qos" not in port else _qos(port["qos"]),
                  condition=None if condition is None else _condition(condition, shown),
-                 after_tf=tuple(port.get("after_tf", ())))
+                 after_tf=tuple(port.get("after_tf", ())), optional=bool(port.get("optional")))
     if port.get("camera_info") and isinstance(name, str):  # placed beside the remapped image per instance
         return [image, replace(image, name="camera_info", type="sensor_msgs/CameraInfo", default=None, info_of=name)]
     return [image]
@@ -230,16 +259,21 @@ def _from_argv(raw: object) -> bool:
 
 def argv_ports(summary: NodeSummary, args: str) -> list[Port]:
     """A model's ports named (or typed) from the command line, for an instance started with `args`
-    (its positional words: remapping words and flags left out, as ros::init and rospy.myargv do)."""
+    (its positional words: remapping words and flags left out, as ros::init and rospy.myargv do), and
+    those whose `if: {argv: WORD}` the command line holds (any word but a remapping one)."""
     try:
-        words, _options = split_options(shlex.split(args), set())
+        given = [word for word in shlex.split(args) if ":=" not in word]
     except ValueError:  # reported where the launch file is read
-        words = []
+        given = []
+    words, _options = split_options(given, set())
     ports = []
     for kind, port, shown in summary.argv_ports:
         line = port["__line__"]
         raw, type_ = port["name"], port["type"]
-        found = [_filled(raw["argv"], raw.get("default"), words, shown, line)] if "argv" in raw else \
+        if "argv" in port.get("if", {}) and port["if"]["argv"] not in given:
+            continue
+        found = [_name(raw, shown, line)] if not isinstance(raw, dict) else \
+            [_filled(raw["argv"], raw.get("default"), words, shown, line)] if "argv" in raw else \
             words[raw["argv_from"] - 1:] if "argv_from" in raw else [_name(raw, shown, line)]
         typed = Unknown("whatever the topic carries", shown, line) if type_ == "*" else \
             _filled(type_["argv"], None, words, shown, line) if isinstance(type_, dict) else str(type_)
