@@ -380,6 +380,24 @@ def test_model_ports_follow_the_version_of_the_package_the_workspace_holds(tmp_p
     assert {"/amcl_pose", "/static_map", "/move_base/current_goal"} <= names
 
 
+@pytest.mark.parametrize(("distro", "present"), [
+    ("kinetic", {"/move_base/recovery_status"}), ("melodic", {"/diagnostics"}),
+    ("noetic", {"/diagnostics", "/change_map", "/move_base/recovery_status"}),
+    (None, {"/diagnostics", "/change_map", "/move_base/recovery_status"})])
+def test_without_the_package_the_ros_distro_gives_its_release_line(tmp_path: Path, distro: str | None,
+                                                                  present: set[str],
+                                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    """navigation is neither in the workspace nor installed: the newest release of the line the model gives
+    for ROS_DISTRO is checked (kinetic's 1.14.x has the backported recovery_status); unknown, all are kept."""
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    launch = workspace(tmp_path, "<launch><node pkg='amcl' type='amcl' name='amcl'/>"
+                                 "<node pkg='map_server' type='map_server' name='map_server'/>"
+                                 "<node pkg='move_base' type='move_base' name='move_base'/></launch>")
+    analysis = analyse([tmp_path], [str(launch)], {}, [], env={"ROS_DISTRO": distro} if distro else {})
+    names = {t for rel in ("publisher", "service_server") for _p, _n, t, _ty in analysis.store.rows(rel)}
+    assert names & {"/diagnostics", "/change_map", "/move_base/recovery_status"} == present
+
+
 def test_since_must_be_a_version_string(tmp_path: Path) -> None:
     model = tmp_path / "m.yaml"
     model.write_text("package: demo\nexecutable: d\npublishers:\n  - {name: out, type: std_msgs/Empty, since: 1.17}\n")

@@ -19,7 +19,8 @@ type `{argv: "{3}"}` or `*` (whatever the topic carries), come from each instanc
 (topic_tools' relays: `argv_ports`), and so do ports with `if: {argv: WORD}` (only when the
 command line holds that word). A port with `since: VERSION` (or a list, one per release line)
 exists only in those releases of the package, checked against the version the configuration uses
-(package.xml, `released`); `optional: true` marks a subscriber the node works without.
+(package.xml; else the newest release of the line the model's `distros` gives for ROS_DISTRO;
+`released`); `optional: true` marks a subscriber the node works without.
 `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the node broadcasts,
 `tf_waits` which ones it blocks for, and a port's or slot's `after_tf` which of those waits come
 before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
@@ -31,6 +32,7 @@ from __future__ import annotations
 import json
 import re
 import shlex
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
@@ -163,7 +165,8 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink, loader: typ
                               incomplete=item.get("incomplete"))
         for section, kind in SECTIONS.items():
             for port in item.get(section) or []:
-                if "since" not in port or version is None or released(version(summary.package), port["since"]):
+                if "since" not in port or version is None or \
+                        released(_package_version(summary.package, item.get("distros") or {}, version), port["since"]):
                     _port(summary, kind, port, shown, diagnostics)
         summary.plugins = tuple(PluginSlot(str(slot.get("list", slot.get("param"))), str(slot["namespace"]),
                                            "list" in slot, _without_lines(slot.get("default")), shown,
@@ -225,7 +228,16 @@ def released(version: str | None, since: str | list[str]) -> bool:
 
 
 def _release(version: str) -> tuple[int, ...]:
-    return tuple(int(n) for n in re.findall(r"[0-9]+", version))
+    """A version as numbers; `*` (the newest of a release line, `1.16.*`) above any number."""
+    return tuple(sys.maxsize if n == "*" else int(n) for n in re.findall(r"[0-9]+|\*", version))
+
+
+def _package_version(package: str, distros: dict[str, str], version: Callable[[str], str | None]) -> str | None:
+    """The package's version (its package.xml), else the newest release of the release line the model's
+    `distros` gives for the ROS distribution in use (ROS_DISTRO), else None."""
+    found = version(package)
+    line = distros.get(sandbox.getenv("ROS_DISTRO") or "")
+    return found if found is not None or line is None else f"{line}.*"
 
 
 def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: DiagnosticSink) -> None:
