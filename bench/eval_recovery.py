@@ -334,9 +334,10 @@ def _controller_instances(analysis) -> set[str]:
 CAUSES = {
     "linked-library": "the node's code is in a catkin library the executable links (add_library + "
                       "target_link_libraries); archlog reads only the executable's own sources. No diagnostic.",
-    "model-condition": "archlog/models/diff_drive_controller.yaml publishes /tf only if ~enable_odom_tf; the "
+    "model-condition": "archlog/models/diff_drive_controller.yaml published /tf only if ~enable_odom_tf; the "
                        "controller advertises /tf unconditionally (diff_drive_controller.cpp:727), so the master "
-                       "sees it even with enable_odom_tf: false (husky control.yaml).",
+                       "sees it even with enable_odom_tf: false (husky control.yaml). Since 2026-11-24 the model "
+                       "advertises it always and only the broadcast depends on the parameter.",
     "param-list": "topic names read at run time from a YAML file: cmd_vel_mux parses its yaml_cfg_file with "
                   "yaml-cpp (publisher, subscribers[].topic); since 2026-11-24 the shipped model "
                   "yocs_cmd_vel_mux.yaml lists them ({file: ~yaml_cfg_file, ...}, system/param_files.py).",
@@ -351,7 +352,9 @@ CAUSES = {
                          "(port-name-unknown notes).",
     "no-compile": "the C++ does not compile here (rosbag/bag.h, yaml-cpp, generated dynamic_reconfigure "
                   "headers missing) and the token fallback misses calls on members of unresolved types "
-                  "(amcl's diagnostic_updater, kinetic amcl's tf::TransformListener).",
+                  "(amcl's diagnostic_updater, kinetic amcl's tf::TransformListener). Since 2026-11-24 amcl.yaml "
+                  "lists bag mode's base_scan (`if: {argv: --run-from-bag}`), so the source, which lacks "
+                  "/diagnostics and has base_scan unconditionally, resolves fewer ports and the model is used.",
     "footprint-sub": "each costmap subscribes ~<costmap>/footprint as geometry_msgs/Polygon while publishing it "
                      "as PolygonStamped; archlog/models/move_base.yaml leaves the subscriber out so that every "
                      "move_base is not a type mismatch with itself.",

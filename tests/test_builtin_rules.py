@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from archlog.facts.compose import add_near_names
 from archlog.facts.store import FactStore
+from archlog.queries.rule_tests import load_facts
 from archlog.rules.engine import Engine
-from archlog.rules.ruleset import load_rules
+from archlog.rules.ruleset import BUILTIN, load_rules
 from archlog.values import Unknown
 
 ENGINE = Engine(load_rules([]))
@@ -131,3 +132,27 @@ def test_near_miss_in_a_fleet_is_the_same_robots_counterpart() -> None:
     findings = [f for f in ENGINE.run(system(*ports))[1] if f.rule.id == "AL102"]
     assert [(f.values["topic"], f.values["other_topic"], f.values["others"]) for f in findings] == [
         ("/robot_2/front/scna", "/robot_2/front/scan", 0)]
+
+
+def test_an_optional_input_is_no_dangling_end() -> None:
+    """A subscriber a model marks optional (a reset users may send) is not paired with an unheard
+    publisher of its type (AL103), nor reported as unfed while another node publishes its type (AL104)."""
+    pose = "geometry_msgs/PoseWithCovarianceStamped"
+    ports = (("publisher", "p1", "/amcl", "/amcl_pose", pose), ("subscriber", "p2", "/ekf", "/set_pose", pose))
+    assert found(system(*ports)) == [("AL103", "amcl.py", 1)]
+    store = system(*ports)
+    store.add("optional_port", "p2")
+    assert found(store) == []
+    heard = system(*ports, ("subscriber", "p3", "/rviz", "/amcl_pose", pose))
+    assert found(heard) == [("AL104", "ekf.py", 2)]
+    heard.add("optional_port", "p2")
+    assert found(heard) == []
+
+
+def test_an_output_needing_only_an_optional_input_is_no_starved_output() -> None:
+    """AL601's own fixture: /lattice's trajectory needs /odom_pose, which nothing publishes; marked
+    optional, the input is one the node works without, and nothing is reported."""
+    store = load_facts(BUILTIN / "tests" / "AL601_required_input_unreachable" / "facts.json")
+    assert [rule for rule, _f, _l in found(store)] == ["AL601"]
+    store.add("optional_port", "p1")
+    assert found(store) == []

@@ -5,13 +5,15 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
+
 from archlog.analysis import analyse
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.qos import PRESETS
 from archlog.queries.session import Session
 from archlog.rules.engine import Engine
 from archlog.rules.ruleset import load_rules
-from archlog.system.node_models import BUILTIN_DIR, load_models
+from archlog.system.node_models import BUILTIN_DIR, load_models, released
 
 PACKAGE_XML = ("<package format='2'><name>{}</name><version>0.1.0</version><description>d</description>"
                "<maintainer email='dev@example.com'>m</maintainer><license>MIT</license></package>")
@@ -136,7 +138,8 @@ def test_robot_localization_inputs_exist_only_when_configured(tmp_path: Path) ->
     subs = sorted(t for _p, _n, t, _ty in result.store.rows("subscriber"))
     assert subs == ["/imu/data", "/set_pose", "/tf", "/tf_static", "/wheel/odom"]
     dangling = Session(result.store, load_rules([])).query("dangling_sub(_, _, T, _)")
-    assert sorted(row[0] for row in dangling.rows) == ["/imu/data", "/set_pose", "/wheel/odom"]
+    # /set_pose is optional (a reset users may send), the configured inputs are not
+    assert sorted(row[0] for row in dangling.rows) == ["/imu/data", "/wheel/odom"]
 
 
 def test_model_marked_incomplete_makes_its_node_opaque(tmp_path: Path) -> None:
@@ -333,7 +336,8 @@ def test_a_source_resolving_fewer_ports_than_the_shipped_model_does_not_win(tmp_
     launch = _map_server_source(tmp_path, "rospy.Publisher('grid', OccupancyGrid)\n"
                                           "rospy.Service(rospy.get_name() + compute(), GetMap, print)\n")
     analysis = analyse([tmp_path], [str(launch)], {}, [])
-    assert {t for _p, _n, t, _ty in analysis.store.rows("service_server")} == {"/static_map", "/change_map"}
+    # (not change_map: the model has it since navigation 1.17.2, and this package is 0.1.0)
+    assert {t for _p, _n, t, _ty in analysis.store.rows("service_server")} == {"/static_map"}
     assert {t for _p, _n, t, _ty in analysis.store.rows("publisher")} == {"/map", "/map_metadata"}
     drift = [d for d in analysis.diagnostics.items if d.code == "model-drift"]
     assert len(drift) == 1 and "publisher grid" in drift[0].message and "the model is used" in drift[0].message
@@ -347,3 +351,97 @@ def test_a_source_resolving_as_many_ports_wins_and_its_drift_is_noted(tmp_path: 
     assert analysis.store.rows("service_server") == []
     drift = [d for d in analysis.diagnostics.items if d.code == "model-drift"]
     assert len(drift) == 1 and "service server static_map" in drift[0].message and "source is used" in drift[0].message
+
+
+def test_a_port_since_a_release_exists_from_it_on_in_its_release_line() -> None:
+    assert released("1.17.2", "1.17.2") and released("1.18.0", "1.17.2") and released("2.0", "1.17.2")
+    assert not released("1.16.7", "1.17.2") and not released("1.17.1", "1.17.2")
+    backported = ["1.14.9", "1.17.2"]  # move_base's recovery_status: noetic's, and kinetic's backport
+    assert [released(v, backported) for v in ("1.14.2", "1.14.9", "1.14.10", "1.16.7", "1.17.1", "1.17.3")] == \
+        [False, True, True, False, False, True]
+    assert released(None, "9.0")  # the version is not known: the model describes the newest release
+
+
+def _navigation(tmp_path: Path, version: str) -> Path:
+    """navigation's amcl, map_server and move_base at `version` (package.xml only: the models are used)."""
+    for pkg in ("amcl", "map_server", "move_base"):
+        (tmp_path / "src" / pkg).mkdir(parents=True)
+        (tmp_path / "src" / pkg / "package.xml").write_text(PACKAGE_XML.format(pkg).replace("0.1.0", version))
+    return workspace(tmp_path, "<launch><node pkg='amcl' type='amcl' name='amcl'/>"
+                               "<node pkg='map_server' type='map_server' name='map_server'/>"
+                               "<node pkg='move_base' type='move_base' name='move_base'/></launch>")
+
+
+@pytest.mark.parametrize(("version", "present"), [
+    ("1.14.2", set()), ("1.14.9", {"/move_base/recovery_status"}), ("1.16.7", {"/diagnostics"}),
+    ("1.17.2", {"/diagnostics", "/change_map", "/move_base/recovery_status"})])
+def test_model_ports_follow_the_version_of_the_package_the_workspace_holds(tmp_path: Path, version: str,
+                                                                          present: set[str]) -> None:
+    analysis = analyse([tmp_path], [str(_navigation(tmp_path, version))], {}, [])
+    names = {t for rel in ("publisher", "service_server") for _p, _n, t, _ty in analysis.store.rows(rel)}
+    assert names & {"/diagnostics", "/change_map", "/move_base/recovery_status"} == present
+    assert {"/amcl_pose", "/static_map", "/move_base/current_goal"} <= names
+
+
+@pytest.mark.parametrize(("distro", "present"), [
+    ("kinetic", {"/move_base/recovery_status"}), ("melodic", {"/diagnostics"}),
+    ("noetic", {"/diagnostics", "/change_map", "/move_base/recovery_status"}),
+    (None, {"/diagnostics", "/change_map", "/move_base/recovery_status"})])
+def test_without_the_package_the_ros_distro_gives_its_release_line(tmp_path: Path, distro: str | None,
+                                                                  present: set[str],
+                                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    """navigation is neither in the workspace nor installed: the newest release of the line the model gives
+    for ROS_DISTRO is checked (kinetic's 1.14.x has the backported recovery_status); unknown, all are kept."""
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    launch = workspace(tmp_path, "<launch><node pkg='amcl' type='amcl' name='amcl'/>"
+                                 "<node pkg='map_server' type='map_server' name='map_server'/>"
+                                 "<node pkg='move_base' type='move_base' name='move_base'/></launch>")
+    analysis = analyse([tmp_path], [str(launch)], {}, [], env={"ROS_DISTRO": distro} if distro else {})
+    names = {t for rel in ("publisher", "service_server") for _p, _n, t, _ty in analysis.store.rows(rel)}
+    assert names & {"/diagnostics", "/change_map", "/move_base/recovery_status"} == present
+
+
+def test_since_must_be_a_version_string(tmp_path: Path) -> None:
+    model = tmp_path / "m.yaml"
+    model.write_text("package: demo\nexecutable: d\npublishers:\n  - {name: out, type: std_msgs/Empty, since: 1.17}\n")
+    sink = DiagnosticSink()
+    assert load_models(model, "m.yaml", sink) == []
+    assert [(d.line, d.code) for d in sink.items] == [(4, "model-schema")] and "since" in sink.items[0].message
+
+
+def test_a_model_port_that_exists_only_with_a_command_line_flag(tmp_path: Path) -> None:
+    launch = workspace(tmp_path, "<launch><node pkg='amcl' type='amcl' name='live'/>"
+                                 "<node pkg='amcl' type='amcl' name='replay' args='--run-from-bag run.bag'/>"
+                                 "<node pkg='amcl' type='amcl' name='remapped' args='x:=--run-from-bag'/></launch>")
+    analysis = analyse([tmp_path], [str(launch)], {}, [])
+    scans = sorted((n, t) for _p, n, t, _ty in analysis.store.rows("publisher") if t.endswith("base_scan"))
+    assert scans == [("/replay", "/base_scan")]
+
+
+def test_only_a_subscriber_can_be_optional(tmp_path: Path) -> None:
+    model = tmp_path / "m.yaml"
+    model.write_text("package: demo\nexecutable: d\npublishers:\n  - {name: out, type: std_msgs/Empty, optional: true}\n"
+                     "subscribers:\n  - {name: reset, type: std_msgs/Empty, optional: true}\n")
+    sink = DiagnosticSink()
+    [(summary, _instance)] = load_models(model, "m.yaml", sink)
+    assert [(p.kind, p.name, p.optional) for p in summary.ports] == [("subscriber", "reset", True)]
+    assert [(d.line, d.code) for d in sink.items] == [(4, "model-schema")] and "optional" in sink.items[0].message
+
+
+def test_a_source_read_gets_the_optional_marks_of_the_shipped_model(tmp_path: Path) -> None:
+    """amcl read from (a stand-in) source that resolves more ports than the model: the source is used,
+    and its initialpose subscriber is optional as the model says."""
+    pkg = tmp_path / "src" / "amcl"
+    (pkg / "scripts").mkdir(parents=True)
+    (pkg / "package.xml").write_text(PACKAGE_XML.format("amcl"))
+    outputs = "".join(f"rospy.Publisher('out{i}', PoseArray)\n" for i in range(20))
+    (pkg / "scripts" / "amcl").write_text("#!/usr/bin/env python3\nimport rospy\nfrom geometry_msgs.msg import "
+                                          "PoseArray, PoseWithCovarianceStamped\nrospy.init_node('amcl')\n"
+                                          "rospy.Subscriber('initialpose', PoseWithCovarianceStamped, print)\n"
+                                          "rospy.Subscriber('scan', PoseArray, print)\n" + outputs)
+    (pkg / "scripts" / "amcl").chmod(0o755)
+    launch = workspace(tmp_path, "<launch><node pkg='amcl' type='amcl' name='amcl'/></launch>")
+    analysis = analyse([tmp_path], [str(launch)], {}, [])
+    assert ("/amcl", "python") in analysis.store.rows("node_source")
+    optional = {p for (p,) in analysis.store.rows("optional_port")}
+    assert {t for p, _n, t, _ty in analysis.store.rows("subscriber") if p in optional} == {"/initialpose"}

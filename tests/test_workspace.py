@@ -4,8 +4,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from catkin_pkg.package import parse_package
+
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.workspace.index import Workspace
+from archlog.extract.workspace.packages import share_dirs
 
 MANIFEST = ("<package format='2'><name>{}</name><version>0.1.0</version><description>d</description>"
             "<maintainer email='dev@example.com'>m</maintainer><license>MIT</license></package>")
@@ -177,3 +180,13 @@ def test_catkin_library_sources_of_classes_the_node_never_names_are_not_its_code
     })
     exe = Workspace([tmp_path], DiagnosticSink()).packages["tfkit"].executables["static_publisher"]
     assert [s.name for s in exe.sources] == ["main.cpp", "static.cpp", "util.cpp"]
+
+
+def test_a_package_version_comes_from_the_package_xml_find_would_use(tmp_path: Path) -> None:
+    package(tmp_path, "actionlib", {})  # the workspace's copy comes before the installed one
+    package(tmp_path, "local_nav", {"package.xml": MANIFEST.format("local_nav").replace("0.1.0", "1.16.7")})
+    installed = next(d / "tf2" for d in share_dirs() if (d / "tf2" / "package.xml").is_file())
+    workspace = Workspace([tmp_path], DiagnosticSink())
+    assert workspace.version("actionlib") == "0.1.0" and workspace.version("local_nav") == "1.16.7"
+    assert workspace.version("tf2") == parse_package(str(installed / "package.xml")).version
+    assert workspace.version("no_such_package") is None

@@ -30,6 +30,7 @@ class Port:
     info_of: Value | None = None  # image_transport: the image topic (as written) whose remapped sibling this is
     after_tf: tuple[str, ...] = ()  # the node creates it only after these transform waits (TransformWait.id) end
     type_of: tuple[Value, ...] = ()  # models: it carries the type the publishers of these topics (as written) give
+    optional: bool = False  # an input the node works without (a model's `optional: true`)
 
 
 @dataclass(frozen=True)

@@ -134,6 +134,8 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
         for wait in port.after_tf:
             if wait in waits:  # an id naming no wait is a model-schema error
                 store.add("port_after_tf", pid, waits[wait])
+        if port.optional:
+            store.add("optional_port", pid)
         sites.setdefault(Site(port.file, port.line), []).append((port.kind, pid))
         for policy, value in port.qos:
             store.add("qos", pid, policy, value)

@@ -109,6 +109,8 @@ RELATIONS: tuple[Relation, ...] = (
          "(absent: infinite, the default).",
          _PORT, ("policy", "str", "deadline, lifespan or liveliness_lease_duration"),
          ("microseconds", "int", "the duration in microseconds, at most 2147483647 (about 36 minutes)")),
+    _rel("ports", "optional_port", "A subscriber its node works without (a model marks it `optional: true`: an "
+         "input users may send, such as a reset); AL103, AL104 and AL601 do not report it as unfed.", _PORT),
     _rel("ports", "alternative_names", "A port whose name is one of several at run time (a ternary, if/else); "
          "each alternative is its own row of the port's relation.", _PORT, ("count", "int", "how many alternatives")),
     _rel("ports", "port_source_name", "A port's name resolved in the node's namespace, before remapping.",

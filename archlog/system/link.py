@@ -155,7 +155,7 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     if summary is not None and any(listed(p) for p in summary.ports):
         summary = replace(summary, ports=file_ports(node, summary.ports, config, workspace, diagnostics))
     if summary is not None:
-        summary = _with_transforms(summary, model, node, config, workspace, diagnostics)
+        summary = _with_transforms(_with_marks(summary, model), model, node, config, workspace, diagnostics)
     if summary is None and node.kind not in missing:
         kind = node.kind
         missing.add(kind)
@@ -172,19 +172,26 @@ def _without(ports: list[Port], present: list[Port], absent: list[Port]) -> list
     does not meet (options the source parses from argv, which extraction does not follow)."""
     dropped = {_port_key(p) for p in absent} - {_port_key(p) for p in present} - {None}
     return [port for port in ports if _port_key(port) not in dropped]
+def _with_marks(summary: NodeSummary, model: NodeSummary | None) -> NodeSummary:
+    """A node read from source that archlog models: each source port gets the `after_tf` and `optional`
+    marks of the model's port of that kind and name (extraction recovers neither)."""
+    if model is None or summary.origin == "model":
+        return summary
+    marks: dict[tuple[str, str] | None, Port] = \
+        {key: port for port in model.ports if (port.after_tf or port.optional) and (key := _port_key(port))}
+    if not marks:
+        return summary
+    return replace(summary, ports=[replace(port, after_tf=mark.after_tf or port.after_tf,
+                                           optional=mark.optional or port.optional)
+                                   if (mark := marks.get(_port_key(port))) else port for port in summary.ports])
 
 
 def _with_transforms(summary: NodeSummary, model: NodeSummary | None, node: LaunchNode, config: LaunchConfig,
                      workspace: Workspace, diagnostics: DiagnosticSink) -> NodeSummary:
     """The summary with its model's tf keys (also when its source is read: extraction does not recover
-    transforms, so a source port gets the `after_tf` of the model's port of that kind and name) and the
-    transforms its robot description, command line or spawned gazebo plugins give."""
+    transforms) and the transforms its robot description, command line or spawned gazebo plugins give."""
     if model is not None and not summary.tf_declared and not summary.tf_waits:
-        marks: dict[tuple[str, str] | None, tuple[str, ...]] = \
-            {key: port.after_tf for port in model.ports if port.after_tf and (key := _port_key(port))}
-        ports = [replace(port, after_tf=marks.get(_port_key(port), port.after_tf)) for port in summary.ports] \
-            if marks else summary.ports
-        summary = replace(summary, ports=ports, transforms=model.transforms, tf_waits=model.tf_waits,
+        summary = replace(summary, transforms=model.transforms, tf_waits=model.tf_waits,
                           tf_declared=model.tf_declared, tf_description=model.tf_description, tf_args=model.tf_args)
     if not (summary.tf_description or summary.tf_args or spawns(node)):
         return summary

@@ -19,7 +19,10 @@ type `{argv: "{3}"}` or `*` (whatever the topic carries), and a condition `{opti
 or `{argv: "{1}", equals: pub}` come from each instance's command line (topic_tools' relays,
 rostopic: `argv_ports`; `valued_options` are the options whose value is no positional word); a
 type `{like: NAME}` is the type the system's publishers of topic NAME give (a relay's output:
-facts/followed_types.py). `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the
+facts/followed_types.py). A port with `since: VERSION` (or a list, one per release line) exists
+only in those releases of the package, checked against the version the configuration uses
+(package.xml; else the newest release of the line the model's `distros` gives for ROS_DISTRO:
+`released`); `optional: true` marks a subscriber the node works without. `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the
 node broadcasts, `tf_waits` which ones it blocks for, and a port's or slot's `after_tf` which of those
 waits come before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
 breaks it is reported at the offending entry's line and its valid models are still used.
@@ -30,9 +33,11 @@ from __future__ import annotations
 import json
 import re
 import shlex
+import sys
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
-from functools import lru_cache
+from functools import cache, lru_cache
 from pathlib import Path
 from typing import Any, TypeGuard
 
@@ -104,13 +109,14 @@ class NodeModels:
 def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: DiagnosticSink) -> NodeModels:
     """The shipped models and those in the user's files (a missing file is a ConfigError)."""
     models = NodeModels()
+    version = cache(workspace.version)
     files = [(p, models.builtin) for p in sorted(BUILTIN_DIR.glob("*.yaml"))] + [(p, models.user) for p in paths]
     for index, (path, target) in enumerate(files, 1):
         if not path.is_file():
             raise ConfigError(f"model file not found: {path}")
         shown = workspace.display(path)
         loader = ShippedLoader if target is models.builtin else LineLoader
-        for summary, instance in load_models(path, shown, diagnostics, loader, models.classes):
+        for summary, instance in load_models(path, shown, diagnostics, loader, models.classes, version):
             if instance:
                 line = summary.ports[0].line - 1 if summary.ports else 1
                 element = Element(f"m{index:03d}{len(models.externals):03d}", shown, max(line, 1))
@@ -120,10 +126,12 @@ def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: Diagn
     return models
 
 
-def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
-                loader: type = LineLoader, classes: dict[str, PluginClass] | None = None) -> list[tuple[NodeSummary, str | None]]:
+def load_models(path: Path, shown: str, diagnostics: DiagnosticSink, loader: type = LineLoader,
+                classes: dict[str, PluginClass] | None = None,
+                version: Callable[[str], str | None] | None = None) -> list[tuple[NodeSummary, str | None]]:
     """(summary, external instance name or None) for every valid model in the file; its valid
-    pluginlib classes go into `classes` by lookup name."""
+    pluginlib classes go into `classes` by lookup name. `version` gives a package's version, against
+    which ports with `since` are kept or left out (without it, every port is kept)."""
     try:
         data = yaml.load(sandbox.read_text(path, "config"), Loader=loader)
     except yaml.YAMLError as exc:
@@ -158,7 +166,9 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink,
                               incomplete=item.get("incomplete"), valued_options=tuple(item.get("valued_options", ())))
         for section, kind in SECTIONS.items():
             for port in item.get(section) or []:
-                _port(summary, kind, port, shown, diagnostics)
+                if "since" not in port or version is None or \
+                        released(_package_version(summary.package, item.get("distros") or {}, version), port["since"]):
+                    _port(summary, kind, port, shown, diagnostics)
         summary.plugins = tuple(PluginSlot(str(slot.get("list", slot.get("param"))), str(slot["namespace"]),
                                            "list" in slot, _without_lines(slot.get("default")), shown,
                                            slot["__line__"], tuple(slot.get("after_tf", ())))
@@ -207,7 +217,35 @@ def _transforms(summary: NodeSummary, item: dict, shown: str, diagnostics: Diagn
                             "of one of its tf_waits", "error")
 
 
+def released(version: str | None, since: str | list[str]) -> bool:
+    """Whether a port that exists `since` a release is in the package's `version` (unknown: it is, as
+    models describe the newest release). A list names the first release with the port in each release
+    line (major.minor) it was added or backported to; the newest one holds for every later release."""
+    if version is None:
+        return True
+    have = _release(version)
+    firsts = sorted(_release(first) for first in ([since] if isinstance(since, str) else since))
+    return have >= firsts[-1] or any(have[:2] == first[:2] and have >= first for first in firsts)
+
+
+def _release(version: str) -> tuple[int, ...]:
+    """A version as numbers; `*` (the newest of a release line, `1.16.*`) above any number."""
+    return tuple(sys.maxsize if n == "*" else int(n) for n in re.findall(r"[0-9]+|\*", version))
+
+
+def _package_version(package: str, distros: dict[str, str], version: Callable[[str], str | None]) -> str | None:
+    """The package's version (its package.xml), else the newest release of the release line the model's
+    `distros` gives for the ROS distribution in use (ROS_DISTRO), else None."""
+    found = version(package)
+    line = distros.get(sandbox.getenv("ROS_DISTRO") or "")
+    return found if found is not None or line is None else f"{line}.*"
+
+
 def _port(summary: NodeSummary, kind: str, port: dict, shown: str, diagnostics: DiagnosticSink) -> None:
+    if port.get("optional") and kind != "subscriber":
+        diagnostics.add(shown, port["__line__"], "model-schema", "invalid model: optional marks a subscriber the node "
+                        f"works without; a {kind.replace('_', ' ')} cannot be optional", "error")
+        return
     if _per_instance(port):  # placed per instance (argv_ports)
         summary.argv_ports += ((kind, port, shown),)
         return
@@ -222,7 +260,7 @@ def _ports(kind: str, port: dict, shown: str, name: Value, type_: Value, type_of
     image = Port(kind, name, type_, shown, port["__line__"], 0, "~" if private else "",
                  None if default is None else str(default), qos=() if "qos" not in port else _qos(port["qos"]),
                  condition=None if condition is None or _argv_condition(condition) else _condition(condition, shown),
-                 after_tf=tuple(port.get("after_tf", ())), type_of=type_of)
+                 after_tf=tuple(port.get("after_tf", ())), type_of=type_of, optional=bool(port.get("optional")))
     if port.get("camera_info") and isinstance(name, str):  # placed beside the remapped image per instance
         return [image, replace(image, name="camera_info", type="sensor_msgs/CameraInfo", default=None, info_of=name)]
     return [image]

@@ -8,6 +8,7 @@ from pathlib import Path
 
 from catkin_pkg.package import InvalidPackage, parse_package_string
 
+from archlog import sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.workspace.executables import ExecutableFinder
 from archlog.extract.workspace.packages import Executable, Package, manifests, share_dirs
@@ -44,6 +45,18 @@ class Workspace:
                 return candidate
         return None
 
+    def version(self, pkg: str) -> str | None:
+        """The version (package.xml's <version>) of the package `$(find pkg)` would find, or None."""
+        if pkg in self.packages:
+            return self.packages[pkg].version or None
+        folder = self.find(pkg)
+        if folder is None:
+            return None
+        try:
+            return _version(sandbox.read_text(folder / "package.xml", "build"))
+        except sandbox.Refused:
+            return None
+
     def executable(self, pkg: str, exe: str) -> Executable | None:
         package = self.packages.get(pkg)
         return package.executables.get(exe) if package else None
@@ -70,9 +83,15 @@ class Workspace:
             self.diagnostics.add(self.display(manifest), 1, "duplicate-package",
                                  f"package {name} also found at {other}; using the first")
             return
-        package = Package(name, folder, plugin_xml=plugin_xml, ament=ament)
+        package = Package(name, folder, plugin_xml=plugin_xml, ament=ament, version=_version(text) or "")
         self.packages[name] = package
         self._finder.find(package)
+
+
+def _version(manifest: str) -> str | None:
+    """The <version> a package.xml's text declares."""
+    match = re.search(r"<version(?:\s[^>]*)?>\s*([^<\s]+)\s*</version>", manifest)
+    return match.group(1) if match else None
 
 
 def _first_line(exc: BaseException) -> str:

@@ -46,6 +46,7 @@ class Package:
     libraries: dict[str, list[Path]] = field(default_factory=dict)
     ament: bool = False  # a ROS 2 package (built with ament_cmake or ament_python)
     links: dict[str, list[str]] = field(default_factory=dict)  # CMake target -> libraries it links
+    version: str = ""  # package.xml's <version>
 
 
 def share_dirs() -> list[Path]:
