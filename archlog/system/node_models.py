@@ -22,9 +22,9 @@ type `{like: NAME}` is the type the system's publishers of topic NAME give (a re
 facts/followed_types.py). A port with `since: VERSION` (or a list, one per release line) exists
 only in those releases of the package, checked against the version the configuration uses
 (package.xml; else the newest release of the line the model's `distros` gives for ROS_DISTRO:
-`released`); `optional: true` marks a subscriber the node works without. `tf_broadcasts` (with `tf_description`, `tf_args`) says which transforms the
-node broadcasts, `tf_waits` which ones it blocks for, and a port's or slot's `after_tf` which of those
-waits come before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
+`released`); `optional: true` marks a subscriber the node works without. `tf_broadcasts` (with
+`tf_description`, `tf_args`) says which transforms the node broadcasts, `tf_waits` which ones it
+blocks for, and a port's or slot's `after_tf` which of those waits come before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
 breaks it is reported at the offending entry's line and its valid models are still used.
 """
 
