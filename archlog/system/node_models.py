@@ -24,8 +24,8 @@ only in those releases of the package, checked against the version the configura
 (package.xml; else the newest release of the line the model's `distros` gives for ROS_DISTRO:
 `released`); `optional: true` marks a subscriber the node works without. `tf_broadcasts` (with
 `tf_description`, `tf_args`) says which transforms the node broadcasts, `tf_waits` which ones it
-blocks for, and a port's or slot's `after_tf` which of those waits come before it. The format's JSON Schema is archlog/models/model.schema.json; a file that
-breaks it is reported at the offending entry's line and its valid models are still used.
+blocks for, and a port's or slot's `after_tf` which of those waits come before it. The format's
+JSON Schema is archlog/models/model.schema.json; a file that breaks it is reported at the offending entry's line and its valid models are still used.
 """
 
 from __future__ import annotations
