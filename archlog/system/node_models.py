@@ -25,7 +25,8 @@ only in those releases of the package, checked against the version the configura
 `released`); `optional: true` marks a subscriber the node works without. `tf_broadcasts` (with
 `tf_description`, `tf_args`) says which transforms the node broadcasts, `tf_waits` which ones it
 blocks for, and a port's or slot's `after_tf` which of those waits come before it. The format's
-JSON Schema is archlog/models/model.schema.json; a file that breaks it is reported at the offending entry's line and its valid models are still used.
+JSON Schema is archlog/models/model.schema.json; a file that breaks it is reported at the offending
+entry's line and its valid models are still used.
 """
 
 from __future__ import annotations
