@@ -6,7 +6,7 @@ import json
 
 from archlog.diagnostics import Diagnostic
 from archlog.extract.summary import NodeSummary, Publish, Site
-from archlog.values import Alternatives, Concat, Namespace, ParamRef, Unknown, Value
+from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Unknown, Value
 
 
 def plain(value: Value | None) -> object:
@@ -21,6 +21,8 @@ def plain(value: Value | None) -> object:
         return {"every" if value.every else "one_of": [plain(p) for p in value.options]}
     if isinstance(value, Namespace):
         return {"namespace_of": plain(value.handle), **({"cut": value.cut} if value.cut else {})}
+    if isinstance(value, ParamList):
+        return {"each_of_param": value.name, **({"field": value.field} if value.field else {})}
     return value
 
 
