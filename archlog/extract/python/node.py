@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import ast
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -21,6 +21,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cpp.cache import ResultCache, key
 from archlog.extract.python.behavior.triggers import recover_behavior
 from archlog.extract.python.fold import Element, ValueFolder
+from archlog.extract.python.imports import Module, imported_calls, package_modules
 from archlog.extract.python.index import Function, arg
 from archlog.extract.python.qos_profile import QosReader
 from archlog.extract.python.repair import REPAIR_LINES, NestedTooDeeply, parse_tolerant
@@ -70,8 +71,10 @@ SOURCE_CAP = 1 << 20
 """Largest rospy/rclpy source read (bytes): reading costs ~5 s a MiB, and no node is near it."""
 
 
-def extract_python(path: Path, package: str, executable: str, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
-    """Read one rospy/rclpy script; never imports or runs it."""
+def extract_python(path: Path, package: str, executable: str, shown: str, diagnostics: DiagnosticSink,
+                   display: Callable[[Path], str] = str) -> NodeSummary:
+    """Read one rospy/rclpy script, and the classes and functions it calls from its package's
+    modules (shown with `display`); never imports or runs them."""
     summary = NodeSummary(package, executable, "python")
     try:
         data = sandbox.read_bytes(path, "source")
@@ -84,29 +87,35 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
                         "sources; its ROS calls are not recovered", "error")
         summary.incomplete = f"{shown}: too large to read"
         return summary
-    cache, cache_key = ResultCache("python"), key(package, executable, shown, data)
+    source = data.decode("utf-8", errors="replace")
+    modules = {display(m.path): m for m in package_modules(path, source)}
+    cache = ResultCache("python")
+    cache_key = key(package, executable, shown, data, *[part for s, m in modules.items() for part in (s, m.data)])
     cached = cache.get(cache_key)
     if not (isinstance(cached, tuple) and len(cached) == 2 and isinstance(cached[0], NodeSummary)):
         found = DiagnosticSink()
-        cached = (_read_guarded(data.decode("utf-8", errors="replace"), summary, shown, found), found.items)
+        cached = (_read_guarded(source, summary, shown, found, modules), found.items)
         cache.put(cache_key, cached)
     diagnostics.extend(cached[1])
     return cached[0]
 
 
-def _read_guarded(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
+def _read_guarded(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink,
+                  modules: dict[str, Module]) -> NodeSummary:
     """`_read` within a budget of its own, with the parser's limits or a walk's an error diagnostic."""
     try:
         with budget.scope():
-            return _read(source, summary, shown, diagnostics)
+            return _read(source, summary, shown, diagnostics, modules)
     except (NestedTooDeeply, RecursionError, MemoryError) as exc:
         diagnostics.add(shown, getattr(exc, "line", 1), "python-nesting", "code nested deeper than Python's parser "
                         "(or archlog's walk over it) allows; its ROS calls are not recovered", "error")
         return NodeSummary(summary.package, summary.executable, "python", incomplete=f"{shown}: nested too deeply")
 
 
-def _read(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
-    """Parse (repairing Python 2), extract the ports, then recover the behavior of publish calls."""
+def _read(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink,
+          modules: dict[str, Module]) -> NodeSummary:
+    """Parse (repairing Python 2), extract the ports (with those of the package's modules the script
+    calls), then recover the behavior of publish calls."""
     tree, repaired, dropped = parse_tolerant(source)
     lines = source.splitlines()
     if tree is not None and len(repaired) * 2 > len([ln for ln in lines if ln.strip()]):
@@ -128,8 +137,21 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
     reader = NodeReader(summary, shown, tree)
     reader.run()
     summary.publishes, summary.writes = recover_behavior(reader, summary.ports, diagnostics)
-    for line, code, message, severity in reader.notes:
-        diagnostics.add(shown, line, code, message, severity)
+    readers = [reader]
+    called_in = imported_calls(tree, list(modules.values())) if modules else {}
+    for module_shown, module in modules.items():
+        called = called_in[module]
+        module_tree = parse_tolerant(module.data.decode("utf-8", errors="replace"))[0] if called else None
+        if module_tree is not None:
+            readers.append(NodeReader(summary, module_shown, module_tree))
+            readers[-1].run(called)
+        elif called:
+            diagnostics.add(module_shown, 1, "python-syntax", f"does not parse as Python 3 or 2; the ports of "
+                            f"{', '.join(sorted(called))}, which {shown} calls, are not recovered", "error")
+            summary.incomplete = f"{module_shown}: does not parse"
+    for read in readers:
+        for line, code, message, severity in read.notes:
+            diagnostics.add(read.file, line, code, message, severity)
     summary.ports = _without_untyped_duplicates(summary.ports)
     return summary
 
@@ -150,10 +172,13 @@ class NodeReader(ValueFolder):
         self.profiles = QosReader(self)
         self.notes: list[tuple[int, str, str, str]] = []  # diagnostics: line, code, message, severity
 
-    def run(self) -> None:
-        """Read the ROS calls of every scope, in source order."""
+    def run(self, only: set[str] | None = None) -> None:
+        """Read the ROS calls of every scope (or only of the module's classes and functions named),
+        in source order."""
         for stmt in self.tree.body:
-            self._visit(stmt)
+            if only is None or isinstance(stmt, (ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)) \
+                    and stmt.name in only:
+                self._visit(stmt)
 
     def is_rclpy_node_class(self, cls: str | None, depth: int = 0) -> bool:
         """A class deriving (in the file, up to 5 levels) from an rclpy Node."""
