@@ -87,3 +87,37 @@ def test_a_list_parameters_element_names_ports_only(tmp_path: Path) -> None:
     [read] = [p for p in ports if p.kind == "param_read" and p.name == "~x"]
     assert isinstance(publisher.type, Unknown)
     assert isinstance(read.default, Unknown) and read.default.expr == "an element of list parameter ~types"
+
+
+def test_a_list_parameters_default_and_its_elements_fields(tmp_path: Path) -> None:
+    """Unset, a list parameter is its default list; a list of dicts names ports by a field."""
+    package = tmp_path / "src" / "muxer"
+    (package / "scripts").mkdir(parents=True)
+    (package / "launch").mkdir()
+    (package / "package.xml").write_text("<package format='2'><name>muxer</name><version>0.1.0</version>"
+                                         "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+                                         "<license>BSD</license><buildtool_depend>catkin</buildtool_depend></package>")
+    (package / "CMakeLists.txt").write_text("cmake_minimum_required(VERSION 3.0.2)\nproject(muxer)\n"
+                                            "find_package(catkin REQUIRED)\ncatkin_package()\n")
+    script = package / "scripts" / "muxer.py"
+    script.write_text("#!/usr/bin/env python3\nimport rospy\nfrom std_msgs.msg import String\n"
+                      "rospy.init_node('muxer')\n"
+                      "for name in rospy.get_param('~outputs', ['out_a', 'out_b']):\n"
+                      "    rospy.Publisher(name, String, queue_size=1)\n"
+                      "for source in rospy.get_param('~sources'):\n"
+                      "    rospy.Subscriber(source['topic'], String, print)\n")
+    script.chmod(0o755)
+    (package / "launch" / "mux.launch").write_text(
+        "<launch><node pkg='muxer' type='muxer.py' name='muxer'><rosparam param='sources'>"
+        "[{name: joy, topic: joy_cmd}, {name: nav, topic: /nav_cmd}]</rosparam></node></launch>")
+    analysis = analyse([tmp_path], ["muxer/launch/mux.launch"], {}, [])
+    assert subscribed(analysis, "/muxer") == {"/joy_cmd", "/nav_cmd"}
+    assert {str(t) for _p, n, t, _ty in rows(analysis, "publisher") if n == "/muxer"} == {"/out_a", "/out_b"}
+
+
+def test_get_namespace_at_the_root_is_a_slash(tmp_path: Path) -> None:
+    shutil.copytree(SYSTEM, tmp_path / "ws")
+    launch = tmp_path / "ws" / "src" / "stereo_saver" / "launch" / "rig.launch"
+    launch.write_text(launch.read_text().replace('<group ns="rig">', "").replace("</group>", ""))
+    analysis = analyse([tmp_path / "ws"], LAUNCH, {}, [])
+    assert "/heartbeat" in {str(t) for _p, n, t, _ty in rows(analysis, "publisher") if n == "/stereo_sim"}

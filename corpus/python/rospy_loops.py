@@ -25,6 +25,10 @@ class Rig:
         for name in inputs:
             rospy.Subscriber(name, Image, print)
             rospy.Publisher(name + "/seen", String, queue_size=1)
+        for name in rospy.get_param("~outputs", ["out_a", "out_b"]):
+            rospy.Publisher(name, String, queue_size=1)
+        for source in rospy.get_param("~sources"):
+            rospy.Subscriber(source["topic"], String, print)
         for name in extra:
             rospy.Subscriber(name + "/compressed", String, print)
         rospy.Publisher(rospy.get_namespace() + "heartbeat", String, queue_size=1)

@@ -22,7 +22,8 @@ def plain(value: Value | None) -> object:
     if isinstance(value, Namespace):
         return {"namespace_of": plain(value.handle), **({"cut": value.cut} if value.cut else {})}
     if isinstance(value, ParamList):
-        return {"each_of_param": value.name, **({"field": value.field} if value.field else {})}
+        return {"each_of_param": value.name, **({"field": value.field} if value.field else {}),
+                **({"defaults": list(value.defaults)} if value.defaults is not None else {})}
     return value
 
 

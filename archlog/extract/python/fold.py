@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import ast
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from archlog.extract.python.index import Assigned, FileIndex, Function, arg, is_self_attr
 from archlog.values import Namespace, ParamList, ParamRef, Unknown, Value, alternatives, concat
@@ -69,7 +69,8 @@ class ValueFolder(FileIndex):
         if isinstance(expr, ast.Call) and self.qualified(expr.func) == "rospy.get_param" and expr.args:
             name = self.value(expr.args[0], depth + 1, scope)
             if isinstance(name, str):
-                return ParamList(name, file=self.file, line=expr.lineno)
+                return ParamList(name, file=self.file, line=expr.lineno,
+                                 defaults=self.strings(arg(expr, 1, "default"), scope, depth + 1))
         if isinstance(expr, ast.Name) and (item := self.binding(expr.id, scope)) is not None:
             return self.elements(item.expr, item.scope, depth + 1) if item.expr is not None else \
                 self.unknown(expr, "elements of an element not known")
@@ -84,6 +85,15 @@ class ValueFolder(FileIndex):
             if len(own) == 1 and isinstance(own[0], ast.expr):
                 return self.elements(own[0], self.attr_scope.get(id(own[0]), assigned[1]), depth + 1)
         return self.unknown(expr, "a sequence not known statically")
+
+    def strings(self, expr: ast.expr | None, scope: Function | None, depth: int) -> tuple[str, ...] | None:
+        """The elements of a sequence when all are known strings (a list parameter's default), else None."""
+        items = self.elements(expr, scope, depth) if expr is not None else None
+        if not isinstance(items, list):
+            return None
+        values = [self.value(i.expr, depth + 1, i.scope) for i in items if i.expr is not None]
+        strings = [v for v in values if isinstance(v, str)]
+        return tuple(strings) if len(strings) == len(items) else None
 
     def assigned(self, expr: ast.expr, scope: Function | None) -> tuple[list[Assigned], Function | None] | None:
         """What a name (local, else module-level) or a self or class attribute is assigned, with the
@@ -137,6 +147,10 @@ class ValueFolder(FileIndex):
                                 False, self.unknown(expr, "one of several values"))
         if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Call) and expr.attr in _PARAMETER_VALUES:
             return self.call_value(expr.value, depth + 1, scope)
+        if isinstance(expr, ast.Subscript) and isinstance(expr.slice, ast.Constant) and \
+                isinstance(expr.slice.value, str) and isinstance(listed := self.value(expr.value, depth + 1, scope),
+                                                                 ParamList) and not listed.field and not listed.entry:
+            return replace(listed, field=expr.slice.value, defaults=None)  # `item["topic"]` of a list of dicts
         return self.unknown(expr)
 
     def name_value(self, expr: ast.Name, depth: int, scope: Function | None) -> Value:

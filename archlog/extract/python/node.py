@@ -171,6 +171,7 @@ class NodeReader(ValueFolder):
         self.summary = summary
         self.profiles = QosReader(self)
         self.notes: list[tuple[int, str, str, str]] = []  # diagnostics: line, code, message, severity
+        self.seen: set[Port] = set()
 
     def run(self, only: set[str] | None = None) -> None:
         """Read the ROS calls of every scope (or only of the module's classes and functions named),
@@ -416,7 +417,8 @@ class NodeReader(ValueFolder):
         name, type_ = (name if _expandable(name) else _unlisted(name, call)), _unlisted(type_, call)
         default, queue = (_unlisted(v, call) if v is not None else None for v in (default, queue))
         port = Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, handle, default, qos, queue)
-        if port not in self.summary.ports:
+        if port not in self.seen:
+            self.seen.add(port)
             self.summary.ports.append(port)
 
 
