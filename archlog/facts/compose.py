@@ -354,9 +354,11 @@ def _each(port: Port, node: LaunchNode, config: LaunchConfig) -> list[Port]:
         return [port]
     key = _resolve(listed.name, port.handle_ns, node, config, {})
     items = config.params.get(key, (None,))[0] if isinstance(key, str) else None
+    if items is None and listed.defaults is not None:
+        items = list(listed.defaults)
     if not isinstance(items, list):
-        items = list(listed.defaults) if listed.defaults is not None else \
-            [Unknown(f"each element of {listed.name} (not set by the configuration)", listed.file, listed.line)]
+        why = "not set by the configuration" if items is None else f"set to {_text(items)}, not a list"
+        items = [Unknown(f"each element of {listed.name} ({why})", listed.file, listed.line)]
     names = [item.get(listed.field) if isinstance(item, dict) and listed.field else item for item in items]
     elements = [name if isinstance(name, Unknown) else str(name) for name in names if name is not None]
     return [replace(port, name=concat(*[element if part is listed else part for part in parts])) for element in elements]

@@ -29,6 +29,10 @@ class Rig:
             rospy.Publisher(name, String, queue_size=1)
         for source in rospy.get_param("~sources"):
             rospy.Subscriber(source["topic"], String, print)
+        for index, side in enumerate(CAMERAS):
+            rospy.Publisher("camera_%d/%s" % (index, side), String, queue_size=1)
+        for side, kind in zip(CAMERAS, (Image, CameraInfo)):
+            rospy.Subscriber(side + "/raw", kind, print)
         for name in extra:
             rospy.Subscriber(name + "/compressed", String, print)
         rospy.Publisher(rospy.get_namespace() + "heartbeat", String, queue_size=1)

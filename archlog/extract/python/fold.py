@@ -22,11 +22,13 @@ _SAME_ELEMENTS = {"list", "tuple", "sorted", "reversed"}  # calls whose result h
 @dataclass(frozen=True)
 class Element:
     """One element of a sequence a loop walks: an expression of the file, folded in `scope`, or
-    (`expr` None) a value: an element of a list parameter, or an unknown element."""
+    (`expr` None) a value: an element of a list parameter, or an unknown element; or the tuple of
+    `parts` that enumerate() and zip() make."""
 
     expr: ast.expr | None
     scope: Function | None
     value: Value | None = None
+    parts: tuple[Element, ...] | None = None
 
 
 class ValueFolder(FileIndex):
@@ -66,6 +68,14 @@ class ValueFolder(FileIndex):
         if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) and expr.func.id in _SAME_ELEMENTS \
                 and len(expr.args) == 1:
             return self.elements(expr.args[0], scope, depth + 1)
+        if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) and expr.args and not expr.keywords and \
+                (expr.func.id == "zip" or expr.func.id == "enumerate" and len(expr.args) == 1):
+            columns = [self.elements(a, scope, depth + 1) for a in expr.args]
+            if all(isinstance(c, list) for c in columns):
+                known = [c for c in columns if isinstance(c, list)]
+                if expr.func.id == "enumerate":
+                    known.insert(0, [Element(ast.Constant(index), None) for index in range(len(known[0]))])
+                return [Element(None, None, parts=row) for row in zip(*known)]
         if isinstance(expr, ast.Call) and self.qualified(expr.func) == "rospy.get_param" and expr.args:
             name = self.value(expr.args[0], depth + 1, scope)
             if isinstance(name, str):
@@ -75,7 +85,7 @@ class ValueFolder(FileIndex):
             return self.elements(item.expr, item.scope, depth + 1) if item.expr is not None else \
                 self.unknown(expr, "elements of an element not known")
         if isinstance(expr, ast.Name) and scope is not None and expr.id not in scope.assigns and \
-                expr.id in [a.arg for a in scope.node.args.args + scope.node.args.kwonlyargs]:
+                expr.id in _parameters(scope):
             passed = self.arguments(scope, expr.id)
             if len(passed) == 1 and passed[0][0] is not None:  # the one call site's argument
                 return self.elements(passed[0][0], passed[0][1], depth + 1)
@@ -163,8 +173,7 @@ class ValueFolder(FileIndex):
         if scope is not None:
             if expr.id in scope.assigns:
                 return self.single(scope.assigns[expr.id], expr, depth, scope)
-            params = [a.arg for a in scope.node.args.args + scope.node.args.kwonlyargs]
-            if expr.id in params:
+            if expr.id in _parameters(scope):
                 return self.parameter(scope, expr.id, expr, depth)
         return self.single(self.module_assigns.get(expr.id, []), expr, depth, None)
 
@@ -254,6 +263,10 @@ class ValueFolder(FileIndex):
         parts.append(template[position:])
         return concat(*parts)
 
+
+def _parameters(scope: Function) -> list[str]:
+    """The names of a function's parameters (positional and keyword-only)."""
+    return [a.arg for a in scope.node.args.args + scope.node.args.kwonlyargs]
 
 
 def _mentions(expr: ast.expr, name: ast.expr) -> bool:

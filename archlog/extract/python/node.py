@@ -265,7 +265,8 @@ class NodeReader(ValueFolder):
         if isinstance(target, ast.Name):
             self.bound[self.key_of(target.id, self.scope)] = item
         elif isinstance(target, (ast.Tuple, ast.List)):
-            parts = self.elements(item.expr, item.scope) if item.expr is not None else None
+            parts = list(item.parts) if item.parts is not None else \
+                self.elements(item.expr, item.scope) if item.expr is not None else None
             for index, sub in enumerate(target.elts):
                 self._bind(sub, parts[index] if isinstance(parts, list) and len(parts) == len(target.elts) else
                            Element(None, None, self.unknown(sub, "unpacked from an element not known")))
