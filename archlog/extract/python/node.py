@@ -116,17 +116,42 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
           modules: dict[str, Module]) -> NodeSummary:
     """Parse (repairing Python 2), extract the ports (with those of the package's modules the script
     calls), then recover the behavior of publish calls."""
+    tree = _tree(source, shown, summary, diagnostics)
+    if tree is None:
+        return summary
+    reader = NodeReader(summary, shown, tree)
+    reader.run()
+    summary.publishes, summary.writes = recover_behavior(reader, summary.ports, diagnostics)
+    readers = [reader]
+    calls = imported_calls(tree, list(modules.values()))
+    for module_shown, module in modules.items():
+        module_tree = _tree(module.data.decode("utf-8", errors="replace"), module_shown, summary, diagnostics) \
+            if calls[module] else None
+        if module_tree is not None:
+            readers.append(NodeReader(summary, module_shown, module_tree))
+            readers[-1].run(calls[module])
+    for read in readers:
+        for line, code, message, severity in read.notes:
+            diagnostics.add(read.file, line, code, message, severity)
+    summary.ports = _without_untyped_duplicates(summary.ports)
+    return summary
+
+
+def _tree(source: str, shown: str, summary: NodeSummary, diagnostics: DiagnosticSink) -> ast.Module | None:
+    """A source's syntax tree, repairing Python 2 line by line (a note); None, with an error, for a
+    source that does not parse or is mostly not Python (archlog does not pretend to have read it).
+    Lines with ROS calls that could not be read leave the summary incomplete."""
     tree, repaired, dropped = parse_tolerant(source)
     lines = source.splitlines()
     if tree is not None and len(repaired) * 2 > len([ln for ln in lines if ln.strip()]):
-        tree = None  # mostly not Python: do not pretend to have read it
+        tree = None
     if tree is None:
         why = f"is not repaired: {len(lines)} lines, over the {REPAIR_LINES}-line repair cap" \
             if len(lines) > REPAIR_LINES else "does not parse as Python 3 or 2"
         diagnostics.add(shown, repaired[0] if repaired else 1, "python-syntax",
                         f"{why}; its ROS calls are not recovered", "error")
         summary.incomplete = f"{shown}: does not parse"
-        return summary
+        return None
     if repaired:
         diagnostics.add(shown, repaired[0], "python2",
                         f"Python 2 (or newer) syntax: {len(repaired)} line(s) repaired or skipped to recover its ROS "
@@ -134,26 +159,7 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
         lost = [n for n in dropped if _ROS_WORDS.search(lines[n - 1])]
         if lost:
             summary.incomplete = f"{shown}:{lost[0]}: a line with ROS calls could not be read"
-    reader = NodeReader(summary, shown, tree)
-    reader.run()
-    summary.publishes, summary.writes = recover_behavior(reader, summary.ports, diagnostics)
-    readers = [reader]
-    called_in = imported_calls(tree, list(modules.values())) if modules else {}
-    for module_shown, module in modules.items():
-        called = called_in[module]
-        module_tree = parse_tolerant(module.data.decode("utf-8", errors="replace"))[0] if called else None
-        if module_tree is not None:
-            readers.append(NodeReader(summary, module_shown, module_tree))
-            readers[-1].run(called)
-        elif called:
-            diagnostics.add(module_shown, 1, "python-syntax", f"does not parse as Python 3 or 2; the ports of "
-                            f"{', '.join(sorted(called))}, which {shown} calls, are not recovered", "error")
-            summary.incomplete = f"{module_shown}: does not parse"
-    for read in readers:
-        for line, code, message, severity in read.notes:
-            diagnostics.add(read.file, line, code, message, severity)
-    summary.ports = _without_untyped_duplicates(summary.ports)
-    return summary
+    return tree
 
 
 def _without_untyped_duplicates(ports: list[Port]) -> list[Port]:
