@@ -122,7 +122,7 @@ def resolve_launch(spec: str, workspace: Workspace) -> Path:
 def _python(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Executable], NodeSummary]:
     """Python executables are read in this process (ast only)."""
     return lambda exe: extract_python(exe.sources[0], exe.package, exe.name, workspace.display(exe.sources[0]),
-                                      diagnostics)
+                                      diagnostics, workspace.display)
 
 
 def _cpp(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Executable], _CppJob]:

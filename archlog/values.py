@@ -75,7 +75,9 @@ class ParamList:
     """Names taken from a list parameter, one per element (the element itself, or its `field`):
     twist_mux's `~topics: [{name: joy, topic: joy_vel}, ...]`. With `entry`, the parameter names a
     YAML file and the names are in that file's `entry` (a list as above, or one name; `default`
-    when the file lacks it): yocs_cmd_vel_mux's `~yaml_cfg_file` (system/param_files.py)."""
+    when the file lacks it): yocs_cmd_vel_mux's `~yaml_cfg_file` (system/param_files.py).
+    `defaults`: the list the node uses when the configuration does not set the parameter (a
+    Python `rospy.get_param("~topics", ["scan"])`)."""
 
     name: str
     field: str = ""
@@ -83,6 +85,7 @@ class ParamList:
     line: int = 0
     entry: str = ""
     default: str | None = None
+    defaults: tuple[str, ...] | None = None
 
 
 @dataclass(frozen=True)

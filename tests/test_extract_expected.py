@@ -1,5 +1,6 @@
 """Extraction on CodeQL-style fixtures, compared with their .expected files: rospy/rclpy in
-corpus/python, roscpp in corpus/cpp_ros1, rclcpp in corpus/cpp_ros2 (a file registering a
+corpus/python (and, in corpus/python_packages, a ROS package folder each: its one script, read with
+the package's modules it calls), roscpp in corpus/cpp_ros1, rclcpp in corpus/cpp_ros2 (a file registering a
 component, or exporting a nodelet, is read as that class: only it is the node), and executables
 of several roscpp files in corpus/cpp_ros1_files (a folder each, its files read together as one
 executable, or as the first class its files export in name order).
@@ -22,7 +23,7 @@ from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.executables import exported_plugins, registered_components
 
-FOLDERS = ("python", "cpp_ros1", "cpp_ros2", "cpp_ros1_files")
+FOLDERS = ("python", "python_packages", "cpp_ros1", "cpp_ros2", "cpp_ros1_files")
 FIXTURES = sorted(p for folder in FOLDERS for p in (ROOT / "corpus" / folder).iterdir() if p.suffix != ".expected")
 
 
@@ -32,6 +33,10 @@ def cpp_environment() -> CppEnvironment:
 
 
 def extract(fixture: Path, sink: DiagnosticSink) -> NodeSummary:
+    if fixture.parent.name == "python_packages":
+        script = next((fixture / "scripts").iterdir())
+        return extract_python(script, "fixtures", script.name, script.relative_to(fixture).as_posix(), sink,
+                              lambda path: path.relative_to(fixture).as_posix())
     if fixture.suffix == ".cpp" or fixture.is_dir():
         files = sorted(fixture.glob("*.cpp")) if fixture.is_dir() else [fixture]
         classes = [c for f in files for c in [c for c, _line in registered_components(f.read_text())]

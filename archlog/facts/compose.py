@@ -358,16 +358,22 @@ def _namespace(value: Namespace, node: LaunchNode, config: LaunchConfig) -> str 
 
 
 def _each(port: Port, node: LaunchNode, config: LaunchConfig) -> list[Port]:
-    """A port named from a list parameter becomes one port per element of that list."""
-    if not isinstance(port.name, ParamList):
+    """A port named from a list parameter (alone, or joined with other parts: a Python loop's
+    `topic + "/image"`) becomes one port per element of that list."""
+    parts = port.name.parts if isinstance(port.name, Concat) else (port.name,)
+    listed = next((part for part in parts if isinstance(part, ParamList)), None)
+    if listed is None:
         return [port]
-    key = _resolve(port.name.name, port.handle_ns, node, config, {})
+    key = _resolve(listed.name, port.handle_ns, node, config, {})
     items = config.params.get(key, (None,))[0] if isinstance(key, str) else None
+    if items is None and listed.defaults is not None:
+        items = list(listed.defaults)
     if not isinstance(items, list):
-        return [replace(port, name=Unknown(f"each element of {port.name.name} (not set by the configuration)",
-                                           port.name.file, port.name.line))]
-    names = [item.get(port.name.field) if isinstance(item, dict) and port.name.field else item for item in items]
-    return [replace(port, name=str(name)) for name in names if name is not None]
+        why = "not set by the configuration" if items is None else f"set to {_text(items)}, not a list"
+        items = [Unknown(f"each element of {listed.name} ({why})", listed.file, listed.line)]
+    names = [item.get(listed.field) if isinstance(item, dict) and listed.field else item for item in items]
+    elements = [name if isinstance(name, Unknown) else str(name) for name in names if name is not None]
+    return [replace(port, name=concat(*[element if part is listed else part for part in parts])) for element in elements]
 
 
 def _present(port: Port, node: LaunchNode, config: LaunchConfig) -> bool:

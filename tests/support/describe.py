@@ -6,7 +6,7 @@ import json
 
 from archlog.diagnostics import Diagnostic
 from archlog.extract.summary import NodeSummary, Publish, Site
-from archlog.values import Alternatives, Concat, Namespace, ParamRef, Unknown, Value
+from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Unknown, Value
 
 
 def plain(value: Value | None) -> object:
@@ -21,6 +21,9 @@ def plain(value: Value | None) -> object:
         return {"every" if value.every else "one_of": [plain(p) for p in value.options]}
     if isinstance(value, Namespace):
         return {"namespace_of": plain(value.handle), **({"cut": value.cut} if value.cut else {})}
+    if isinstance(value, ParamList):
+        return {"each_of_param": value.name, **({"field": value.field} if value.field else {}),
+                **({"defaults": list(value.defaults)} if value.defaults is not None else {})}
     return value
 
 
@@ -33,7 +36,9 @@ def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
         extra += "".join(f" {k}={v}" for k, v in p.qos)
         handle = f" handle {json.dumps(plain(p.handle_ns))}" if p.handle_ns else ""
         extra += f" if {json.dumps(plain(p.condition[0]))}={p.condition[1]}" if p.condition else ""
-        lines.append(f"{p.line}: {p.kind} {json.dumps(plain(p.name))} {json.dumps(plain(p.type))}{handle}{extra}")
+        elsewhere = summary.origin == "python" and summary.name_file and p.file != summary.name_file
+        site = f"{p.file}:{p.line}" if elsewhere else p.line  # a port of a module the script calls
+        lines.append(f"{site}: {p.kind} {json.dumps(plain(p.name))} {json.dumps(plain(p.type))}{handle}{extra}")
     lines += [f"{n.line}: load {json.dumps(plain(n.plugin))} as {json.dumps(plain(n.name))}"
               + "".join(f" {json.dumps(plain(k))}:={json.dumps(plain(v))}" for k, v in n.remaps) for n in summary.loads]
     lines += [f"diagnostic {d.line}: {d.severity} {d.code}" for d in diagnostics]

@@ -1,29 +1,122 @@
 """Folding Python expressions to values: literals, module and class constants, `self`
-attributes, f-strings, `%` and `.format`, `+`, parameter reads, and function or `__init__`
-parameters whose call sites in the file agree (a small function summary). Anything else is an
-explicit Unknown with file:line.
+attributes, f-strings, `%` and `.format`, `+`, parameter reads, the node's namespace, and function or
+`__init__` parameters whose call sites in the file agree (a small function summary). Loop variables
+take the element a walk binds them to (`bound`) or, folded elsewhere, every element of the sequence.
+Anything else is an explicit Unknown with file:line.
 """
 
 from __future__ import annotations
 
 import ast
 import re
+from dataclasses import dataclass, replace
 
 from archlog.extract.python.index import Assigned, FileIndex, Function, arg, is_self_attr
-from archlog.values import ParamRef, Unknown, Value, alternatives, concat
+from archlog.values import Namespace, ParamList, ParamRef, Unknown, Value, alternatives, concat
 
 _PARAMETER_VALUES = {"value", "string_value", "integer_value", "double_value", "bool_value"}
 _KIND = {ast.AugAssign: "augmented assignment", ast.For: "loop variable", ast.With: "with target"}
+_SAME_ELEMENTS = {"list", "tuple", "sorted", "reversed"}  # calls whose result has the elements of their argument
+
+
+@dataclass(frozen=True)
+class Element:
+    """One element of a sequence a loop walks: an expression of the file, folded in `scope`, or
+    (`expr` None) a value: an element of a list parameter, or an unknown element; or the tuple of
+    `parts` that enumerate() and zip() make."""
+
+    expr: ast.expr | None
+    scope: Function | None
+    value: Value | None = None
+    parts: tuple[Element, ...] | None = None
 
 
 class ValueFolder(FileIndex):
     """The values of a file's expressions; `scope` is the function a walk is in (an expression
-    folded without a scope folds in it)."""
+    folded without a scope folds in it); `bound` holds the loop variables a walk has bound to one
+    element, by the function they are bound in (its node's id; None at module level) and name."""
 
     def __init__(self, file: str, tree: ast.Module) -> None:
+        self.bound: dict[tuple[int | None, str], Element] = {}
+        self.scope: Function | None = None
         super().__init__(tree)
         self.file = file
-        self.scope: Function | None = None
+
+    @staticmethod
+    def key_of(name: str, scope: Function | None) -> tuple[int | None, str]:
+        """The key of a loop variable in `bound`."""
+        return id(scope.node) if scope else None, name
+
+    def binding(self, name: str, scope: Function | None) -> Element | None:
+        """The element a walk bound a loop variable to in a function, if any."""
+        return self.bound.get(self.key_of(name, scope))
+
+    def qualified(self, expr: ast.expr) -> str | None:
+        """The dotted name of an expression; a bound loop variable's is its element's."""
+        if isinstance(expr, ast.Name) and (item := self.binding(expr.id, self.scope)) is not None:
+            return self.qualified(item.expr) if item.expr is not None else None
+        return super().qualified(expr)
+
+    def elements(self, expr: ast.expr, scope: Function | None, depth: int = 0) -> list[Element] | ParamList | Unknown:
+        """The elements of a sequence a loop walks: a literal list, tuple or set (directly, or the one
+        assignment of a name, a self or class attribute), a list parameter (`ParamList`: one element
+        per item the configuration sets), or an Unknown naming what is not known."""
+        if depth > 10:
+            return self.unknown(expr, "too deep")
+        if isinstance(expr, (ast.List, ast.Tuple, ast.Set)) and not any(isinstance(e, ast.Starred) for e in expr.elts):
+            return [Element(e, scope) for e in expr.elts]
+        if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) and expr.func.id in _SAME_ELEMENTS \
+                and len(expr.args) == 1:
+            return self.elements(expr.args[0], scope, depth + 1)
+        if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) and expr.args and not expr.keywords and \
+                (expr.func.id == "zip" or expr.func.id == "enumerate" and len(expr.args) == 1):
+            columns = [self.elements(a, scope, depth + 1) for a in expr.args]
+            if all(isinstance(c, list) for c in columns):
+                known = [c for c in columns if isinstance(c, list)]
+                if expr.func.id == "enumerate":
+                    known.insert(0, [Element(ast.Constant(index), None) for index in range(len(known[0]))])
+                return [Element(None, None, parts=row) for row in zip(*known)]
+        if isinstance(expr, ast.Call) and self.qualified(expr.func) == "rospy.get_param" and expr.args:
+            name = self.value(expr.args[0], depth + 1, scope)
+            if isinstance(name, str):
+                return ParamList(name, file=self.file, line=expr.lineno,
+                                 defaults=self.strings(arg(expr, 1, "default"), scope, depth + 1))
+        if isinstance(expr, ast.Name) and (item := self.binding(expr.id, scope)) is not None:
+            return self.elements(item.expr, item.scope, depth + 1) if item.expr is not None else \
+                self.unknown(expr, "elements of an element not known")
+        if isinstance(expr, ast.Name) and scope is not None and expr.id not in scope.assigns and \
+                expr.id in _parameters(scope):
+            passed = self.arguments(scope, expr.id)
+            if len(passed) == 1 and passed[0][0] is not None:  # the one call site's argument
+                return self.elements(passed[0][0], passed[0][1], depth + 1)
+        assigned = self.assigned(expr, scope)
+        if assigned is not None:
+            own = [a for a in assigned[0] if not (isinstance(a, ast.expr) and _mentions(a, expr))]  # `x = [x]` wraps
+            if len(own) == 1 and isinstance(own[0], ast.expr):
+                return self.elements(own[0], self.attr_scope.get(id(own[0]), assigned[1]), depth + 1)
+        return self.unknown(expr, "a sequence not known statically")
+
+    def strings(self, expr: ast.expr | None, scope: Function | None, depth: int) -> tuple[str, ...] | None:
+        """The elements of a sequence when all are known strings (a list parameter's default), else None."""
+        items = self.elements(expr, scope, depth) if expr is not None else None
+        if not isinstance(items, list):
+            return None
+        values = [self.value(i.expr, depth + 1, i.scope) for i in items if i.expr is not None]
+        strings = [v for v in values if isinstance(v, str)]
+        return tuple(strings) if len(strings) == len(items) else None
+
+    def assigned(self, expr: ast.expr, scope: Function | None) -> tuple[list[Assigned], Function | None] | None:
+        """What a name (local, else module-level) or a self or class attribute is assigned, with the
+        function those values fold in; None for anything else."""
+        if isinstance(expr, ast.Name):
+            if scope is not None and expr.id in scope.assigns:
+                return scope.assigns[expr.id], scope
+            return self.module_assigns.get(expr.id, []), None
+        if is_self_attr(expr) and scope is not None and scope.cls:
+            return self.class_attrs.get(scope.cls, {}).get(expr.attr, []), scope
+        if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and expr.value.id in self.class_attrs:
+            return self.class_attrs[expr.value.id].get(expr.attr, []), None
+        return None
 
     def unknown(self, expr: ast.expr, why: str = "") -> Unknown:
         """An expression not folded, with its file and line."""
@@ -46,10 +139,8 @@ class ValueFolder(FileIndex):
             return self.unknown(expr)
         if isinstance(expr, ast.Name):
             return self.name_value(expr, depth, scope)
-        if is_self_attr(expr) and scope is not None and scope.cls:
-            return self.single(self.class_attrs.get(scope.cls, {}).get(expr.attr, []), expr, depth, scope)
-        if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and expr.value.id in self.class_attrs:
-            return self.single(self.class_attrs[expr.value.id].get(expr.attr, []), expr, depth, None)
+        if isinstance(expr, ast.Attribute) and (found := self.assigned(expr, scope)) is not None:
+            return self.single(found[0], expr, depth, found[1])
         if isinstance(expr, ast.BinOp) and isinstance(expr.op, ast.Add):
             return concat(self.value(expr.left, depth + 1, scope), self.value(expr.right, depth + 1, scope))
         if isinstance(expr, ast.BinOp) and isinstance(expr.op, ast.Mod) and isinstance(expr.left, ast.Constant):
@@ -66,24 +157,36 @@ class ValueFolder(FileIndex):
                                 False, self.unknown(expr, "one of several values"))
         if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Call) and expr.attr in _PARAMETER_VALUES:
             return self.call_value(expr.value, depth + 1, scope)
+        if isinstance(expr, ast.Subscript) and isinstance(expr.slice, ast.Constant) and \
+                isinstance(expr.slice.value, str) and isinstance(listed := self.value(expr.value, depth + 1, scope),
+                                                                 ParamList) and not listed.field and not listed.entry:
+            return replace(listed, field=expr.slice.value, defaults=None)  # `item["topic"]` of a list of dicts
         return self.unknown(expr)
 
     def name_value(self, expr: ast.Name, depth: int, scope: Function | None) -> Value:
-        """A name: a local assignment, a parameter (from its call sites), or a module assignment."""
+        """A name: a bound loop variable, a local assignment, a parameter (from its call sites), or a
+        module assignment."""
+        if (item := self.binding(expr.id, scope)) is not None:
+            if item.expr is not None:
+                return self.value(item.expr, depth + 1, item.scope)
+            return item.value if item.value is not None else self.unknown(expr)
         if scope is not None:
             if expr.id in scope.assigns:
                 return self.single(scope.assigns[expr.id], expr, depth, scope)
-            params = [a.arg for a in scope.node.args.args + scope.node.args.kwonlyargs]
-            if expr.id in params:
+            if expr.id in _parameters(scope):
                 return self.parameter(scope, expr.id, expr, depth)
         return self.single(self.module_assigns.get(expr.id, []), expr, depth, None)
 
     def single(self, exprs: list[Assigned], at: ast.expr, depth: int, scope: Function | None) -> Value:
         """The value of a variable: one assignment gives its value, several (if/else) give
-        alternatives, a loop over a literal list gives every element."""
-        if len(exprs) == 1 and isinstance(exprs[0], ast.For) and isinstance(exprs[0].iter, (ast.List, ast.Tuple)):
-            return alternatives([self.value(e, depth + 1, scope) for e in exprs[0].iter.elts], True,
-                                self.unknown(at, "loop over values not known statically"))
+        alternatives, a loop over known elements gives every element (a list parameter's, each)."""
+        if len(exprs) == 1 and isinstance(exprs[0], ast.For) and isinstance(exprs[0].target, ast.Name):
+            items = self.elements(exprs[0].iter, scope, depth + 1)
+            if not isinstance(items, list):
+                return items if isinstance(items, ParamList) else self.unknown(at, "loop over values not known "
+                                                                                   "statically")
+            return alternatives([self.value(i.expr, depth + 1, i.scope) if i.expr is not None else self.unknown(at)
+                                 for i in items], True, self.unknown(at, "loop over values not known statically"))
         values = [self.value(e, depth + 1, self.attr_scope.get(id(e), scope)) if isinstance(e, ast.expr)
                   else self.unknown(at, _KIND[type(e)]) for e in exprs]
         if not values:
@@ -123,7 +226,11 @@ class ValueFolder(FileIndex):
             if isinstance(name, str):
                 return ParamRef(name, self.value(default, depth + 1, scope) if default is not None
                                 else self.unknown(expr, "parameter without default"), "", self.file, expr.lineno)
-        if func in ("rospy.resolve_name", "str", "os.path.join") and len(expr.args) == 1:
+        if func == "rospy.resolve_name" and len(expr.args) == 1:  # resolved and remapped as a handle's namespace
+            return Namespace(self.value(expr.args[0], depth + 1, scope))
+        if func == "rospy.get_namespace" and not expr.args:  # the node's namespace, with a final slash
+            return concat(Namespace(), "/")
+        if func in ("str", "os.path.join") and len(expr.args) == 1:
             return self.value(expr.args[0], depth + 1, scope)
         if isinstance(expr.func, ast.Attribute) and expr.func.attr == "get_parameter_value" and \
                 isinstance(expr.func.value, ast.Call):
@@ -156,3 +263,13 @@ class ValueFolder(FileIndex):
         parts.append(template[position:])
         return concat(*parts)
 
+
+def _parameters(scope: Function) -> list[str]:
+    """The names of a function's parameters (positional and keyword-only)."""
+    return [a.arg for a in scope.node.args.args + scope.node.args.kwonlyargs]
+
+
+def _mentions(expr: ast.expr, name: ast.expr) -> bool:
+    """Whether an expression uses a name (or attribute) itself: `x = [x]` rewraps the same value."""
+    text = ast.unparse(name)
+    return any(isinstance(n, (ast.Name, ast.Attribute)) and ast.unparse(n) == text for n in ast.walk(expr))

@@ -2,26 +2,31 @@
 then the behavior of their publish calls (behavior/).
 
 Nothing is imported or run. Values fold with fold.py; anything not folded is an explicit
-Unknown with file:line. Python 2 sources are repaired line by line (repair.py) so their ROS
-calls are still recovered.
+Unknown with file:line. Loops and comprehensions over known elements are walked once per element
+(within the steps budget), their variables bound to it; over a list parameter, once, each port
+named from it standing for one port per element the configuration sets. Python 2 sources are
+repaired line by line (repair.py) so their ROS calls are still recovered.
 """
 
 from __future__ import annotations
 
 import ast
 import re
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
-from archlog import sandbox
+from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cpp.cache import ResultCache, key
 from archlog.extract.python.behavior.triggers import recover_behavior
-from archlog.extract.python.fold import ValueFolder
+from archlog.extract.python.fold import Element, ValueFolder
+from archlog.extract.python.imports import Module, imported_calls, package_modules
 from archlog.extract.python.index import Function, arg
 from archlog.extract.python.qos_profile import QosReader
 from archlog.extract.python.repair import REPAIR_LINES, NestedTooDeeply, parse_tolerant
 from archlog.extract.summary import NodeSummary, Port
-from archlog.values import Alternatives, Unknown, Value, concat
+from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Unknown, Value, concat
 
 # rospy-style constructors: qualified name -> (kind, keyword of the name, keyword of the type)
 _ROSPY = {
@@ -66,8 +71,10 @@ SOURCE_CAP = 1 << 20
 """Largest rospy/rclpy source read (bytes): reading costs ~5 s a MiB, and no node is near it."""
 
 
-def extract_python(path: Path, package: str, executable: str, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
-    """Read one rospy/rclpy script; never imports or runs it."""
+def extract_python(path: Path, package: str, executable: str, shown: str, diagnostics: DiagnosticSink,
+                   display: Callable[[Path], str] = str) -> NodeSummary:
+    """Read one rospy/rclpy script, and the classes and functions it calls from its package's
+    modules (shown with `display`); never imports or runs them."""
     summary = NodeSummary(package, executable, "python")
     try:
         data = sandbox.read_bytes(path, "source")
@@ -80,39 +87,71 @@ def extract_python(path: Path, package: str, executable: str, shown: str, diagno
                         "sources; its ROS calls are not recovered", "error")
         summary.incomplete = f"{shown}: too large to read"
         return summary
-    cache, cache_key = ResultCache("python"), key(package, executable, shown, data)
+    source = data.decode("utf-8", errors="replace")
+    modules = {display(m.path): m for m in package_modules(path, source)}
+    cache = ResultCache("python")
+    cache_key = key(package, executable, shown, data, *[part for s, m in modules.items() for part in (s, m.data)])
     cached = cache.get(cache_key)
     if not (isinstance(cached, tuple) and len(cached) == 2 and isinstance(cached[0], NodeSummary)):
         found = DiagnosticSink()
-        cached = (_read_guarded(data.decode("utf-8", errors="replace"), summary, shown, found), found.items)
+        cached = (_read_guarded(source, summary, shown, found, modules), found.items)
         cache.put(cache_key, cached)
     diagnostics.extend(cached[1])
     return cached[0]
 
 
-def _read_guarded(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
-    """`_read`, with the parser's limits or a walk's an error diagnostic."""
+def _read_guarded(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink,
+                  modules: dict[str, Module]) -> NodeSummary:
+    """`_read` within a budget of its own, with the parser's limits or a walk's an error diagnostic."""
     try:
-        return _read(source, summary, shown, diagnostics)
+        with budget.scope():
+            return _read(source, summary, shown, diagnostics, modules)
     except (NestedTooDeeply, RecursionError, MemoryError) as exc:
         diagnostics.add(shown, getattr(exc, "line", 1), "python-nesting", "code nested deeper than Python's parser "
                         "(or archlog's walk over it) allows; its ROS calls are not recovered", "error")
         return NodeSummary(summary.package, summary.executable, "python", incomplete=f"{shown}: nested too deeply")
 
 
-def _read(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink) -> NodeSummary:
-    """Parse (repairing Python 2), extract the ports, then recover the behavior of publish calls."""
+def _read(source: str, summary: NodeSummary, shown: str, diagnostics: DiagnosticSink,
+          modules: dict[str, Module]) -> NodeSummary:
+    """Parse (repairing Python 2), extract the ports (with those of the package's modules the script
+    calls), then recover the behavior of publish calls."""
+    tree = _tree(source, shown, summary, diagnostics)
+    if tree is None:
+        return summary
+    reader = NodeReader(summary, shown, tree)
+    reader.run()
+    summary.publishes, summary.writes = recover_behavior(reader, summary.ports, diagnostics)
+    readers = [reader]
+    calls = imported_calls(tree, list(modules.values()))
+    for module_shown, module in modules.items():
+        module_tree = _tree(module.data.decode("utf-8", errors="replace"), module_shown, summary, diagnostics) \
+            if calls[module] else None
+        if module_tree is not None:
+            readers.append(NodeReader(summary, module_shown, module_tree))
+            readers[-1].run(calls[module])
+    for read in readers:
+        for line, code, message, severity in read.notes:
+            diagnostics.add(read.file, line, code, message, severity)
+    summary.ports = _without_untyped_duplicates(summary.ports)
+    return summary
+
+
+def _tree(source: str, shown: str, summary: NodeSummary, diagnostics: DiagnosticSink) -> ast.Module | None:
+    """A source's syntax tree, repairing Python 2 line by line (a note); None, with an error, for a
+    source that does not parse or is mostly not Python (archlog does not pretend to have read it).
+    Lines with ROS calls that could not be read leave the summary incomplete."""
     tree, repaired, dropped = parse_tolerant(source)
     lines = source.splitlines()
     if tree is not None and len(repaired) * 2 > len([ln for ln in lines if ln.strip()]):
-        tree = None  # mostly not Python: do not pretend to have read it
+        tree = None
     if tree is None:
         why = f"is not repaired: {len(lines)} lines, over the {REPAIR_LINES}-line repair cap" \
             if len(lines) > REPAIR_LINES else "does not parse as Python 3 or 2"
         diagnostics.add(shown, repaired[0] if repaired else 1, "python-syntax",
                         f"{why}; its ROS calls are not recovered", "error")
         summary.incomplete = f"{shown}: does not parse"
-        return summary
+        return None
     if repaired:
         diagnostics.add(shown, repaired[0], "python2",
                         f"Python 2 (or newer) syntax: {len(repaired)} line(s) repaired or skipped to recover its ROS "
@@ -120,13 +159,7 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
         lost = [n for n in dropped if _ROS_WORDS.search(lines[n - 1])]
         if lost:
             summary.incomplete = f"{shown}:{lost[0]}: a line with ROS calls could not be read"
-    reader = NodeReader(summary, shown, tree)
-    reader.run()
-    summary.publishes, summary.writes = recover_behavior(reader, summary.ports, diagnostics)
-    for line, message in reader.notes:
-        diagnostics.add(shown, line, "python-several-nodes", message, "note")
-    summary.ports = _without_untyped_duplicates(summary.ports)
-    return summary
+    return tree
 
 
 def _without_untyped_duplicates(ports: list[Port]) -> list[Port]:
@@ -143,12 +176,16 @@ class NodeReader(ValueFolder):
         super().__init__(shown, tree)
         self.summary = summary
         self.profiles = QosReader(self)
-        self.notes: list[tuple[int, str]] = []
+        self.notes: list[tuple[int, str, str, str]] = []  # diagnostics: line, code, message, severity
+        self.seen: set[Port] = set()
 
-    def run(self) -> None:
-        """Read the ROS calls of every scope, in source order."""
+    def run(self, only: set[str] | None = None) -> None:
+        """Read the ROS calls of every scope (or only of the module's classes and functions named),
+        in source order."""
         for stmt in self.tree.body:
-            self._visit(stmt)
+            if only is None or isinstance(stmt, (ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)) \
+                    and stmt.name in only:
+                self._visit(stmt)
 
     def is_rclpy_node_class(self, cls: str | None, depth: int = 0) -> bool:
         """A class deriving (in the file, up to 5 levels) from an rclpy Node."""
@@ -178,10 +215,67 @@ class NodeReader(ValueFolder):
                 else:
                     self._visit(child)
             return
+        if isinstance(node, (ast.For, ast.AsyncFor)):
+            self._loop([(node.target, node.iter)], node.body)
+            for stmt in node.orelse:
+                self._visit(stmt)
+            return
+        if isinstance(node, (ast.ListComp, ast.SetComp, ast.GeneratorExp, ast.DictComp)):
+            results = [node.key, node.value] if isinstance(node, ast.DictComp) else [node.elt]
+            self._loop([(g.target, g.iter) for g in node.generators],
+                       [test for g in node.generators for test in g.ifs] + results)
+            return
         if isinstance(node, ast.Call):
             self._call(node)
         for sub in ast.iter_child_nodes(node):
             self._visit(sub)
+
+    def _loop(self, walks: list[tuple[ast.expr, ast.expr]], body: list[ast.expr] | list[ast.stmt]) -> None:
+        """Visit `body` once per element of the first (target, sequence) walk, its target bound to the
+        element, nested walks inside; a sequence not known (or too long for the steps budget) binds
+        its target to one element standing for all: a list parameter's, or an unknown one."""
+        if not walks:
+            for node in body:
+                self._visit(node)
+            return
+        target, sequence = walks[0]
+        self._visit(sequence)
+        items = self.elements(sequence, self.scope)
+        if isinstance(items, list):
+            try:
+                budget.charge("steps", len(items) * sum(1 for node in body for _ in ast.walk(node)))
+            except budget.BudgetExceeded as exc:
+                self.notes.append((sequence.lineno, "budget-exceeded", f"{exc}: the loop over "
+                                   f"{ast.unparse(sequence)} is read once, its variable unknown", "warning"))
+                items = self.unknown(sequence, "not unrolled")
+        if not isinstance(items, list):
+            items = [Element(None, None, items if isinstance(items, ParamList) else
+                             Unknown(f"an element of {items.expr}", self.file, sequence.lineno))]
+        for item in items:
+            with self._bound(target, item):
+                self._loop(walks[1:], body)
+
+    @contextmanager
+    def _bound(self, target: ast.expr, item: Element) -> Iterator[None]:
+        """Loop variables bound to one element while a loop's body is walked."""
+        saved = dict(self.bound)
+        self._bind(target, item)
+        try:
+            yield
+        finally:
+            self.bound = saved
+
+    def _bind(self, target: ast.expr, item: Element) -> None:
+        """Bind a name to an element; a tuple of names to the parts of a tuple element (unknown parts
+        when the element is not a tuple of as many known parts)."""
+        if isinstance(target, ast.Name):
+            self.bound[self.key_of(target.id, self.scope)] = item
+        elif isinstance(target, (ast.Tuple, ast.List)):
+            parts = list(item.parts) if item.parts is not None else \
+                self.elements(item.expr, item.scope) if item.expr is not None else None
+            for index, sub in enumerate(target.elts):
+                self._bind(sub, parts[index] if isinstance(parts, list) and len(parts) == len(target.elts) else
+                           Element(None, None, self.unknown(sub, "unpacked from an element not known")))
 
     def message_type(self, expr: ast.expr | None, ros2: bool) -> Value:
         """`pkg/Type` (ROS 1) or `pkg/msg/Type` (ROS 2) from `pkg.msg.Type`."""
@@ -313,18 +407,46 @@ class NodeReader(ValueFolder):
     def set_name(self, call: ast.Call, name: Value) -> None:
         """The node's name (a note when the file creates several nodes)."""
         if self.summary.default_name is not None and self.summary.default_name != name:
-            self.notes.append((call.lineno, f"this file creates several nodes ({self.summary.default_name}, {name}); "
-                                            "archlog reads them as one node named after the last"))
+            self.notes.append((call.lineno, "python-several-nodes", f"this file creates several nodes "
+                               f"({self.summary.default_name}, {name}); archlog reads them as one node named after "
+                               "the last", "note"))
         self.summary.default_name = name
         self.summary.name_file, self.summary.name_line = self.file, call.lineno
 
     def add(self, kind: str, call: ast.Call, name: Value, type_: Value, default: Value | None = None,
             qos: tuple[tuple[str, str], ...] = (), queue: Value | None = None, handle: str = "") -> None:
-        """One port; `handle` "~" for ROS 2 parameters (node-private)."""
+        """One port (once, however many times a loop walks its call); `handle` "~" for ROS 2
+        parameters (node-private). Only a name may hold a list parameter's element, once."""
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
                 self.add(kind, call, option, type_, default, qos, queue, handle)
             return
-        self.summary.ports.append(Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, handle, default,
-                                       qos, queue))
+        name, type_ = (name if _expandable(name) else _unlisted(name, call)), _unlisted(type_, call)
+        default, queue = (_unlisted(v, call) if v is not None else None for v in (default, queue))
+        port = Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, handle, default, qos, queue)
+        if port not in self.seen:
+            self.seen.add(port)
+            self.summary.ports.append(port)
+
+
+def _listed(value: Value) -> list[ParamList]:
+    """The list parameter elements a value holds."""
+    if isinstance(value, ParamList):
+        return [value]
+    inner: tuple[Value, ...] = value.parts if isinstance(value, Concat) else value.options \
+        if isinstance(value, Alternatives) else (value.name, value.default) if isinstance(value, ParamRef) else \
+        (value.handle,) if isinstance(value, Namespace) else ()
+    return [found for part in inner for found in _listed(part)]
+
+
+def _expandable(name: Value) -> bool:
+    """A name binding can expand per element: none, or one list parameter element joined with other parts."""
+    listed = _listed(name)
+    return not listed or len(listed) == 1 and (name is listed[0] or isinstance(name, Concat) and listed[0] in name.parts)
+
+
+def _unlisted(value: Value, call: ast.Call) -> Value:
+    """A value holding a list parameter's element where none can be expanded: unknown."""
+    listed = _listed(value)
+    return Unknown(f"an element of list parameter {listed[0].name}", listed[0].file, call.lineno) if listed else value
 

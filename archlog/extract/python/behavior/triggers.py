@@ -122,9 +122,8 @@ class Behavior(Walk):
                 sites.append(site)
             elif (self.folder.qualified(origin.func) or "").endswith("Synchronizer") and origin.args:
                 inputs = origin.args[0]
-                elements = inputs.elts if isinstance(inputs, (ast.List, ast.Tuple)) else \
-                    [e for value, _f in self.values(inputs.id, where) if isinstance(value, (ast.List, ast.Tuple))
-                     for e in value.elts] if isinstance(inputs, ast.Name) else []
+                elements = _members(inputs) if not isinstance(inputs, ast.Name) else \
+                    [e for value, _f in self.values(inputs.id, where) for e in _members(value)]
                 sites += [s for e in elements for s in self.port_sites(e, where)]
         return list(dict.fromkeys(sites))
 
@@ -134,3 +133,10 @@ class Behavior(Walk):
         for target in self.callables(callback, frame):
             self.enter(self.bind(target, None, frame, extra), Context(trigger, site))
 
+
+
+def _members(sequence: ast.AST) -> list[ast.expr]:
+    """The element expressions of a literal list or tuple, or the one of a comprehension."""
+    if isinstance(sequence, (ast.List, ast.Tuple)):
+        return sequence.elts
+    return [sequence.elt] if isinstance(sequence, (ast.ListComp, ast.GeneratorExp)) else []
