@@ -62,3 +62,18 @@ def test_a_python2_module_is_repaired(tmp_path: Path) -> None:
     sink = DiagnosticSink()
     assert [p.name for p in extract(script, sink).ports] == ["chatter"]
     assert [(d.file, d.line, d.code) for d in sink.items] == [("src/talker_pkg/talk.py", 8, "python2")]
+
+
+def test_a_script_whose_node_is_set_up_in_a_module_archlog_does_not_follow_is_partial(tmp_path: Path) -> None:
+    script = package(tmp_path / "talker_pkg")
+    script.write_text("#!/usr/bin/env python3\nimport talker_pkg.talk\ntalker_pkg.talk.main()\n")
+    summary = extract(script)
+    assert summary.ports == []
+    assert summary.incomplete is not None and summary.incomplete.startswith("scripts/talker:1: sets up no node")
+
+
+def test_a_node_without_ports_is_not_partial(tmp_path: Path) -> None:
+    script = package(tmp_path / "talker_pkg")
+    script.write_text("#!/usr/bin/env python3\nimport rospy\nrospy.init_node('idle')\nrospy.spin()\n")
+    summary = extract(script)
+    assert (summary.ports, summary.incomplete, summary.default_name) == ([], None, "idle")
