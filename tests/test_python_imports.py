@@ -77,3 +77,11 @@ def test_a_node_without_ports_is_not_partial(tmp_path: Path) -> None:
     script.write_text("#!/usr/bin/env python3\nimport rospy\nrospy.init_node('idle')\nrospy.spin()\n")
     summary = extract(script)
     assert (summary.ports, summary.incomplete, summary.default_name) == ([], None, "idle")
+
+
+def test_a_name_the_module_only_imports_from_elsewhere_leaves_the_node_partial(tmp_path: Path) -> None:
+    script = package(tmp_path / "talker_pkg")
+    (tmp_path / "talker_pkg" / "src" / "talker_pkg" / "talk.py").write_text("from talker_pkg.impl import Talker\n")
+    summary = extract(script)
+    assert summary.ports == [] and summary.incomplete == \
+        "src/talker_pkg/talk.py:1: Talker not defined here (imported from elsewhere?): its ROS code is not read"

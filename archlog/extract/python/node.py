@@ -130,6 +130,9 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
         if module_tree is not None:
             readers.append(NodeReader(summary, module_shown, module_tree))
             readers[-1].run(calls[module])
+            if missing := sorted(calls[module] - _defined(module_tree)):
+                summary.incomplete = summary.incomplete or f"{module_shown}:1: {', '.join(missing)} not defined " \
+                    "here (imported from elsewhere?): its ROS code is not read"
     for read in readers:
         for line, code, message, severity in read.notes:
             diagnostics.add(read.file, line, code, message, severity)
@@ -138,6 +141,11 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
         summary.incomplete = f"{shown}:1: sets up no node (no rospy.init_node, no rclpy node) here or in the package " \
             "modules it calls that archlog reads: its ROS code is elsewhere"
     return summary
+
+
+def _defined(tree: ast.Module) -> set[str]:
+    """The classes and functions a module defines at its top level."""
+    return {stmt.name for stmt in tree.body if isinstance(stmt, (ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef))}
 
 
 def _tree(source: str, shown: str, summary: NodeSummary, diagnostics: DiagnosticSink) -> ast.Module | None:
