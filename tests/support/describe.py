@@ -33,6 +33,7 @@ def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
         extra += "".join(f" {k}={v}" for k, v in p.qos)
         handle = f" handle {json.dumps(plain(p.handle_ns))}" if p.handle_ns else ""
         extra += f" if {json.dumps(plain(p.condition[0]))}={p.condition[1]}" if p.condition else ""
+        extra += "".join(f" and {json.dumps(plain(value))}={wanted}" for value, wanted in p.also)
         lines.append(f"{p.line}: {p.kind} {json.dumps(plain(p.name))} {json.dumps(plain(p.type))}{handle}{extra}")
     lines += [f"{n.line}: load {json.dumps(plain(n.plugin))} as {json.dumps(plain(n.name))}"
               + "".join(f" {json.dumps(plain(k))}:={json.dumps(plain(v))}" for k, v in n.remaps) for n in summary.loads]

@@ -21,6 +21,7 @@ import shlex
 import shutil
 import subprocess
 import tempfile
+from collections.abc import Collection
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -33,6 +34,7 @@ from archlog.extract.cpp.behavior import FileBehavior, link_files
 from archlog.extract.cpp.cache import ResultCache, cache_dir, key
 from archlog.extract.cpp.callers import merged_sites, settled_loads, settled_ports
 from archlog.extract.cpp.macros import MACRO_TOKENS, Macro, defines, macro_bomb, nested_calls
+from archlog.extract.cpp.reach import reached
 from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp import walk
 from archlog.extract.cpp.stubs import (
@@ -123,11 +125,13 @@ class CppEnvironment:
 
 
 def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvironment,
-                shown: dict[Path, str], diagnostics: DiagnosticSink, cls: str | None = None) -> NodeSummary:
+                shown: dict[Path, str], diagnostics: DiagnosticSink, cls: str | None = None,
+                linked: Collection[Path] = ()) -> NodeSummary:
     """The summary of one executable (or of one nodelet class): every source file read, from the
     cache when unchanged. A nodelet's files are read after the one that names its class, with the
     base classes found there (their methods, defined in other files of the library, are the node's
-    code too); a file read before more of them were known is read again."""
+    code too); a file read before more of them were known is read again. The ports of `linked`
+    sources (its libraries') count only when the executable's own code reaches them (reach.py)."""
     summary = NodeSummary(package, executable, "cpp")
     reader = _Reader(env, shown, diagnostics, summary)
     if cls is not None:
@@ -145,9 +149,10 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             cls = "|".join(result.classes)  # files read before the class's bases were known: again
             pending += [s for s, (_r, read_as) in results.items() if read_as != cls and s not in pending]
     behaviors: list[FileBehavior] = []
+    running = _reached_code(sources, linked, {s: r for s, (r, _cls) in results.items()})
     for source in sources:
         if source in results:
-            _merge(summary, results[source][0], diagnostics)
+            _merge(summary, results[source][0], diagnostics, running if source in linked else None)
             behaviors.append(results[source][0].behavior)
     sites = merged_sites([result.calls for result, _cls in results.values()])
     summary.ports, summary.loads = settled_ports(summary.ports, sites), settled_loads(summary.loads, sites)
@@ -572,8 +577,21 @@ def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
     return not any(_FOUND[(env.fingerprint, name)] for name in result.missing)
 
 
-def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink) -> None:
-    summary.ports += [p for p in result.ports if p not in summary.ports]  # a header's code is read with each file
+def _reached_code(sources: list[Path], linked: Collection[Path], results: dict[Path, FileResult]) -> set[str] | None:
+    """The functions the executable's own files reach (None: every function counts)."""
+    graphs = {s: r.graph for s, r in results.items() if r.graph is not None}
+    own = [graphs.get(s) for s in sources if s not in linked]
+    if not linked or len(graphs) < len(results) or None in own:
+        return None
+    return reached(graphs.values(), {f for graph in own if graph is not None for f in graph.own})
+
+
+def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink, running: set[str] | None) -> None:
+    """Add a file's result; with `running`, only its ports made in those functions (or outside any)."""
+    graph = result.graph
+    ports = [p for p in result.ports if running is None or graph is None
+             or graph.ports.get((p.file, p.line, p.column), "") in running | {""}]
+    summary.ports += [p for p in ports if p not in summary.ports]  # a header's code is read with each file
     summary.loads += [n for n in result.loads if n not in summary.loads]
     if result.default_name is not None and summary.default_name is None:
         summary.default_name, summary.anonymous = result.default_name, result.anonymous
