@@ -133,7 +133,7 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
     code too); a file read before more of them were known is read again. The ports of `linked`
     sources (its libraries') count only when the executable's own code reaches them (reach.py)."""
     summary = NodeSummary(package, executable, "cpp")
-    reader = _Reader(env, shown, diagnostics, summary)
+    reader = _Reader(env, shown, diagnostics, summary, graphs=bool(linked))
     if cls is not None:
         last = cls.rsplit("::", 1)[-1]
         sources = sorted(sources, key=lambda s: re.search(rf"\b{re.escape(last)}\b", _text(s)) is None)
@@ -170,6 +170,7 @@ class _Reader:
     shown: dict[Path, str]
     diagnostics: DiagnosticSink
     summary: NodeSummary
+    graphs: bool = False  # each file's call graph too (an executable linking libraries: reach.py)
     cache: ResultCache = field(default_factory=lambda: ResultCache("cpp"))
     index: ci.Index | None = None
 
@@ -192,11 +193,12 @@ class _Reader:
                                  "sources; its ROS calls are not recovered", "error")
             self.summary.incomplete = self.summary.incomplete or f"{name}: too large to read"
             return None
-        cache_key = key(self.env.fingerprint, name, cls or "", " ".join(self.env.file_args(source)), data)
+        cache_key = key(self.env.fingerprint, name, cls or "", " ".join(self.env.file_args(source)), data,
+                        "graph" if self.graphs else "")
         result = self.cache.get(cache_key)
         if not isinstance(result, FileResult) or not _still_valid(result, self.env):
             self.index = self.index or ci.Index.create()
-            result = _parse_guarded(self.index, source, name, self.env, cls)
+            result = _parse_guarded(self.index, source, name, self.env, cls, self.graphs)
             self.cache.put(cache_key, result)
         return result
 
@@ -218,10 +220,11 @@ def _settle_behavior(summary: NodeSummary) -> None:
     summary.writes = [w for w in summary.writes if w.var in guarded]
 
 
-def _parse_guarded(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
+def _parse_guarded(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None,
+                   graph: bool = False) -> FileResult:
     """`_parse`, with the walk's running out of memory or depth an error diagnostic."""
     try:
-        return _parse(index, source, shown, env, cls)
+        return _parse(index, source, shown, env, cls, graph)
     except (MemoryError, RecursionError) as exc:
         return _failed(shown, 1, "cpp-walk", f"the walk over this file's syntax tree ran out of "
                        f"{'memory' if isinstance(exc, MemoryError) else 'depth'}; its ROS calls are not recovered")
@@ -233,7 +236,7 @@ def _failed(shown: str, line: int, code: str, message: str) -> FileResult:
     return result
 
 
-def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
+def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None, graph: bool) -> FileResult:
     try:
         scan = _scan(source, env)
         if scan.macro_bomb is not None:
@@ -252,7 +255,7 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     gaps = [d for d in everywhere if stand_ins and _stand_in_gap(d, stand_ins)]
     genuine = [d for d in everywhere if d not in gaps and not (gaps and _cascade(d, gaps, source))]
     errors = [d for d in genuine if d.location.file and Path(d.location.file.name) == source]
-    result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2,
+    result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2, graph=graph,
                   workspace=tuple(str(root.resolve()) for root in env.roots))
     result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
     result.diagnostics += _blocked_includes(tu, source, shown, scan)

@@ -94,11 +94,11 @@ FIXED_TYPES = {
 
 
 def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool, cls: str | None = None,
-         ros2: bool = False, workspace: tuple[str, ...] = ()) -> FileResult:
+         ros2: bool = False, workspace: tuple[str, ...] = (), graph: bool = False) -> FileResult:
     """Read one parsed file; with `cls`, only that class's methods (and free functions) count.
-    `ros2`: the file is ROS 2 code (rclcpp/walker.py reads its API)."""
+    `ros2`: the file is ROS 2 code (rclcpp/walker.py reads its API); `graph`: with its call graph."""
     walker = _Walker(source, shown, cls, ros2, workspace or (str(source.parent),))
-    if cls is None:
+    if graph:
         walker.result.graph, walker.functions = build(tu.cursor, walker.source, walker.scope.workspace_header)
         walker.result.graph.unsure = incomplete_ast
     walker.walk(tu.cursor)
