@@ -238,3 +238,43 @@ def test_classes_nested_in_functions_and_classes_are_read(tmp_path: Path) -> Non
     sink = DiagnosticSink()
     s = extract_python(tmp_path / "nested.py", "demo", "nested.py", "nested.py", sink)
     assert sorted((p.kind, p.name) for p in s.ports) == [("publisher", "out"), ("subscriber", "in")]
+
+
+LIBRARY = r'''#include <ros/ros.h>
+#include <std_msgs/String.h>
+void cb(const std_msgs::String::ConstPtr& m) {}
+struct Listener { Listener(); ros::Subscriber sub; };
+Listener::Listener() { ros::NodeHandle nh; sub = nh.subscribe<std_msgs::String>("heard", 1, &cb); }
+struct Helper { void run(); void stop(); ros::Publisher pub; };
+void Helper::run() { ros::NodeHandle nh; pub = nh.advertise<std_msgs::String>("helped", 1); }
+'''
+
+
+def _linked_ports(tmp_path: Path, main: str, library: str = LIBRARY) -> list[str]:
+    (tmp_path / "main.cpp").write_text(main)
+    (tmp_path / "lib.cpp").write_text(library)
+    files = [tmp_path / "main.cpp", tmp_path / "lib.cpp"]
+    s = extract_cpp(files, "demo", "m", CppEnvironment([]), {f: f.name for f in files}, DiagnosticSink(),
+                    linked=files[1:])
+    return sorted(str(p.name) for p in s.ports)
+
+
+def test_library_ports_count_where_the_executable_reaches_them(tmp_path: Path) -> None:
+    """A linked library's port counts when own code calls its function, through a function
+    pointer whose address it takes, or a call clang cannot resolve (a template's, by name)."""
+    head = '#include <ros/ros.h>\nstruct Helper { void run(); };\n'
+    assert _linked_ports(tmp_path, head + "int main() { Helper h; }\n") == []
+    assert _linked_ports(tmp_path, head + "int main() { Helper h; h.run(); }\n") == ["helped"]
+    assert _linked_ports(tmp_path, head + "int main() { auto f = &Helper::run; }\n") == ["helped"]
+    assert _linked_ports(tmp_path, head + "template <class T> void go(T& t) { t.run(); }\n"
+                         "int main() { Helper h; go(h); }\n") == ["helped"]
+
+
+def test_library_ports_stay_when_reachability_cannot_be_decided(tmp_path: Path) -> None:
+    """A reached library function in a file that does not compile may call anything: every
+    library port is kept; one that is not reached does not matter."""
+    broken = LIBRARY.replace("#include <ros/ros.h>", "#include <ros/ros.h>\n#include <no/such_header.h>") + \
+        "void Helper::stop() { undeclared(); }\n"
+    head = '#include <ros/ros.h>\nstruct Helper { void run(); void stop(); };\n'
+    assert _linked_ports(tmp_path, head + "int main() { Helper h; h.stop(); }\n", broken) == ["heard", "helped"]
+    assert _linked_ports(tmp_path, head + "int main() { }\n", broken) == []

@@ -154,9 +154,9 @@ class _Builder:
             kind, ref = cursor.kind, cursor.referenced
             if kind in (K.CALL_EXPR, K.DECL_REF_EXPR, K.MEMBER_REF_EXPR) and ref is not None and ref.kind in _FUNCTIONS:
                 found.add(function_name(ref))
-            elif kind in (K.CALL_EXPR, K.MEMBER_REF_EXPR, K.OVERLOADED_DECL_REF) and cursor.spelling and \
-                    (ref is None or ref.kind == K.OVERLOADED_DECL_REF):  # dependent on a template argument
-                found.add(ANY + cursor.spelling)
+            elif kind in (K.CALL_EXPR, K.MEMBER_REF_EXPR, K.DECL_REF_EXPR, K.OVERLOADED_DECL_REF) and \
+                    (ref is None or ref.kind == K.OVERLOADED_DECL_REF) and (name := _spelled(cursor)):
+                found.add(ANY + name)  # dependent on a template argument, or not declared
             elif kind in (K.TYPE_REF, K.TEMPLATE_REF) and ref is not None and ref.kind in _CLASSES:
                 found.add(_constructor(ref))
         return found
@@ -165,6 +165,14 @@ class _Builder:
         """The constructors of a member or base of class type (a pointer builds nothing)."""
         decl = type_.get_canonical().get_declaration()
         return {_constructor(decl)} if decl.kind in _CLASSES else set()
+
+
+def _spelled(cursor: ci.Cursor) -> str:
+    """The name an unresolved reference spells (`t.run` of a template's `t`: run)."""
+    if cursor.spelling or cursor.kind == K.CALL_EXPR:
+        return cursor.spelling
+    words = [t.spelling for t in cursor.get_tokens() if t.kind == ci.TokenKind.IDENTIFIER]
+    return words[-1] if words else ""
 
 
 def _code(cursor: ci.Cursor) -> list[ci.Cursor]:
