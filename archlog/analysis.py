@@ -130,7 +130,7 @@ def _cpp(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Executa
     env = CppEnvironment([d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
                          generated_headers(workspace, diagnostics), workspace.roots)
     return lambda exe: _CppJob(exe.sources, {s: workspace.display(s) for s in exe.sources}, exe.package, exe.name,
-                               env, exe.cls, sandbox.current(), dict(budget.current().limits))
+                               env, exe.cls, sandbox.current(), dict(budget.current().limits), exe.linked)
 
 
 CPP_JOB_SECONDS = 300
@@ -147,6 +147,7 @@ class _CppJob:
     cls: str | None = None
     policy: sandbox.Sandbox = field(default_factory=sandbox.current)
     limits: dict[str, int] = field(default_factory=dict)
+    linked: list[Path] = field(default_factory=list)
 
     def __call__(self) -> tuple[NodeSummary, list[Diagnostic]]:
         sink = DiagnosticSink()
@@ -154,7 +155,7 @@ class _CppJob:
         try:
             with sandbox.active(self.policy), budget.active(self.limits):
                 summary = extract_cpp(self.sources, self.package, self.executable, self.env, self.shown, sink,
-                                      self.cls)
+                                      self.cls, self.linked)
         finally:
             signal.alarm(0)
         return summary, sink.items

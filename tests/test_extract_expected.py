@@ -38,12 +38,13 @@ def extract(fixture: Path, sink: DiagnosticSink) -> NodeSummary:
         return extract_python(script, "fixtures", script.name, script.relative_to(fixture).as_posix(), sink,
                               lambda path: path.relative_to(fixture).as_posix())
     if fixture.suffix == ".cpp" or fixture.is_dir():
-        files = sorted(fixture.glob("*.cpp")) if fixture.is_dir() else [fixture]
+        linked = sorted(fixture.glob("lib/*.cpp")) if fixture.is_dir() else []
+        files = (sorted(fixture.glob("*.cpp")) if fixture.is_dir() else [fixture]) + linked
         classes = [c for f in files for c in [c for c, _line in registered_components(f.read_text())]
                    + exported_plugins(f)]
-        shown = {f: f"{fixture.name}/{f.name}" if fixture.is_dir() else f.name for f in files}
+        shown = {f: f"{fixture.name}/{f.relative_to(fixture)}" if fixture.is_dir() else f.name for f in files}
         return extract_cpp(files, "fixtures", fixture.name, cpp_environment(), shown, sink,
-                           classes[0] if classes else None)
+                           classes[0] if classes else None, linked)
     return extract_python(fixture, "fixtures", fixture.name, fixture.name, sink)
 
 

@@ -238,3 +238,88 @@ def test_classes_nested_in_functions_and_classes_are_read(tmp_path: Path) -> Non
     sink = DiagnosticSink()
     s = extract_python(tmp_path / "nested.py", "demo", "nested.py", "nested.py", sink)
     assert sorted((p.kind, p.name) for p in s.ports) == [("publisher", "out"), ("subscriber", "in")]
+
+
+LIBRARY = r'''#include <ros/ros.h>
+#include <std_msgs/String.h>
+void cb(const std_msgs::String::ConstPtr& m) {}
+struct Listener { Listener(); ros::Subscriber sub; };
+Listener::Listener() { ros::NodeHandle nh; sub = nh.subscribe<std_msgs::String>("heard", 1, &cb); }
+struct Helper { void run(); void stop(); ros::Publisher pub; };
+void Helper::run() { ros::NodeHandle nh; pub = nh.advertise<std_msgs::String>("helped", 1); }
+'''
+
+
+def _linked_ports(tmp_path: Path, main: str, library: str = LIBRARY) -> list[str]:
+    (tmp_path / "main.cpp").write_text(main)
+    (tmp_path / "lib.cpp").write_text(library)
+    files = [tmp_path / "main.cpp", tmp_path / "lib.cpp"]
+    s = extract_cpp(files, "demo", "m", CppEnvironment([]), {f: f.name for f in files}, DiagnosticSink(),
+                    linked=files[1:])
+    return sorted(str(p.name) for p in s.ports)
+
+
+def test_library_ports_count_where_the_executable_reaches_them(tmp_path: Path) -> None:
+    """A linked library's port counts when own code calls its function, through a function
+    pointer whose address it takes, or a call clang cannot resolve (a template's, by name)."""
+    head = '#include <ros/ros.h>\nstruct Helper { void run(); };\n'
+    assert _linked_ports(tmp_path, head + "int main() { Helper h; }\n") == []
+    assert _linked_ports(tmp_path, head + "int main() { Helper h; h.run(); }\n") == ["helped"]
+    assert _linked_ports(tmp_path, head + "int main() { auto f = &Helper::run; }\n") == ["helped"]
+    assert _linked_ports(tmp_path, head + "template <class T> void go(T& t) { t.run(); }\n"
+                         "int main() { Helper h; go(h); }\n") == ["helped"]
+
+
+def test_library_ports_stay_when_reachability_cannot_be_decided(tmp_path: Path) -> None:
+    """A reached library function in a file that does not compile may call anything: every
+    library port is kept; one that is not reached does not matter."""
+    broken = LIBRARY.replace("#include <ros/ros.h>", "#include <ros/ros.h>\n#include <no/such_header.h>") + \
+        "void Helper::stop() { undeclared(); }\n"
+    head = '#include <ros/ros.h>\nstruct Helper { void run(); void stop(); };\n'
+    assert _linked_ports(tmp_path, head + "int main() { Helper h; h.stop(); }\n", broken) == ["heard", "helped"]
+    assert _linked_ports(tmp_path, head + "int main() { }\n", broken) == []
+
+
+def _catkin(root: Path, name: str, cmake: str, files: dict[Path, str]) -> None:
+    pkg = root / "src" / name
+    (pkg / "launch").mkdir(parents=True)
+    (pkg / "package.xml").write_text(f"<package format='2'><name>{name}</name><version>0.1.0</version><description>d"
+                                     "</description><maintainer email='dev@example.com'>m</maintainer>"
+                                     "<license>MIT</license></package>")
+    (pkg / "CMakeLists.txt").write_text(cmake)
+    for rel, text in files.items():
+        (pkg / rel).parent.mkdir(parents=True, exist_ok=True)
+        (pkg / rel).write_text(text)
+
+
+def test_a_linked_librarys_unreached_ports_are_not_the_nodes(tmp_path: Path) -> None:
+    """corpus/cpp_ros1_files/library_code_not_reached built as CMake builds it: the executable's
+    own file, a library it links; the library's Listener, never built, subscribes nothing."""
+    from archlog.analysis import analyse
+
+    fixture = Path(__file__).parent.parent / "corpus" / "cpp_ros1_files" / "library_code_not_reached"
+    _catkin(tmp_path, "kit", "project(kit)\nadd_library(kit lib/broadcaster.cpp lib/listener.cpp lib/stages.cpp)\n"
+            "add_executable(sender main.cpp)\ntarget_link_libraries(sender kit ${catkin_LIBRARIES})\n",
+            {p.relative_to(fixture): p.read_text() for p in fixture.rglob("*.*")})
+    (tmp_path / "src" / "kit" / "launch" / "s.launch").write_text('<launch><node pkg="kit" type="sender" name="s"/></launch>')
+    result = analyse([tmp_path], ["kit/launch/s.launch"], {}, [])
+    assert sorted(t for _p, _n, t, _ty in result.store.rows("publisher")) == ["/audit", "/chatter", "/report"]
+    assert list(result.store.rows("subscriber")) == []
+
+
+def test_a_port_exists_when_every_branch_around_it_is_taken(tmp_path: Path) -> None:
+    """corpus/cpp_ros1/roscpp_nested_conditions.cpp under three configurations of its parameters."""
+    from archlog.analysis import analyse
+
+    source = Path(__file__).parent.parent / "corpus" / "cpp_ros1" / "roscpp_nested_conditions.cpp"
+    _catkin(tmp_path, "feat", "project(feat)\nadd_executable(feature src/feature.cpp)\n",
+            {Path("src/feature.cpp"): source.read_text()})
+    got = {}
+    for indices, surface in (("false", "false"), ("false", "true"), ("true", "true")):
+        (tmp_path / "src" / "feat" / "launch" / "f.launch").write_text(
+            f'<launch><node pkg="feat" type="feature" name="f"><param name="use_indices" value="{indices}"/>'
+            f'<param name="use_surface" value="{surface}"/></node></launch>')
+        result = analyse([tmp_path], ["feat/launch/f.launch"], {}, [])
+        got[indices, surface] = sorted(t for _p, _n, t, _ty in result.store.rows("subscriber"))
+    assert got == {("false", "false"): ["/f/input"], ("false", "true"): ["/f/surface"],
+                   ("true", "true"): ["/f/indices", "/f/surface"]}

@@ -160,6 +160,7 @@ def test_catkin_executables_read_the_libraries_of_their_package_they_link(tmp_pa
     sink = DiagnosticSink()
     exes = Workspace([tmp_path], sink).packages["tracking"].executables
     assert [s.name for s in exes["tracker"].sources] == ["main.cpp", "ros.cpp", "core.cpp", "debayer.cpp"]
+    assert [s.name for s in exes["tracker"].linked] == ["ros.cpp", "core.cpp", "debayer.cpp"]
     assert [s.name for s in exes["lost"].sources] == ["gone"]
 
 
@@ -180,6 +181,7 @@ def test_catkin_library_sources_of_classes_the_node_never_names_are_not_its_code
     })
     exe = Workspace([tmp_path], DiagnosticSink()).packages["tfkit"].executables["static_publisher"]
     assert [s.name for s in exe.sources] == ["main.cpp", "static.cpp", "util.cpp"]
+    assert [s.name for s in exe.linked] == ["static.cpp", "util.cpp"]
 
 
 def test_a_package_version_comes_from_the_package_xml_find_would_use(tmp_path: Path) -> None:

@@ -27,6 +27,7 @@ class Port:
     qos: tuple[tuple[str, str], ...] = ()
     queue: Value | None = None
     condition: tuple[Value, str | None] | None = None  # exists when the value equals the text (None: is set)
+    also: tuple[tuple[Value, str | None], ...] = ()  # further conditions that must hold too (enclosing branches)
     info_of: Value | None = None  # image_transport: the image topic (as written) whose remapped sibling this is
     after_tf: tuple[str, ...] = ()  # the node creates it only after these transform waits (TransformWait.id) end
     type_of: tuple[Value, ...] = ()  # models: it carries the type the publishers of these topics (as written) give

@@ -377,9 +377,9 @@ def _each(port: Port, node: LaunchNode, config: LaunchConfig) -> list[Port]:
 
 
 def _present(port: Port, node: LaunchNode, config: LaunchConfig) -> bool:
-    """A port with a condition exists when the condition's value (bound for this instance) matches;
+    """A port with conditions exists when each condition's value (bound for this instance) matches;
     an unknown value keeps the port."""
-    return _holds(port.condition, node, config)
+    return all(_holds(condition, node, config) for condition in (port.condition, *port.also))
 
 
 def _holds(condition: tuple[Value, str | None] | None, node: LaunchNode, config: LaunchConfig) -> bool:

@@ -36,6 +36,7 @@ def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
         extra += "".join(f" {k}={v}" for k, v in p.qos)
         handle = f" handle {json.dumps(plain(p.handle_ns))}" if p.handle_ns else ""
         extra += f" if {json.dumps(plain(p.condition[0]))}={p.condition[1]}" if p.condition else ""
+        extra += "".join(f" and {json.dumps(plain(value))}={wanted}" for value, wanted in p.also)
         elsewhere = summary.origin == "python" and summary.name_file and p.file != summary.name_file
         site = f"{p.file}:{p.line}" if elsewhere else p.line  # a port of a module the script calls
         lines.append(f"{site}: {p.kind} {json.dumps(plain(p.name))} {json.dumps(plain(p.type))}{handle}{extra}")

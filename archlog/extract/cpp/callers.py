@@ -33,8 +33,10 @@ def settled_ports(ports: list[Port], sites: Sites) -> list[Port]:
     found: list[Port] = []
     for port in ports:
         condition = port.condition and (settle(port.condition[0], sites), port.condition[1])
+        also = tuple((settle(value, sites), wanted) for value, wanted in port.also)
         done = replace(port, name=settle(port.name, sites), handle_ns=settle(port.handle_ns, sites),
-                       default=None if port.default is None else settle(port.default, sites), condition=condition)
+                       default=None if port.default is None else settle(port.default, sites), condition=condition,
+                       also=also)
         if done not in found:
             found.append(done)
     return found
@@ -81,11 +83,11 @@ def function_keys(function: ci.Cursor) -> tuple[str, ...]:
         usr = cursor.canonical.get_usr()
         if usr and usr not in keys:
             keys.append(usr)
-            pending += _overridden(cursor)
+            pending += overridden(cursor)
     return tuple(keys)
 
 
-def _overridden(method: ci.Cursor) -> list[ci.Cursor]:
+def overridden(method: ci.Cursor) -> list[ci.Cursor]:
     """clang_getOverriddenCursors, which the Python bindings do not wrap."""
     if method.kind != ci.CursorKind.CXX_METHOD:
         return []

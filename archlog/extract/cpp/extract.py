@@ -21,6 +21,7 @@ import shlex
 import shutil
 import subprocess
 import tempfile
+from collections.abc import Collection
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -33,6 +34,7 @@ from archlog.extract.cpp.behavior import FileBehavior, link_files
 from archlog.extract.cpp.cache import ResultCache, cache_dir, key
 from archlog.extract.cpp.callers import merged_sites, settled_loads, settled_ports
 from archlog.extract.cpp.macros import MACRO_TOKENS, Macro, defines, macro_bomb, nested_calls
+from archlog.extract.cpp.reach import reached
 from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp import walk
 from archlog.extract.cpp.stubs import (
@@ -123,13 +125,15 @@ class CppEnvironment:
 
 
 def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvironment,
-                shown: dict[Path, str], diagnostics: DiagnosticSink, cls: str | None = None) -> NodeSummary:
+                shown: dict[Path, str], diagnostics: DiagnosticSink, cls: str | None = None,
+                linked: Collection[Path] = ()) -> NodeSummary:
     """The summary of one executable (or of one nodelet class): every source file read, from the
     cache when unchanged. A nodelet's files are read after the one that names its class, with the
     base classes found there (their methods, defined in other files of the library, are the node's
-    code too); a file read before more of them were known is read again."""
+    code too); a file read before more of them were known is read again. The ports of `linked`
+    sources (its libraries') count only when the executable's own code reaches them (reach.py)."""
     summary = NodeSummary(package, executable, "cpp")
-    reader = _Reader(env, shown, diagnostics, summary)
+    reader = _Reader(env, shown, diagnostics, summary, graphs=bool(linked))
     if cls is not None:
         last = cls.rsplit("::", 1)[-1]
         sources = sorted(sources, key=lambda s: re.search(rf"\b{re.escape(last)}\b", _text(s)) is None)
@@ -145,9 +149,10 @@ def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvi
             cls = "|".join(result.classes)  # files read before the class's bases were known: again
             pending += [s for s, (_r, read_as) in results.items() if read_as != cls and s not in pending]
     behaviors: list[FileBehavior] = []
+    running = _reached_code(sources, linked, {s: r for s, (r, _cls) in results.items()})
     for source in sources:
         if source in results:
-            _merge(summary, results[source][0], diagnostics)
+            _merge(summary, results[source][0], diagnostics, running if source in linked else None)
             behaviors.append(results[source][0].behavior)
     sites = merged_sites([result.calls for result, _cls in results.values()])
     summary.ports, summary.loads = settled_ports(summary.ports, sites), settled_loads(summary.loads, sites)
@@ -165,6 +170,7 @@ class _Reader:
     shown: dict[Path, str]
     diagnostics: DiagnosticSink
     summary: NodeSummary
+    graphs: bool = False  # each file's call graph too (an executable linking libraries: reach.py)
     cache: ResultCache = field(default_factory=lambda: ResultCache("cpp"))
     index: ci.Index | None = None
 
@@ -187,11 +193,12 @@ class _Reader:
                                  "sources; its ROS calls are not recovered", "error")
             self.summary.incomplete = self.summary.incomplete or f"{name}: too large to read"
             return None
-        cache_key = key(self.env.fingerprint, name, cls or "", " ".join(self.env.file_args(source)), data)
+        cache_key = key(self.env.fingerprint, name, cls or "", " ".join(self.env.file_args(source)), data,
+                        "graph" if self.graphs else "")
         result = self.cache.get(cache_key)
         if not isinstance(result, FileResult) or not _still_valid(result, self.env):
             self.index = self.index or ci.Index.create()
-            result = _parse_guarded(self.index, source, name, self.env, cls)
+            result = _parse_guarded(self.index, source, name, self.env, cls, self.graphs)
             self.cache.put(cache_key, result)
         return result
 
@@ -213,10 +220,11 @@ def _settle_behavior(summary: NodeSummary) -> None:
     summary.writes = [w for w in summary.writes if w.var in guarded]
 
 
-def _parse_guarded(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
+def _parse_guarded(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None,
+                   graph: bool = False) -> FileResult:
     """`_parse`, with the walk's running out of memory or depth an error diagnostic."""
     try:
-        return _parse(index, source, shown, env, cls)
+        return _parse(index, source, shown, env, cls, graph)
     except (MemoryError, RecursionError) as exc:
         return _failed(shown, 1, "cpp-walk", f"the walk over this file's syntax tree ran out of "
                        f"{'memory' if isinstance(exc, MemoryError) else 'depth'}; its ROS calls are not recovered")
@@ -228,7 +236,7 @@ def _failed(shown: str, line: int, code: str, message: str) -> FileResult:
     return result
 
 
-def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None) -> FileResult:
+def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: str | None, graph: bool) -> FileResult:
     try:
         scan = _scan(source, env)
         if scan.macro_bomb is not None:
@@ -247,7 +255,7 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     gaps = [d for d in everywhere if stand_ins and _stand_in_gap(d, stand_ins)]
     genuine = [d for d in everywhere if d not in gaps and not (gaps and _cascade(d, gaps, source))]
     errors = [d for d in genuine if d.location.file and Path(d.location.file.name) == source]
-    result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2,
+    result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2, graph=graph,
                   workspace=tuple(str(root.resolve()) for root in env.roots))
     result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
     result.diagnostics += _blocked_includes(tu, source, shown, scan)
@@ -572,8 +580,21 @@ def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
     return not any(_FOUND[(env.fingerprint, name)] for name in result.missing)
 
 
-def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink) -> None:
-    summary.ports += [p for p in result.ports if p not in summary.ports]  # a header's code is read with each file
+def _reached_code(sources: list[Path], linked: Collection[Path], results: dict[Path, FileResult]) -> set[str] | None:
+    """The functions the executable's own files reach (None: every function counts)."""
+    graphs = {s: r.graph for s, r in results.items() if r.graph is not None}
+    own = [graphs.get(s) for s in sources if s not in linked]
+    if not linked or len(graphs) < len(results) or None in own:
+        return None
+    return reached(graphs.values(), {f for graph in own if graph is not None for f in graph.own})
+
+
+def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink, running: set[str] | None) -> None:
+    """Add a file's result; with `running`, only its ports made in those functions (or outside any)."""
+    graph = result.graph
+    ports = [p for p in result.ports if running is None or graph is None
+             or graph.ports.get((p.file, p.line, p.column), "") in running | {""}]
+    summary.ports += [p for p in ports if p not in summary.ports]  # a header's code is read with each file
     summary.loads += [n for n in result.loads if n not in summary.loads]
     if result.default_name is not None and summary.default_name is None:
         summary.default_name, summary.anonymous = result.default_name, result.anonymous

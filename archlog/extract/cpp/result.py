@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cpp.behavior import FileBehavior
 from archlog.extract.cpp.callers import Sites
+from archlog.extract.cpp.reach import CallGraph
 from archlog.extract.summary import LoadedNodelet, Port
 from archlog.values import Value
 
@@ -30,3 +31,4 @@ class FileResult:
     loads: list[LoadedNodelet] = field(default_factory=list)
     classes: list[str] = field(default_factory=list)  # a nodelet's class and the bases this file knows of
     calls: Sites = field(default_factory=dict)  # the handle and name arguments of its calls (callers.py)
+    graph: CallGraph | None = None  # what its functions call (reach.py), for an executable's file

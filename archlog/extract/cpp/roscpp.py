@@ -45,10 +45,11 @@ from archlog.extract.cpp.handles import (
     is_handle_type,
 )
 from archlog.extract.cpp.loader import LOADER, loaded_nodelets
-from archlog.extract.cpp.param_guards import Branches, initial_value, tested_variable
+from archlog.extract.cpp.param_guards import Branches, initial_value, required
 from archlog.extract.cpp.rclcpp.durations import Durations
 from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
 from archlog.extract.cpp.rclcpp.walker import RclcppWalker
+from archlog.extract.cpp.reach import Functions, build
 from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp_fallback import roscpp_fallback
 from archlog.extract.cpp.scope import Scope
@@ -93,10 +94,13 @@ FIXED_TYPES = {
 
 
 def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool, cls: str | None = None,
-         ros2: bool = False, workspace: tuple[str, ...] = ()) -> FileResult:
+         ros2: bool = False, workspace: tuple[str, ...] = (), graph: bool = False) -> FileResult:
     """Read one parsed file; with `cls`, only that class's methods (and free functions) count.
-    `ros2`: the file is ROS 2 code (rclcpp/walker.py reads its API)."""
+    `ros2`: the file is ROS 2 code (rclcpp/walker.py reads its API); `graph`: with its call graph."""
     walker = _Walker(source, shown, cls, ros2, workspace or (str(source.parent),))
+    if graph:
+        walker.result.graph, walker.functions = build(tu.cursor, walker.source, walker.scope.workspace_header)
+        walker.result.graph.unsure = incomplete_ast
     walker.walk(tu.cursor)
     walker.result.classes = walker.scope.classes
     walker.members(walker.scope.members)
@@ -143,6 +147,7 @@ class _Walker:
         self.port_calls: dict[ci.Cursor, list[str]] = {}  # the call that made each port (behavior.py)
         self.named_callbacks: list[tuple[str, Port]] = []  # functions named in calls read from the tokens
         self.kept: list[ci.Cursor] = []
+        self.functions = Functions()  # where the functions are (for the call graph of an executable's file)
         self.durations = Durations(self)
         self.handles = Handles(self)
         self.branches = Branches([])
@@ -507,19 +512,24 @@ class _Walker:
                 file, loc.line, "cpp-private-name",
                 f"roscpp throws InvalidNameException for '{name}': NodeHandle methods do not accept ~names "
                 "(the node dies at start-up); use a NodeHandle(\"~\") instead", "error", loc.column))
+        conditions = self.param_conditions(call)
         self.result.ports.append(Port(kind, name, type_, file, loc.line, loc.column, handle, default, qos, queue,
-                                      self.param_condition(call), info_of=info_of))
+                                      conditions[0] if conditions else None, info_of=info_of,
+                                      also=tuple(conditions[1:])))
+        if self.result.graph is not None and (function := self.functions.around(call)) is not None:
+            self.result.graph.ports[(file, loc.line, loc.column)] = function
 
-    def param_condition(self, call: ci.Cursor) -> tuple[Value, str | None] | None:
-        """The parameter the innermost if/else around a port's call tests, and the value it needs."""
-        branch = self.branches.innermost(call)
-        tested = tested_variable(branch[0], branch[1]) if branch is not None else None
-        ref = self.param_vars.get(self.key(tested[0])) if tested is not None else None
-        if tested is not None and ref is None and tested[0].kind == K.PARM_DECL:  # a flag its callers pass
-            ref = self.from_call_sites(tested[0], call, self.value, tested[0].spelling)
-        if branch is None or tested is None or not isinstance(ref, (ParamRef, FromCaller)):
-            return None
-        return ref, "true" if branch[1] != tested[1] else "false"
+    def param_conditions(self, call: ci.Cursor) -> list[tuple[Value, str | None]]:
+        """The parameters the if/else branches around a port's call test, and the values they need
+        (innermost first)."""
+        found: list[tuple[Value, str | None]] = []
+        for variable, holds in required(self.branches.around(call)):
+            ref = self.param_vars.get(self.key(variable))
+            if ref is None and variable.kind == K.PARM_DECL:  # a flag its callers pass
+                ref = self.from_call_sites(variable, call, self.value, variable.spelling)
+            if isinstance(ref, (ParamRef, FromCaller)):
+                found.append((ref, "true" if holds else "false"))
+        return found
 
     # -- when the AST is incomplete -------------------------------------------------------------
     def token_fallback(self, tu: ci.TranslationUnit) -> None:

@@ -69,7 +69,8 @@ class ExecutableFinder:
         constructors of classes that no source read with the executable names (tf2_ros's library
         holds Buffer, TransformListener...: static_transform_publisher uses StaticTransformBroadcaster
         only; a nodelet loaded by its plugin name, as image_proc's node loads "image_proc/debayer"
-        through nodelet::Loader, runs under its own name: system/nodelets.py)."""
+        through nodelet::Loader, runs under its own name: system/nodelets.py). Of the files read, the
+linked ones count only where the executable's own code reaches them (extract/cpp/reach.py)."""
         words = _Words([package.path / "include", *package.include_dirs])
         for exe in package.executables.values():
             if exe.lang != "cpp" or exe.cls is not None:
@@ -77,17 +78,18 @@ class ExecutableFinder:
             own = "\n".join(_text(s) for s in exe.sources)
             linked = [s for s in _linked(package, exe.target) if s not in exe.sources]
             if package.ament:
-                exe.sources += [s for s in linked if all(re.search(rf"\b{c}\b", own) for c in _node_classes(s))]
+                exe.linked = [s for s in linked if all(re.search(rf"\b{c}\b", own) for c in _node_classes(s))]
+                exe.sources += exe.linked
                 continue
             classes = {s: exported_plugins(s) or _constructed_classes(s) for s in linked}
-            plain = [s for s in linked if not classes[s]]
-            exe.sources += plain
-            named_words = words.with_headers(exe.sources)
+            exe.linked = [s for s in linked if not classes[s]]
+            named_words = words.with_headers(exe.sources + exe.linked)
             waiting = [s for s in linked if classes[s]]
             while named := [s for s in waiting if any(cls.rsplit("::", 1)[-1] in named_words for cls in classes[s])]:
-                exe.sources += named
+                exe.linked += named
                 waiting = [s for s in waiting if s not in named]
                 named_words |= words.with_headers(named)
+            exe.sources += exe.linked
 
     def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int,
                    asker: tuple[Path, int] | None = None) -> None:

@@ -26,6 +26,7 @@ class Executable:
     cls: str | None = None
     target: str = ""  # the CMake target it is built from
     plugin: str = ""  # a nodelet's name as its plugin description declares it (pkg/Type)
+    linked: list[Path] = field(default_factory=list)  # those of `sources` from libraries it links
 
     @property
     def kinds(self) -> list[tuple[str, str]]:
