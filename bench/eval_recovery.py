@@ -333,7 +333,9 @@ def _controller_instances(analysis) -> set[str]:
 
 CAUSES = {
     "linked-library": "the node's code is in a catkin library the executable links (add_library + "
-                      "target_link_libraries); archlog reads only the executable's own sources. No diagnostic.",
+                      "target_link_libraries); archlog read only the executable's own sources, with no diagnostic. The "
+                      "linked sources are now read, and since 2026-11-24 their ports count when the executable's "
+                      "own code reaches them (extract/cpp/reach.py).",
     "model-condition": "archlog/models/diff_drive_controller.yaml published /tf only if ~enable_odom_tf; the "
                        "controller advertises /tf unconditionally (diff_drive_controller.cpp:727), so the master "
                        "sees it even with enable_odom_tf: false (husky control.yaml). Since 2026-11-24 the model "
@@ -353,7 +355,7 @@ CAUSES = {
     "no-compile": "the C++ does not compile here (rosbag/bag.h, yaml-cpp, generated dynamic_reconfigure "
                   "headers missing) and the token fallback misses calls on members of unresolved types "
                   "(amcl's diagnostic_updater, kinetic amcl's tf::TransformListener). Since 2026-11-24 amcl.yaml "
-                  "lists bag mode's base_scan (`if: {argv: --run-from-bag}`), so the source, which lacks "
+                  "lists bag mode's base_scan (`if: {option: [--run-from-bag]}`), so the source, which lacks "
                   "/diagnostics and has base_scan unconditionally, resolves fewer ports and the model is used.",
     "footprint-sub": "each costmap subscribes ~<costmap>/footprint as geometry_msgs/Polygon while publishing it "
                      "as PolygonStamped; archlog/models/move_base.yaml leaves the subscriber out so that every "
