@@ -9,8 +9,10 @@ from pathlib import Path
 import clingo
 import pytest
 from conftest import CORPUS, load_case
+from test_rule_layout import relations_read_by_python
 
 from archlog.analysis import analyse
+from archlog.facts.schema import BY_NAME
 from archlog.facts.store import FactStore
 from archlog.queries.session import Session
 from archlog.rules.engine import Engine, Finding
@@ -152,3 +154,96 @@ def test_a_whole_fact_relation_reads_as_clingo_holds_it() -> None:
     whole = session.query("name_namespace(T, NS)").rows
     assert whole == [("/a", "/"), ("/c", "/")]
     assert sorted(session.query('name_namespace(T, NS), NS = "/"').rows) == whole  # given to clingo
+
+
+def every_atom(engine: Engine, store: FactStore) -> set[str]:
+    ctl = clingo.Control(["--warn=none"])
+    ctl.add("base", [], engine.declared + "\n".join(p.text for p in engine.ruleset.programs) + store.program())
+    ctl.ground([("base", [])], context=FUNCTIONS)
+    return {str(a.symbol) for a in ctl.symbolic_atoms if a.symbol.name not in BY_NAME}
+
+
+def test_rows_a_negated_fact_rules_out_are_not_given() -> None:
+    """`opaque_node(N) :- node(N, ...), not node_source(N, _)` needs only the nodes without a source,
+    AL301's `node(N, _, _, E1), node(N, _, _, E2), E1 < E2` only the names two node elements share,
+    and the `not` only the node_source rows of the nodes given. Every derived atom is that of
+    grounding every fact."""
+    store = FactStore()
+    for name, elem, source in (("/a", "e1", "cpp"), ("/b", "e2", None), ("/c", "e3", "model"), ("/c", "e4", "model")):
+        store.add("node", name, "pkg", name[1:], elem)
+        store.locate(elem, "a.launch", int(elem[1:]))
+        if source:
+            store.add("node_source", name, source)
+    store.add("publisher", "p1", "/a", "/x", "std_msgs/String")
+    engine = Engine(load_rules([]))
+    grounded = engine.start(store)
+    assert grounded.given("node") == 3 and grounded.given("node_source") == 1  # /b, /c twice; /c's source
+    grounded.load(list(grounded.later))
+    atoms = {str(a.symbol) for a in grounded.ctl.symbolic_atoms if a.symbol.name not in BY_NAME}
+    assert {'opaque_node("/b")', 'duplicate_node("/c","e4","e3")'} <= atoms
+    assert atoms == every_atom(engine, store)
+
+
+def test_a_negated_fact_gets_the_rows_other_rules_give_its_positive_atom() -> None:
+    """AL301 gives clingo both rows of the twice-named /c; the opaque_node rule then sees them too,
+    so the node_source rows of /c must be there for its `not`."""
+    store = FactStore()
+    for elem in ("e1", "e2"):
+        store.add("node", "/c", "pkg", "c", elem)
+        store.locate(elem, "a.launch", int(elem[1:]))
+    store.add("node_source", "/c", "model")
+    engine = Engine(load_rules([]))
+    grounded = engine.start(store)
+    assert grounded.given("node_source") == 1
+    assert not any(True for _ in grounded.ctl.symbolic_atoms.by_signature("opaque_node", 1))
+
+
+def incomplete_store(opaque: int) -> FactStore:
+    """`opaque` incomplete nodes and one complete one, each with a publisher of msgs/T on its own topic."""
+    store = FactStore()
+    for i in range(opaque + 1):
+        node = f"/n{i}"
+        store.add("node", node, "pkg", "exe", f"e{i}")
+        store.add("node_source", node, "model")
+        if i < opaque:
+            store.add("node_incomplete", node, "generated")
+        store.add("publisher", f"p{i}", node, f"/t{i}", "msgs/T")
+    return store
+
+
+@pytest.mark.parametrize("opaque", [1, 2])
+def test_opaque_near_by_type_names_another_opaque_node(opaque: int) -> None:
+    """A name of type T is near an opaque node using T other than its port's node: with one opaque
+    node, not for that node's own port; with two, for every port."""
+    store = incomplete_store(opaque)
+    session = Session(store, load_rules([]))
+    near = set(session.query("opaque_near(T, N)").rows)
+    everyone = {(f"/t{i}", f"/n{i}") for i in range(opaque + 1)}
+    assert near == (everyone - {("/t0", "/n0")} if opaque == 1 else everyone)
+    assert near == {(t, n) for t, n in everyone for m, t2 in session.query("opaque_may_use(M, T)").rows
+                    if t2 == t and m != n}
+
+
+def test_opaque_may_use_is_grounded_when_named() -> None:
+    """No rule reads opaque_may_use (it can hold every name of a type for every opaque node using
+    it): it is grounded when a query, a rule defined on the fly or an explanation names it."""
+    store = incomplete_store(3)
+    engine = Engine(load_rules([]))
+    assert "opaque_may_use" in engine.start(store).later
+    session = Session(store, load_rules([]))
+    assert len(session.query("opaque_may_use(M, T)").rows) == 3 * 4
+    assert "opaque_may_use" not in session.grounded.later
+    session = Session(store, load_rules([]))
+    assert session.query('opaque_may_use("/n0", T), T != "/t0"').rows
+    session = Session(store, load_rules([]))
+    assert session.explain(clingo.Function("opaque_may_use", [clingo.String("/n0"), clingo.String("/t1")])).kind == \
+        "derived"
+    counts = {name: count for name, _arity, count, _kind in Session(store, load_rules([])).relations()}
+    assert counts["opaque_may_use"] == 12
+
+
+def test_derived_relations_python_reads_are_grounded_at_once() -> None:
+    """Python that reads the grounded program directly (`by_signature`, not a query) finds them."""
+    later = Engine(load_rules([])).start(corpus_store("misplaced_remap")).later
+    read = {name for name, arity in relations_read_by_python() if arity is not None and name not in BY_NAME}
+    assert "required_topic" in read and not read & set(later)

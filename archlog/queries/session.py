@@ -133,7 +133,8 @@ class Session:
     # -- relations ------------------------------------------------------------------------
     def relations(self) -> list[tuple[str, int, int, str]]:
         """(name, arity, number of tuples, 'fact' or 'derived') of every fact relation (loaded into
-        clingo or not) and of everything derived."""
+        clingo or not) and of everything derived (grounding the relations that wait to be named)."""
+        self._load(list(self.grounded.later))
         counts = {(r.name, r.arity): self.store.count(r.name) for r in BY_NAME.values()}
         for name, arity, _positive in self.ctl.symbolic_atoms.signatures:
             if (name, arity) not in counts:
@@ -152,6 +153,7 @@ class Session:
             return Result(variables, self.store.read_back(whole[0]), time.perf_counter() - start)
         if whole is not None and whole in self._known():  # a derived relation, all columns: read it as it is
             self._finish_open()
+            self._load([whole[0]])
             atoms = self.ctl.symbolic_atoms.by_signature(*whole)
         else:
             self.parts += 1
@@ -202,8 +204,9 @@ class Session:
         self._known_cache = self._known() | set(parsed.heads)
 
     def _load(self, relations: Iterable[str]) -> None:
-        """Give clingo the fact relations it lacks of these (grounding them ends the open result)."""
-        missing = [name for name in relations if name in BY_NAME and name not in self.grounded.loaded]
+        """Give clingo the fact relations it lacks of these, and the rules of derived ones that wait
+        to be named (grounding them ends the open result)."""
+        missing = [name for name in relations if self.grounded.lacks(name)]
         if missing:
             self._finish_open()
             self.grounded.load(missing)
