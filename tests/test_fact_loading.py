@@ -9,7 +9,6 @@ from pathlib import Path
 import clingo
 import pytest
 from conftest import CORPUS, load_case
-from test_rule_layout import relations_read_by_python
 
 from archlog.analysis import analyse
 from archlog.facts.schema import BY_NAME
@@ -238,12 +237,8 @@ def test_opaque_may_use_is_grounded_when_named() -> None:
     session = Session(store, load_rules([]))
     assert session.explain(clingo.Function("opaque_may_use", [clingo.String("/n0"), clingo.String("/t1")])).kind == \
         "derived"
-    counts = {name: count for name, _arity, count, _kind in Session(store, load_rules([])).relations()}
-    assert counts["opaque_may_use"] == 12
-
-
-def test_derived_relations_python_reads_are_grounded_at_once() -> None:
-    """Python that reads the grounded program directly (`by_signature`, not a query) finds them."""
-    later = Engine(load_rules([])).start(corpus_store("misplaced_remap")).later
-    read = {name for name, arity in relations_read_by_python() if arity is not None and name not in BY_NAME}
-    assert "required_topic" in read and not read & set(later)
+    session = Session(store, load_rules([]))
+    assert ("opaque_may_use", 2) in session.waiting()
+    assert "opaque_may_use" not in {name for name, _arity, _count, _kind in session.relations()}  # not grounded
+    session.query("opaque_may_use(M, T)")
+    assert ("opaque_may_use", "derived", 12) in {(name, kind, count) for name, _a, count, kind in session.relations()}

@@ -133,14 +133,19 @@ class Session:
     # -- relations ------------------------------------------------------------------------
     def relations(self) -> list[tuple[str, int, int, str]]:
         """(name, arity, number of tuples, 'fact' or 'derived') of every fact relation (loaded into
-        clingo or not) and of everything derived (grounding the relations that wait to be named)."""
-        self._load(list(self.grounded.later))
+        clingo or not) and of everything derived so far (`waiting` names the other derived ones)."""
         counts = {(r.name, r.arity): self.store.count(r.name) for r in BY_NAME.values()}
+        waiting = set(self.waiting())
         for name, arity, _positive in self.ctl.symbolic_atoms.signatures:
-            if (name, arity) not in counts:
+            if (name, arity) not in counts and (name, arity) not in waiting:
                 counts[(name, arity)] = sum(1 for _ in self.ctl.symbolic_atoms.by_signature(name, arity))
         return sorted((n, a, count, "fact" if n in BY_NAME else "derived")
                       for (n, a), count in counts.items() if not n.startswith("__"))
+
+    def waiting(self) -> list[tuple[str, int]]:
+        """(name, arity) of the derived relations whose rules are grounded when first named (in a
+        query, a rule or an explanation): no other rule reads them."""
+        return sorted({sig for rules in self.grounded.later.values() for rule in rules for sig in rule.heads})
 
     # -- queries and rules ----------------------------------------------------------------
     def query(self, goal: str) -> Result:
