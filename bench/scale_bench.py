@@ -245,7 +245,7 @@ def main() -> None:
                 total = sum(split.values())
                 largest = ", ".join(f"{k} {v / total:.0%}" for k, v in sorted(split.items(), key=lambda kv: -kv[1])[:3])
                 cpu.setdefault(naming, {})[size] = seconds
-                print(f"| {naming} | {size:,} | {near:,} | {seconds:.1f} | {peak:,.0f} | {split['to-clingo'] / total:.0%} "
+                print(f"| {naming} | {size:,} | {near:,} | {seconds:.1f} | {peak:,.0f} | {split['to-clingo'] / total:.1%} "
                       f"| {largest} | "
                       f"{' '.join(f'{r}:{c}' for r, c in sorted(rules.items()))} | "
                       f"{' '.join(f'{k}:{v}' for k, v in sorted(planted.items()))} |", flush=True)
