@@ -12,13 +12,18 @@ clingo, so a row is given to it only when a rule can read it, or when asked for:
 - a relation read only under a plain `not` gets the rows that can match the rows clingo has of the
   positive fact atoms binding its variables;
 - every other row (of a relation no rule reads, or rows no join can use) when a query, an
-  on-the-fly rule or an explanation names its relation (`Grounded.load`).
+  on-the-fly rule or an explanation names its relation (`Grounded.load`); so are the rules of a
+  derived relation no other rule reads (`opaque_may_use`).
+
+The first stratum's rows reach clingo as a ground program (aspif), which it reads faster than it
+parses facts; that is possible only before anything is grounded.
 """
 
 from __future__ import annotations
 
 import functools
 import operator
+import tempfile
 import time
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
@@ -175,11 +180,12 @@ class Grounded:
         """Whether clingo lacks rows of a fact relation or the rules of a derived one."""
         return (relation in BY_NAME and relation not in self.loaded) or relation in self.later
 
-    def add_stratum(self, rules: list[Reads], complete: Callable[[Signature], bool]) -> None:
+    def add_stratum(self, rules: list[Reads], complete: Callable[[Signature], bool], whole: Iterable[str] = (),
+                    preamble: str = "") -> None:
         """Ground rules that read only relations clingo has whole (`complete`) besides those they
-        define, with the fact rows they can read."""
+        define, with the fact rows they can read (and every row of the fact relations `whole`)."""
         clock = time.perf_counter()  # choosing rows is part of handing facts to clingo
-        wanted: dict[str, set[int] | None] = {}
+        wanted: dict[str, set[int] | None] = {name: None for name in whole if name in BY_NAME}
         active = [rule for rule in rules if not any(self.empty(sig) for sig in rule.guards if complete(sig))]
         for rule in active:  # (a rule a relation it joins is empty for derives nothing)
             for name, _arity in rule.reads & FACTS:
@@ -195,7 +201,7 @@ class Grounded:
                         changed |= _want(wanted, name, rows)
         self.timings["to-clingo"] += time.perf_counter() - clock
         self.give(wanted)
-        self.add_rules([rule.rule for rule in rules])
+        self.add_rules([rule.rule for rule in rules], preamble)
 
     def give(self, rows: dict[str, set[int] | None]) -> None:
         """Give clingo these rows (indexes; None: all) of fact relations, those it lacks."""
@@ -217,9 +223,12 @@ class Grounded:
                 self.loaded.add(name)
             else:
                 self._given[name] = given
-        if any(text):
+        facts = "".join(text)
+        if facts and not self._parts and facts.isascii() and _load_ground(self.ctl, facts):  # nothing grounded yet
+            self.timings["to-clingo"] += time.perf_counter() - clock
+        elif facts:
             part = self._part()
-            self.ctl.add(part, [], "".join(text))
+            self.ctl.add(part, [], facts)
             self.timings["to-clingo"] += time.perf_counter() - clock
             self.ground(part)
 
@@ -262,22 +271,37 @@ class Grounded:
         return f"__part{self._parts}"
 
 
+def _load_ground(ctl: clingo.Control, facts: str) -> bool:
+    """Give clingo facts (`relation(...).` lines, ASCII) as a ground program in its aspif format,
+    which it reads faster than it parses them (only before anything is grounded, and only from a
+    file): each fact is a term shown unconditionally. The next `ground` call adds them. False when
+    no temporary file can be written (then they are to be parsed)."""
+    terms = facts.split(").\n")[:-1]
+    try:
+        with tempfile.NamedTemporaryFile("w", encoding="ascii", prefix="archlog-", suffix=".aspif") as file:
+            file.write("asp 1 0 0\n" + "".join([f"4 {len(term) + 1} {term}) 0\n" for term in terms]) + "0\n")
+            file.flush()
+            ctl.load(file.name)
+    except OSError:
+        return False
+    return True
+
+
 def ground(store: FactStore, rules: list[Reads], preamble: str, listed: set[str], kept: set[str]) -> Grounded:
     """Ground the rules stratum by stratum, each with the fact rows it can read (see the module).
     `listed` are relations findings list (read from clingo, whole). The rules of a relation no
     other rule reads and not `kept` (findings, lists) wait until it is named (`Grounded.load`)."""
     grounded = Grounded(store)
-    grounded.load(listed)
-    grounded.add_rules([], preamble)
     read = {sig for rule in rules for sig in rule.reads - rule.heads} | {sig for sig in _heads(rules) if sig[0] in kept}
     for rule in rules:
         if len(rule.heads) == 1 and not rule.heads & read:
             grounded.later.setdefault(next(iter(rule.heads))[0], []).append(rule)
     eager = [rule for rule in rules if len(rule.heads) != 1 or rule.heads & read]
     levels = _levels(eager)
-    for level in sorted(set(levels.values())):
+    for level in sorted(set(levels.values())) or [1]:  # the first stratum with the listed relations and the preamble
         grounded.add_stratum([rule for rule in eager if levels[id(rule)] == level],
-                             lambda sig: sig in FACTS or levels.get(sig, level) < level)  # noqa: B023 (called at once)
+                             lambda sig: sig in FACTS or levels.get(sig, level) < level,  # noqa: B023 (called at once)
+                             *((listed, preamble) if level == min(levels.values(), default=1) else ((), "")))
     return grounded
 
 
