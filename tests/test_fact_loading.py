@@ -242,3 +242,22 @@ def test_opaque_may_use_is_grounded_when_named() -> None:
     assert "opaque_may_use" not in {name for name, _arity, _count, _kind in session.relations()}  # not grounded
     session.query("opaque_may_use(M, T)")
     assert ("opaque_may_use", "derived", 12) in {(name, kind, count) for name, _a, count, kind in session.relations()}
+
+
+@pytest.mark.parametrize("fallback", ["no temporary file", "non-ASCII"])
+def test_facts_are_parsed_when_they_cannot_be_read_as_a_ground_program(fallback: str,
+                                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    """The first stratum's facts reach clingo as a ground program through a temporary file; without
+    one, or with a fact that is not ASCII, they are parsed as text, with the same result."""
+    store, engine = corpus_store("misplaced_remap"), Engine(load_rules([]))
+    if fallback == "non-ASCII":
+        store.add("publisher", "p_é", "/nœud", "/caméra", "std_msgs/String")
+    else:
+        def refuse(*_args: object, **_kwargs: object) -> None:
+            raise OSError("read-only")
+        monkeypatch.setattr("archlog.rules.loading.tempfile.NamedTemporaryFile", refuse)
+    grounded = engine.start(store)
+    grounded.load(list(grounded.later))
+    assert {str(a.symbol) for a in grounded.ctl.symbolic_atoms if a.symbol.name not in BY_NAME} == \
+        every_atom(engine, store)
+    assert shown(engine.findings(grounded.ctl, store)) == shown(every_fact(engine, store))
