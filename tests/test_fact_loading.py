@@ -14,6 +14,7 @@ from archlog.analysis import analyse
 from archlog.facts.schema import BY_NAME
 from archlog.facts.store import FactStore
 from archlog.queries.session import Session
+from archlog.rules import loading
 from archlog.rules.engine import Engine, Finding
 from archlog.rules.functions import FUNCTIONS
 from archlog.rules.ruleset import load_rules
@@ -261,3 +262,14 @@ def test_facts_are_parsed_when_they_cannot_be_read_as_a_ground_program(fallback:
     assert {str(a.symbol) for a in grounded.ctl.symbolic_atoms if a.symbol.name not in BY_NAME} == \
         every_atom(engine, store)
     assert shown(engine.findings(grounded.ctl, store)) == shown(every_fact(engine, store))
+
+
+def test_a_negated_atom_with_a_computed_argument_filters_nothing() -> None:
+    """`not near_name(B, A, D + 1)` is false only for that distance: the rows of near_name are not
+    filtered by the other rows of the pair, whatever their distance."""
+    store = FactStore()
+    store.add("near_name", "/a", "/b", 1)
+    store.add("near_name", "/b", "/a", 5)
+    text = "odd(A) :- near_name(A, B, D), not near_name(B, A, D + 1).\n"
+    grounded = loading.ground(store, loading.reads_of([text]) or [], "", set(), {"odd"})
+    assert sorted(str(a.symbol) for a in grounded.ctl.symbolic_atoms.by_signature("odd", 1)) == ['odd("/a")', 'odd("/b")']

@@ -87,9 +87,9 @@ def reads_of(texts: Iterable[str]) -> list[Reads] | None:
         if statement.ast_type != clingo.ast.ASTType.Rule:
             continue
         atoms = [atom for literal in statement.body if (atom := positive(literal)) is not None]
-        negated = [atom for literal in statement.body if (atom := positive(literal, clingo.ast.Sign.Negation))]
-        loose = [sig for literal in statement.body if positive(literal) is None and
-                 positive(literal, clingo.ast.Sign.Negation) is None for sig in _signatures(literal)]
+        negated = [atom for literal in statement.body if (atom := _negated(literal))]
+        loose = [sig for literal in statement.body if positive(literal) is None and _negated(literal) is None
+                 for sig in _signatures(literal)]
         heads = _signatures(statement.head)
         found.append(Reads(statement, frozenset(heads), frozenset(heads + loose + [sig for sig, _p in atoms + negated]),
                            tuple(atoms), tuple(negated), frozenset(loose), frozenset(_differ(statement.body))))
@@ -128,6 +128,15 @@ def positive(literal: clingo.ast.AST, sign: int = clingo.ast.Sign.NoSign) -> tup
     if symbol.ast_type != clingo.ast.ASTType.Function or symbol.external:
         return None
     return (symbol.name, len(symbol.arguments)), tuple(map(_column, symbol.arguments))
+
+
+def _negated(literal: clingo.ast.AST) -> tuple[Signature, tuple[Column, ...]] | None:
+    """A plainly negated atom whose arguments are variables (`_` too) and constants."""
+    found = positive(literal, clingo.ast.Sign.Negation)
+    if found is None or any(column is None and term.ast_type != clingo.ast.ASTType.Variable
+                            for column, term in zip(found[1], literal.atom.symbol.arguments)):
+        return None
+    return found
 
 
 def _differ(body: Iterable[clingo.ast.AST]) -> Iterable[tuple[str, str]]:
