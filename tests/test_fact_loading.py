@@ -11,8 +11,10 @@ import pytest
 from conftest import CORPUS, load_case
 
 from archlog.analysis import analyse
+from archlog.facts.schema import BY_NAME
 from archlog.facts.store import FactStore
 from archlog.queries.session import Session
+from archlog.rules import loading
 from archlog.rules.engine import Engine, Finding
 from archlog.rules.functions import FUNCTIONS
 from archlog.rules.ruleset import load_rules
@@ -152,3 +154,123 @@ def test_a_whole_fact_relation_reads_as_clingo_holds_it() -> None:
     whole = session.query("name_namespace(T, NS)").rows
     assert whole == [("/a", "/"), ("/c", "/")]
     assert sorted(session.query('name_namespace(T, NS), NS = "/"').rows) == whole  # given to clingo
+
+
+def every_atom(engine: Engine, store: FactStore) -> set[str]:
+    ctl = clingo.Control(["--warn=none"])
+    ctl.add("base", [], engine.declared + "\n".join(p.text for p in engine.ruleset.programs) + store.program())
+    ctl.ground([("base", [])], context=FUNCTIONS)
+    return {str(a.symbol) for a in ctl.symbolic_atoms if a.symbol.name not in BY_NAME}
+
+
+def test_rows_a_negated_fact_rules_out_are_not_given() -> None:
+    """`opaque_node(N) :- node(N, ...), not node_source(N, _)` needs only the nodes without a source,
+    AL301's `node(N, _, _, E1), node(N, _, _, E2), E1 < E2` only the names two node elements share,
+    and the `not` only the node_source rows of the nodes given. Every derived atom is that of
+    grounding every fact."""
+    store = FactStore()
+    for name, elem, source in (("/a", "e1", "cpp"), ("/b", "e2", None), ("/c", "e3", "model"), ("/c", "e4", "model")):
+        store.add("node", name, "pkg", name[1:], elem)
+        store.locate(elem, "a.launch", int(elem[1:]))
+        if source:
+            store.add("node_source", name, source)
+    store.add("publisher", "p1", "/a", "/x", "std_msgs/String")
+    engine = Engine(load_rules([]))
+    grounded = engine.start(store)
+    assert grounded.given("node") == 3 and grounded.given("node_source") == 1  # /b, /c twice; /c's source
+    grounded.load(list(grounded.later))
+    atoms = {str(a.symbol) for a in grounded.ctl.symbolic_atoms if a.symbol.name not in BY_NAME}
+    assert {'opaque_node("/b")', 'duplicate_node("/c","e4","e3")'} <= atoms
+    assert atoms == every_atom(engine, store)
+
+
+def test_a_negated_fact_gets_the_rows_other_rules_give_its_positive_atom() -> None:
+    """AL301 gives clingo both rows of the twice-named /c; the opaque_node rule then sees them too,
+    so the node_source rows of /c must be there for its `not`."""
+    store = FactStore()
+    for elem in ("e1", "e2"):
+        store.add("node", "/c", "pkg", "c", elem)
+        store.locate(elem, "a.launch", int(elem[1:]))
+    store.add("node_source", "/c", "model")
+    engine = Engine(load_rules([]))
+    grounded = engine.start(store)
+    assert grounded.given("node_source") == 1
+    assert not any(True for _ in grounded.ctl.symbolic_atoms.by_signature("opaque_node", 1))
+
+
+def incomplete_store(opaque: int) -> FactStore:
+    """`opaque` incomplete nodes and one complete one, each with a publisher of msgs/T on its own topic."""
+    store = FactStore()
+    for i in range(opaque + 1):
+        node = f"/n{i}"
+        store.add("node", node, "pkg", "exe", f"e{i}")
+        store.add("node_source", node, "model")
+        if i < opaque:
+            store.add("node_incomplete", node, "generated")
+        store.add("publisher", f"p{i}", node, f"/t{i}", "msgs/T")
+    return store
+
+
+@pytest.mark.parametrize("opaque", [1, 2])
+def test_opaque_near_by_type_names_another_opaque_node(opaque: int) -> None:
+    """A name of type T is near an opaque node using T other than its port's node: with one opaque
+    node, not for that node's own port; with two, for every port."""
+    store = incomplete_store(opaque)
+    session = Session(store, load_rules([]))
+    near = set(session.query("opaque_near(T, N)").rows)
+    everyone = {(f"/t{i}", f"/n{i}") for i in range(opaque + 1)}
+    assert near == (everyone - {("/t0", "/n0")} if opaque == 1 else everyone)
+    assert near == {(t, n) for t, n in everyone for m, t2 in session.query("opaque_may_use(M, T)").rows
+                    if t2 == t and m != n}
+
+
+def test_opaque_may_use_is_grounded_when_named() -> None:
+    """No rule reads opaque_may_use (it can hold every name of a type for every opaque node using
+    it): it is grounded when a query, a rule defined on the fly or an explanation names it."""
+    store = incomplete_store(3)
+    engine = Engine(load_rules([]))
+    assert "opaque_may_use" in engine.start(store).later
+    session = Session(store, load_rules([]))
+    assert len(session.query("opaque_may_use(M, T)").rows) == 3 * 4
+    assert "opaque_may_use" not in session.grounded.later
+    session = Session(store, load_rules([]))
+    assert session.query('opaque_may_use("/n0", T), T != "/t0"').rows
+    session = Session(store, load_rules([]))
+    assert session.explain(clingo.Function("opaque_may_use", [clingo.String("/n0"), clingo.String("/t1")])).kind == \
+        "derived"
+    session = Session(store, load_rules([]))
+    assert ("opaque_may_use", 2) in session.waiting()
+    assert "opaque_may_use" not in {name for name, _arity, _count, _kind in session.relations()}  # not grounded
+    session.query("opaque_may_use(M, T)")
+    assert ("opaque_may_use", "derived", 12) in {(name, kind, count) for name, _a, count, kind in session.relations()}
+
+
+@pytest.mark.parametrize("fallback", ["no temporary file", "non-ASCII"])
+def test_facts_are_parsed_when_they_cannot_be_read_as_a_ground_program(fallback: str,
+                                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    """The first stratum's facts reach clingo as a ground program through a temporary file; without
+    one, or with a fact that is not ASCII, they are parsed as text, with the same result."""
+    store, engine = corpus_store("misplaced_remap"), Engine(load_rules([]))
+    if fallback == "non-ASCII":
+        store.add("publisher", "p_é", "/nœud", "/caméra", "std_msgs/String")
+    else:
+        def refuse(*_args: object, **_kwargs: object) -> None:
+            raise OSError("read-only")
+        monkeypatch.setattr("archlog.rules.loading.tempfile.NamedTemporaryFile", refuse)
+    grounded = engine.start(store)
+    grounded.load(list(grounded.later))
+    assert {str(a.symbol) for a in grounded.ctl.symbolic_atoms if a.symbol.name not in BY_NAME} == \
+        every_atom(engine, store)
+    assert shown(engine.findings(grounded.ctl, store)) == shown(every_fact(engine, store))
+
+
+def test_a_negated_atom_with_a_computed_argument_filters_nothing() -> None:
+    """`not near_name(B, A, D + 1)` is false only for that distance: the rows of near_name are not
+    filtered by the other rows of the pair, whatever their distance."""
+    store = FactStore()
+    store.add("near_name", "/a", "/b", 1)
+    store.add("near_name", "/b", "/a", 5)
+    text = "odd(A) :- near_name(A, B, D), not near_name(B, A, D + 1).\n"
+    grounded = loading.ground(store, loading.reads_of([text]) or [], "", set(), {"odd"})
+    assert sorted(str(a.symbol) for a in grounded.ctl.symbolic_atoms if a.symbol.name == "odd") == \
+        ['odd("/a")', 'odd("/b")']

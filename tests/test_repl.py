@@ -36,6 +36,7 @@ def screen(child: pexpect.spawn) -> str:
 def test_queries_commands_and_explanations(repl: pexpect.spawn, tmp_path: Path) -> None:
     repl.sendline(":relations")
     repl.expect(r"subscriber\s*\S*\s*4\s*\S*\s*\d+\s*\S*\s*fact")
+    repl.expect(r"opaque_may_use\s*\S*\s*2\s*\S*\s*when queried")  # no rule reads it: grounded when named
     repl.sendline("subscriber(_, N, T, _),")  # an open line continues
     repl.expect(r"\.\.\.>")
     repl.sendline("not published(T)")

@@ -13,7 +13,8 @@ import pytest
 from conftest import ROOT
 
 from archlog.facts.schema import BY_NAME, DERIVED, DERIVED_BY_NAME
-from archlog.rules.engine import _parse
+from archlog.facts.store import FactStore
+from archlog.rules.engine import Engine, _parse
 from archlog.rules.ruleset import BUILTIN, RuleSet, load_rules
 
 RULE_FOLDERS = [BUILTIN, ROOT / "docs" / "examples" / "rules"]
@@ -129,3 +130,11 @@ def test_derived_relations_read_by_python_are_declared() -> None:
                   if name not in arity or (n is not None and arity[name] != n)}
     assert undeclared == {}, "declare them in archlog/facts/schema.py (DERIVED)"
     assert set(DERIVED_BY_NAME) >= {name for name, _n in read if name not in BY_NAME and name not in findings}
+
+
+def test_derived_relations_python_reads_directly_are_grounded_at_once() -> None:
+    """The rules of a derived relation no rule reads wait until a query names it (rules/loading.py):
+    Python that reads the grounded program directly (`by_signature`) must find its atoms there."""
+    later = Engine(load_rules([])).start(FactStore()).later
+    read = {name for name, arity in relations_read_by_python() if arity is not None and name not in BY_NAME}
+    assert "required_topic" in read and not read & set(later)

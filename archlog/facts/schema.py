@@ -233,8 +233,13 @@ DERIVED: tuple[Relation, ...] = (
              "incomplete extraction.", _NODE),
     _derived(_PRELUDE, "system_opaque", "Some node instance of the configuration is opaque."),
     _derived(_PRELUDE, "opaque_may_use", "An opaque node that might use a name archlog cannot see it use: the launch "
-             "file remaps one of its names onto it, or (extraction incomplete) its known ports use the name's type.",
+             "file remaps one of its names onto it, the name lies in its private namespace, or (extraction "
+             "incomplete) its known ports use the name's type. That can be every name of a type for every opaque "
+             "node using it, so it is grounded only when a query, a rule or an explanation names it; rules that ask "
+             "whether some opaque node might use a name read opaque_may_name (or opaque_near).",
              _NODE, ("name", "name", "a topic, service or action name")),
+    _derived(_PRELUDE, "opaque_may_name", "A name some opaque node might use (opaque_may_use, without saying which "
+             "node).", ("name", "name", "a topic, service or action name")),
     _derived(_PRELUDE, "opaque_near", "A name a node has a port on and that an opaque node other than it might use "
              "(a rule about that port cannot conclude).", ("name", "name", "the name"), _NODE),
     _derived(_PRELUDE, "opaque_other", "An opaque node other than the port's own, for a port of a finding that names "

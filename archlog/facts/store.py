@@ -25,6 +25,7 @@ class FactStore:
         self._by_number: dict[int, Unknown] = {}
         self._locations: dict[str, tuple[str, int, int]] = {}
         self._counters: dict[str, int] = defaultdict(int)
+        self._nul: set[str] = set()  # relations with a NUL character in a string
 
     def new_id(self, prefix: str) -> str:
         """A fresh id such as 'p1' (ports) or 'e1' (elements)."""
@@ -42,7 +43,10 @@ class FactStore:
         if relation == "location":
             self._locations.setdefault(str(row[0]), (str(row[1]), int(str(row[2])), int(str(row[3]))))
         for cell in row:
-            if isinstance(cell, Unknown) and cell not in self._unknowns:
+            if isinstance(cell, str):
+                if "\0" in cell:
+                    self._nul.add(relation)
+            elif isinstance(cell, Unknown) and cell not in self._unknowns:
                 self._unknowns[cell] = len(self._unknowns) + 1
                 self._by_number[self._unknowns[cell]] = cell
                 self.add("unknown_value", cell, cell.expr, cell.file, cell.line)
@@ -62,6 +66,10 @@ class FactStore:
                     continue
                 cut.add(row)
             yield row
+
+    def has_nul(self, relation: str) -> bool:
+        """Whether a string of the relation holds a NUL character (clingo cuts it there)."""
+        return relation in self._nul
 
     def count(self, relation: str) -> int:
         return len(self._rows.get(relation, ()))
@@ -104,6 +112,14 @@ class FactStore:
     def text(self, relation: str, rows: Iterable[tuple[Cell, ...]]) -> str:
         """Rows of a relation as clingo facts: clingo parses them, with no Python call per fact (a
         string is cut at a NUL character, as clingo.String cuts it)."""
+        rows = rows if isinstance(rows, list) else list(rows)
+        try:  # most relations hold plain strings only: joined at once, then checked for escapes
+            text = "".join([relation + '("' + '","'.join(row) + '").\n' for row in rows])  # type: ignore[arg-type]
+            quotes = 2 * BY_NAME[relation].arity * len(rows)
+            if text.count('"') == quotes and text.count("\n") == len(rows) and "\\" not in text and "\0" not in text:
+                return text
+        except TypeError:  # a number or an unknown
+            pass
         head = relation + "("
         return "".join([head + ",".join(map(self._text, row)) + ").\n" for row in rows])
 

@@ -55,7 +55,8 @@ class Repl:
                  for row in rows for c in row[:3] if isinstance(c, str) and c.startswith("/")}
         commands = [":relations", ":schema", ":rules", ":enable", ":disable", ":findings", ":explain", ":load",
                     ":time", ":export", ":help", ":quit"]
-        return sorted({r[0] for r in self.session.relations()} | {r.id for r in self.session.ruleset.rules}
+        relations = [r[0] for r in self.session.relations()] + [name for name, _arity in self.session.waiting()]
+        return sorted(set(relations) | {r.id for r in self.session.ruleset.rules}
                       | {f'"{n}"' for n in names}) + commands
 
     # -- dispatch -------------------------------------------------------------------------
@@ -100,6 +101,8 @@ class Repl:
         table = Table("relation", "arity", "tuples", "kind")
         for name, arity, count, kind in self.session.relations():
             table.add_row(name, str(arity), str(count), kind)
+        for name, arity in self.session.waiting():
+            table.add_row(name, str(arity), "when queried", "derived")
         self.console.print(table)
 
     def cmd_schema(self, args: list[str]) -> None:

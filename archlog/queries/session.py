@@ -133,13 +133,19 @@ class Session:
     # -- relations ------------------------------------------------------------------------
     def relations(self) -> list[tuple[str, int, int, str]]:
         """(name, arity, number of tuples, 'fact' or 'derived') of every fact relation (loaded into
-        clingo or not) and of everything derived."""
+        clingo or not) and of everything derived so far (`waiting` names the other derived ones)."""
         counts = {(r.name, r.arity): self.store.count(r.name) for r in BY_NAME.values()}
+        waiting = set(self.waiting())
         for name, arity, _positive in self.ctl.symbolic_atoms.signatures:
-            if (name, arity) not in counts:
+            if (name, arity) not in counts and (name, arity) not in waiting:
                 counts[(name, arity)] = sum(1 for _ in self.ctl.symbolic_atoms.by_signature(name, arity))
         return sorted((n, a, count, "fact" if n in BY_NAME else "derived")
                       for (n, a), count in counts.items() if not n.startswith("__"))
+
+    def waiting(self) -> list[tuple[str, int]]:
+        """(name, arity) of the derived relations whose rules are grounded when first named (in a
+        query, a rule or an explanation): no other rule reads them."""
+        return sorted({sig for rules in self.grounded.later.values() for rule in rules for sig in rule.heads})
 
     # -- queries and rules ----------------------------------------------------------------
     def query(self, goal: str) -> Result:
@@ -152,6 +158,7 @@ class Session:
             return Result(variables, self.store.read_back(whole[0]), time.perf_counter() - start)
         if whole is not None and whole in self._known():  # a derived relation, all columns: read it as it is
             self._finish_open()
+            self._load([whole[0]])
             atoms = self.ctl.symbolic_atoms.by_signature(*whole)
         else:
             self.parts += 1
@@ -202,8 +209,9 @@ class Session:
         self._known_cache = self._known() | set(parsed.heads)
 
     def _load(self, relations: Iterable[str]) -> None:
-        """Give clingo the fact relations it lacks of these (grounding them ends the open result)."""
-        missing = [name for name in relations if name in BY_NAME and name not in self.grounded.loaded]
+        """Give clingo the fact relations it lacks of these, and the rules of derived ones that wait
+        to be named (grounding them ends the open result)."""
+        missing = [name for name in relations if self.grounded.lacks(name)]
         if missing:
             self._finish_open()
             self.grounded.load(missing)

@@ -88,7 +88,8 @@ class Engine:
             grounded.ground("base")
         else:
             listed = {relation for rule in self.ruleset.rules for relation, _column in rule.lists.values()}
-            grounded = loading.ground(store, self.reads, self.declared, listed)
+            kept = {rule.predicate for rule in self.ruleset.rules} | listed
+            grounded = loading.ground(store, self.reads, self.declared, listed, kept)
         ctl = grounded.ctl
         clock = time.perf_counter()
         stratified = ctl.solve().satisfiable and ctl.statistics["problem"]["lp"]["bodies"] == 0

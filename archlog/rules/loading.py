@@ -6,15 +6,24 @@ clingo, so a row is given to it only when a rule can read it, or when asked for:
   relation of a positive body atom of the rule is already known to be empty (then the rule derives
   nothing, like AL401's `remap_user` guarding its read of `location`);
 - a relation read only in positive body atoms gets only the rows that can join with the other fact
-  relations of that body (same value where they share a variable, the constant it is written with);
+  relations of that body (same value where they share a variable, the constant it is written with),
+  that no fact of a relation the body negates rules out (`node(N, ...), not node_source(N, _)`),
+  and, joined with itself under `E1 < E2` (or `>`, `!=`), that share their key with another row;
+- a relation read only under a plain `not` gets the rows that can match the rows clingo has of the
+  positive fact atoms binding its variables;
 - every other row (of a relation no rule reads, or rows no join can use) when a query, an
-  on-the-fly rule or an explanation names its relation (`Grounded.load`).
+  on-the-fly rule or an explanation names its relation (`Grounded.load`); so are the rules of a
+  derived relation no other rule reads (`opaque_may_use`).
+
+The first stratum's rows reach clingo as a ground program (aspif), which it reads faster than it
+parses facts; that is possible only before anything is grounded.
 """
 
 from __future__ import annotations
 
 import functools
 import operator
+import tempfile
 import time
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
@@ -30,19 +39,24 @@ Signature = tuple[str, int]
 Position = tuple[int, int]
 FACTS = {(r.name, r.arity) for r in BY_NAME.values()}
 _PLAIN = (clingo.ast.ASTType.Rule, clingo.ast.ASTType.Comment)
+_DIFFERENT = (clingo.ast.ComparisonOperator.LessThan, clingo.ast.ComparisonOperator.GreaterThan,
+              clingo.ast.ComparisonOperator.NotEqual)
 Column = tuple[str, object] | None  # ("var", a variable's name), ("=", a constant) or None (anything)
 
 
 @dataclass(frozen=True)
 class Reads:
     """One rule: the relations it defines and reads, its positive body atoms (signature and column
-    patterns) and the relations it reads otherwise (under `not`, in aggregates and conditions)."""
+    patterns), its plainly negated atoms, the relations it reads otherwise (in aggregates and
+    conditions, under `not not`) and its comparisons of two variables by <, > or !=."""
 
     rule: clingo.ast.AST
     heads: frozenset[Signature]
     reads: frozenset[Signature]
     atoms: tuple[tuple[Signature, tuple[Column, ...]], ...]
+    negated: tuple[tuple[Signature, tuple[Column, ...]], ...]
     loose: frozenset[Signature]
+    differ: frozenset[tuple[str, str]]
 
     @property
     def guards(self) -> set[Signature]:
@@ -73,10 +87,12 @@ def reads_of(texts: Iterable[str]) -> list[Reads] | None:
         if statement.ast_type != clingo.ast.ASTType.Rule:
             continue
         atoms = [atom for literal in statement.body if (atom := positive(literal)) is not None]
-        loose = [sig for literal in statement.body if positive(literal) is None for sig in _signatures(literal)]
+        negated = [atom for literal in statement.body if (atom := _negated(literal))]
+        loose = [sig for literal in statement.body if positive(literal) is None and _negated(literal) is None
+                 for sig in _signatures(literal)]
         heads = _signatures(statement.head)
-        found.append(Reads(statement, frozenset(heads), frozenset(heads + loose + [sig for sig, _p in atoms]),
-                           tuple(atoms), frozenset(loose)))
+        found.append(Reads(statement, frozenset(heads), frozenset(heads + loose + [sig for sig, _p in atoms + negated]),
+                           tuple(atoms), tuple(negated), frozenset(loose), frozenset(_differ(statement.body))))
     return found
 
 
@@ -102,15 +118,38 @@ def _signatures(node: clingo.ast.AST) -> list[Signature]:
     return [sig for sig, _position in atoms(node, [])]
 
 
-def positive(literal: clingo.ast.AST) -> tuple[Signature, tuple[Column, ...]] | None:
-    """A positive body atom: its relation and, per column, ("var", name), ("=", a constant) or None."""
-    if literal.ast_type != clingo.ast.ASTType.Literal or literal.sign != clingo.ast.Sign.NoSign or \
+def positive(literal: clingo.ast.AST, sign: int = clingo.ast.Sign.NoSign) -> tuple[Signature, tuple[Column, ...]] | None:
+    """A positive body atom (or, with `sign`, a negated one): its relation and, per column,
+    ("var", name), ("=", a constant) or None."""
+    if literal.ast_type != clingo.ast.ASTType.Literal or literal.sign != sign or \
             literal.atom.ast_type != clingo.ast.ASTType.SymbolicAtom:
         return None
     symbol = literal.atom.symbol
     if symbol.ast_type != clingo.ast.ASTType.Function or symbol.external:
         return None
     return (symbol.name, len(symbol.arguments)), tuple(map(_column, symbol.arguments))
+
+
+def _negated(literal: clingo.ast.AST) -> tuple[Signature, tuple[Column, ...]] | None:
+    """A plainly negated atom whose arguments are variables (`_` too) and constants."""
+    found = positive(literal, clingo.ast.Sign.Negation)
+    if found is None or any(column is None and term.ast_type != clingo.ast.ASTType.Variable
+                            for column, term in zip(found[1], literal.atom.symbol.arguments)):
+        return None
+    return found
+
+
+def _differ(body: Iterable[clingo.ast.AST]) -> Iterable[tuple[str, str]]:
+    """The pairs of variables a body compares by <, > or != (both orders): they hold different values."""
+    for literal in body:
+        atom = literal.atom if literal.ast_type == clingo.ast.ASTType.Literal else None
+        if atom is None or literal.sign != clingo.ast.Sign.NoSign or atom.ast_type != clingo.ast.ASTType.Comparison or \
+                len(atom.guards) != 1 or atom.guards[0].comparison not in _DIFFERENT:
+            continue
+        left, right = atom.term, atom.guards[0].term
+        if left.ast_type == right.ast_type == clingo.ast.ASTType.Variable and "_" not in (left.name, right.name):
+            yield left.name, right.name
+            yield right.name, left.name
 
 
 def _column(term: clingo.ast.AST) -> Column:
@@ -132,11 +171,46 @@ class Grounded:
         self.loaded: set[str] = set()  # relations given whole
         self.timings = {"to-clingo": 0.0, "ground": 0.0}
         self._given: dict[str, set[int]] = {}  # rows (indexes) given of the other relations
+        self.later: dict[str, list[Reads]] = {}  # derived relation -> its rules, not grounded yet
+        self.values = Values(store)
         self._parts = 0
 
     def load(self, relations: Iterable[str]) -> None:
-        """Give clingo every row it lacks of these fact relations (other names are ignored)."""
+        """Give clingo every row it lacks of these fact relations, and ground the rules of these
+        derived relations that wait to be named (other names are ignored)."""
+        relations = list(relations)
         self.give({name: None for name in relations if name in BY_NAME})
+        for name in relations:
+            if name in self.later:
+                rules = self.later.pop(name)
+                self.add_stratum(rules, lambda sig: sig not in _heads(rules))  # noqa: B023 (called at once)
+
+    def lacks(self, relation: str) -> bool:
+        """Whether clingo lacks rows of a fact relation or the rules of a derived one."""
+        return (relation in BY_NAME and relation not in self.loaded) or relation in self.later
+
+    def add_stratum(self, rules: list[Reads], complete: Callable[[Signature], bool], whole: Iterable[str] = (),
+                    preamble: str = "") -> None:
+        """Ground rules that read only relations clingo has whole (`complete`) besides those they
+        define, with the fact rows they can read (and every row of the fact relations `whole`)."""
+        clock = time.perf_counter()  # choosing rows is part of handing facts to clingo
+        wanted: dict[str, set[int] | None] = {name: None for name in whole if name in BY_NAME}
+        active = [rule for rule in rules if not any(self.empty(sig) for sig in rule.guards if complete(sig))]
+        for rule in active:  # (a rule a relation it joins is empty for derives nothing)
+            for name, _arity in rule.reads & FACTS:
+                if name not in self.loaded and wanted.get(name, ()) is not None:
+                    _want(wanted, name, _joining(self.values, rule, name))
+        changed = True
+        while changed:  # negated rows: those that can match what clingo will have (which they may add to)
+            changed = False
+            for rule in active:
+                for (name, arity), pattern in rule.negated:
+                    if (name, arity) in FACTS and name not in self.loaded and wanted.get(name, ()) is not None:
+                        rows = _blocking(self.values, rule, name, pattern, lambda a: self.present(a, wanted))
+                        changed |= _want(wanted, name, rows)
+        self.timings["to-clingo"] += time.perf_counter() - clock
+        self.give(wanted)
+        self.add_rules([rule.rule for rule in rules], preamble)
 
     def give(self, rows: dict[str, set[int] | None]) -> None:
         """Give clingo these rows (indexes; None: all) of fact relations, those it lacks."""
@@ -158,11 +232,20 @@ class Grounded:
                 self.loaded.add(name)
             else:
                 self._given[name] = given
-        if any(text):
+        facts = "".join(text)
+        if facts and not self._parts and facts.isascii() and _load_ground(self.ctl, facts):  # nothing grounded yet
+            self.timings["to-clingo"] += time.perf_counter() - clock
+        elif facts:
             part = self._part()
-            self.ctl.add(part, [], "".join(text))
+            self.ctl.add(part, [], facts)
             self.timings["to-clingo"] += time.perf_counter() - clock
             self.ground(part)
+
+    def present(self, relation: str, wanted: dict[str, set[int] | None]) -> set[int] | None:
+        """The rows clingo has of a fact relation once these are given too (None: all)."""
+        if relation in self.loaded or wanted.get(relation, ()) is None:
+            return None
+        return self._given.get(relation, set()) | (wanted.get(relation) or set())
 
     def given(self, relation: str) -> int:
         """How many rows of a fact relation clingo has."""
@@ -197,30 +280,42 @@ class Grounded:
         return f"__part{self._parts}"
 
 
-def ground(store: FactStore, rules: list[Reads], preamble: str, listed: set[str]) -> Grounded:
+def _load_ground(ctl: clingo.Control, facts: str) -> bool:
+    """Give clingo facts (`relation(...).` lines, ASCII) as a ground program in its aspif format,
+    which it reads faster than it parses them (only before anything is grounded, and only from a
+    file): each fact is a term shown unconditionally. The next `ground` call adds them. False when
+    no temporary file can be written (then they are to be parsed)."""
+    terms = facts.split(").\n")[:-1]
+    try:
+        with tempfile.NamedTemporaryFile("w", encoding="ascii", prefix="archlog-", suffix=".aspif") as file:
+            file.write("asp 1 0 0\n" + "".join([f"4 {len(term) + 1} {term}) 0\n" for term in terms]) + "0\n")
+            file.flush()
+            ctl.load(file.name)
+    except OSError:
+        return False
+    return True
+
+
+def ground(store: FactStore, rules: list[Reads], preamble: str, listed: set[str], kept: set[str]) -> Grounded:
     """Ground the rules stratum by stratum, each with the fact rows it can read (see the module).
-    `listed` are relations findings list (read from clingo, whole)."""
+    `listed` are relations findings list (read from clingo, whole). The rules of a relation no
+    other rule reads and not `kept` (findings, lists) wait until it is named (`Grounded.load`)."""
     grounded = Grounded(store)
-    grounded.load(listed)
-    grounded.add_rules([], preamble)
-    levels = _levels(rules)
-    values = Values(store)
-    for level in sorted(set(levels.values())):
-        stratum = [rule for rule in rules if levels[id(rule)] == level]
-        clock = time.perf_counter()  # choosing rows is part of handing facts to clingo
-        wanted: dict[str, set[int] | None] = {}
-        for rule in stratum:
-            if any(grounded.empty(sig) for sig in rule.guards if sig in FACTS or levels.get(sig, level) < level):
-                continue  # a relation it joins is empty: it derives nothing
-            for name, _arity in rule.reads & FACTS:
-                if name in grounded.loaded or (name in wanted and wanted[name] is None):
-                    continue
-                rows = _joining(values, rule, name)
-                wanted[name] = None if rows is None else rows | (wanted.get(name) or set())
-        grounded.timings["to-clingo"] += time.perf_counter() - clock
-        grounded.give(wanted)
-        grounded.add_rules([rule.rule for rule in stratum])
+    read = {sig for rule in rules for sig in rule.reads - rule.heads} | {sig for sig in _heads(rules) if sig[0] in kept}
+    for rule in rules:
+        if len(rule.heads) == 1 and not rule.heads & read:
+            grounded.later.setdefault(next(iter(rule.heads))[0], []).append(rule)
+    eager = [rule for rule in rules if len(rule.heads) != 1 or rule.heads & read]
+    levels = _levels(eager)
+    for level in sorted(set(levels.values())) or [1]:  # the first stratum with the listed relations and the preamble
+        grounded.add_stratum([rule for rule in eager if levels[id(rule)] == level],
+                             lambda sig: sig in FACTS or levels.get(sig, level) < level,  # noqa: B023 (called at once)
+                             *((listed, preamble) if level == min(levels.values(), default=1) else ((), "")))
     return grounded
+
+
+def _heads(rules: list[Reads]) -> set[Signature]:
+    return {sig for rule in rules for sig in rule.heads}
 
 
 class Values:
@@ -228,51 +323,130 @@ class Values:
 
     def __init__(self, store: FactStore) -> None:
         self.store = store
-        self._sets: dict[tuple[str, tuple[int, ...]], set[object]] = {}
-        self._nul: dict[str, bool] = {}
+        self._sets: dict[tuple[str, tuple[int, ...], tuple[tuple[int, object], ...]], set[object]] = {}
+        self._spread: dict[tuple[str, tuple[int, ...], int], set[object]] = {}
+        self._rows: dict[str, list[tuple[Cell, ...]]] = {}
 
-    def of(self, relation: str, columns: tuple[int, ...]) -> set[object]:
-        """The values (a tuple per row, or the value for one column) of these columns."""
-        if (relation, columns) not in self._sets:
-            self._sets[(relation, columns)] = set(map(operator.itemgetter(*columns), self.store.rows(relation)))
-        return self._sets[(relation, columns)]
+    def rows(self, relation: str) -> list[tuple[Cell, ...]]:
+        if relation not in self._rows:
+            self._rows[relation] = self.store.rows(relation)
+        return self._rows[relation]
+
+    def of(self, relation: str, columns: tuple[int, ...], constants: tuple[tuple[int, object], ...] = ()) \
+            -> set[object]:
+        """The values (a tuple per row, or the value for one column) of these columns, in the rows
+        that hold these constants (column, value)."""
+        key = (relation, columns, constants)
+        if key not in self._sets:
+            rows = self.rows(relation)
+            for column, value in constants:
+                rows = [row for row in rows if row[column] == value]
+            self._sets[key] = set(map(operator.itemgetter(*columns), rows))
+        return self._sets[key]
+
+    def spread(self, relation: str, columns: tuple[int, ...], apart: int) -> set[object]:
+        """The values of these columns that two rows with different values in column `apart` share."""
+        key = (relation, columns, apart)
+        if key not in self._spread:
+            seen: dict[object, Cell] = {}
+            found = self._spread[key] = set()
+            for row in self.rows(relation):
+                value = operator.itemgetter(*columns)(row)
+                if seen.setdefault(value, row[apart]) != row[apart]:
+                    found.add(value)
+        return self._spread[key]
+
+    def column(self, relation: str, column: int, rows: set[int] | None) -> set[object]:
+        """The values of a column in these rows (None: all)."""
+        if rows is None:
+            return self.of(relation, (column,))
+        every = self.rows(relation)
+        return {every[i][column] for i in rows}
 
     def has_nul(self, relation: str) -> bool:
         """Whether a string of the relation holds a NUL character: clingo cuts it there, so values
         that differ here may be equal there."""
-        if relation not in self._nul:
-            self._nul[relation] = "\0" in "\1".join(c for row in self.store.rows(relation) for c in row if type(c) is str)
-        return self._nul[relation]
+        return self.store.has_nul(relation)
+
+
+def _want(wanted: dict[str, set[int] | None], relation: str, rows: set[int] | None) -> bool:
+    """Add rows (None: all) to those wanted of a relation; whether that added any."""
+    before = wanted.get(relation, set())
+    if before is None or (rows is not None and rows <= before):
+        return False
+    wanted[relation] = None if rows is None else rows | before
+    return True
 
 
 def _joining(values: Values, rule: Reads, relation: str) -> set[int] | None:
     """The rows of a fact relation that the rule's body can use (None: all): read only in positive
-    atoms, a row must match an atom's constants and, for every other fact relation of the body,
-    share the values of their common variables with one of its rows (relations with a NUL in a
-    string are not filtered, nor used as filters)."""
+    atoms (and plain negations), a row must match an atom's constants and, for every other fact
+    relation of the body, share the values of their common variables with one of its rows (with
+    another one, joined with itself where the body compares the two atoms' values of a column by <,
+    > or !=), and must not match a fact of a relation the body negates on its variables (relations
+    with a NUL in a string are not filtered, nor used as filters)."""
     if any(name == relation for name, _arity in rule.loose):
         return None
     found: set[int] = set()
     for index, ((name, _arity), pattern) in enumerate(rule.atoms):
         if name != relation:
             continue
-        tests: list[tuple[Callable[[tuple[Cell, ...]], object], set[object]]] = [
-            (operator.itemgetter(column), {spec[1]}) for column, spec in enumerate(pattern) if spec and spec[0] == "="]
+        tests: list[tuple[Callable[[tuple[Cell, ...]], object], set[object], bool]] = [
+            (operator.itemgetter(column), {spec[1]}, True) for column, spec in enumerate(pattern)
+            if spec and spec[0] == "="]
         variables = {spec[1]: column for column, spec in enumerate(pattern) if spec and spec[0] == "var"}
         for other, ((guard, _arity), guard_pattern) in enumerate(rule.atoms):
             shared = [(variables[spec[1]], column) for column, spec in enumerate(guard_pattern)
                       if spec and spec[0] == "var" and spec[1] in variables]
             if other != index and (guard, len(guard_pattern)) in FACTS and shared and not values.has_nul(guard):
-                allowed = values.of(guard, tuple(column for _mine, column in shared))
-                tests.append((operator.itemgetter(*(mine for mine, _theirs in shared)), allowed))
+                theirs = tuple(column for _mine, column in shared)
+                apart = [column for column, (mine, spec) in enumerate(zip(pattern, guard_pattern))
+                         if guard == relation and mine and spec and mine[0] == spec[0] == "var" and
+                         (mine[1], spec[1]) in rule.differ]
+                allowed = values.spread(guard, theirs, apart[0]) if apart else values.of(guard, theirs)
+                tests.append((operator.itemgetter(*(mine for mine, _theirs in shared)), allowed, True))
+        for (guard, arity), guard_pattern in rule.negated:
+            bound = [(column, spec[1]) for column, spec in enumerate(guard_pattern) if spec and spec[0] == "var"]
+            if (guard, arity) in FACTS and bound and all(var in variables for _c, var in bound) and \
+                    not values.has_nul(guard):
+                blocked = values.of(guard, tuple(column for column, _var in bound), _constants(guard_pattern))
+                tests.append((operator.itemgetter(*(variables[var] for _c, var in bound)), blocked, False))
         if not tests or values.has_nul(relation):
             return None
-        every = values.store.rows(relation)
+        every = values.rows(relation)
         rows: Iterable[int] = range(len(every))
-        for key, allowed in tests:
-            rows = [i for i in rows if key(every[i]) in allowed]
+        for key, allowed, inside in tests:
+            rows = [i for i in rows if (key(every[i]) in allowed) is inside]
         found.update(rows)
     return found
+
+
+def _blocking(values: Values, rule: Reads, relation: str, pattern: tuple[Column, ...],
+              present: Callable[[str], set[int] | None]) -> set[int] | None:
+    """The rows of a fact relation the rule negates (`not relation(...)`) that can match the rows
+    clingo has (`present`, None: all) of the positive fact atoms binding the atom's variables, and
+    its constants (None: all)."""
+    if any(name == relation for name, _arity in rule.loose) or values.has_nul(relation):
+        return None
+    tests: list[tuple[int, set[object]]] = [(column, {value}) for column, value in _constants(pattern)]
+    for column, spec in enumerate(pattern):
+        if not spec or spec[0] != "var":
+            continue
+        bound = [values.column(name, position, present(name)) for (name, arity), atom in rule.atoms
+                 if (name, arity) in FACTS and not values.has_nul(name)
+                 for position, other in enumerate(atom) if other == spec]
+        if not bound:
+            return None  # bound by a derived relation only
+        tests.append((column, set.intersection(*bound)))
+    every = values.rows(relation)
+    rows: Iterable[int] = range(len(every))
+    for column, allowed in tests:
+        rows = [i for i in rows if every[i][column] in allowed]
+    return set(rows)
+
+
+def _constants(pattern: tuple[Column, ...]) -> tuple[tuple[int, object], ...]:
+    return tuple((column, spec[1]) for column, spec in enumerate(pattern) if spec and spec[0] == "=")
 
 
 def _levels(rules: list[Reads]) -> dict[object, int]:
