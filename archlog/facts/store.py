@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import json
 from collections import defaultdict
@@ -113,13 +114,12 @@ class FactStore:
         """Rows of a relation as clingo facts: clingo parses them, with no Python call per fact (a
         string is cut at a NUL character, as clingo.String cuts it)."""
         rows = rows if isinstance(rows, list) else list(rows)
-        try:  # most relations hold plain strings only: joined at once, then checked for escapes
+        with contextlib.suppress(TypeError):  # a number or an unknown: written cell by cell below
+            # most relations hold plain strings only: joined at once, then checked for escapes
             text = "".join([relation + '("' + '","'.join(row) + '").\n' for row in rows])  # type: ignore[arg-type]
             quotes = 2 * BY_NAME[relation].arity * len(rows)
             if text.count('"') == quotes and text.count("\n") == len(rows) and "\\" not in text and "\0" not in text:
                 return text
-        except TypeError:  # a number or an unknown
-            pass
         head = relation + "("
         return "".join([head + ",".join(map(self._text, row)) + ").\n" for row in rows])
 
