@@ -36,6 +36,8 @@ BASELINE = {
     "rosbag_record_publish": (2, 0, 0),  # recorder.cpp's ports follow the model's conditions (-p; never snapshot)
     "tf2_buffer_server": (7, 0, 0),  # its action server is named by main() in another file (call-site summaries)
     "image_rotate": (9, 0, 0),  # a reconfigure server without a handle: the process's private namespace
+    "tf_static_transform_publisher": (1, 0, 0),  # the tf library's listener ports are never reached (reach.py)
+    "cameracheck": (6, 0, 0),  # rospy: subscribers in a comprehension, in a class of the package's own module
 }
 
 # case -> the same for the nodelet mechanism's own ports (manager services, bonds, loader processes)
