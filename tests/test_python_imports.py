@@ -69,7 +69,7 @@ def test_a_script_whose_node_is_set_up_in_a_module_archlog_does_not_follow_is_pa
     script.write_text("#!/usr/bin/env python3\nimport talker_pkg.talk\ntalker_pkg.talk.main()\n")
     summary = extract(script)
     assert summary.ports == []
-    assert summary.incomplete is not None and summary.incomplete.startswith("scripts/talker:1: sets up no node")
+    assert summary.incomplete is not None and summary.incomplete.startswith("scripts/talker:1: sets up no ROS node")
 
 
 def test_a_node_without_ports_is_not_partial(tmp_path: Path) -> None:

@@ -138,8 +138,8 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
             diagnostics.add(read.file, line, code, message, severity)
     summary.ports = _without_untyped_duplicates(summary.ports)
     if not summary.name_file and not summary.ports and not summary.incomplete:
-        summary.incomplete = f"{shown}:1: sets up no node (no rospy.init_node, no rclpy node) here or in the package " \
-            "modules it calls that archlog reads: its ROS code is elsewhere"
+        summary.incomplete = f"{shown}:1: sets up no ROS node (no rospy.init_node, no rclpy node) here or in the " \
+            "package modules it calls that archlog reads: if it is a node, its ROS code is elsewhere"
     return summary
 
 
