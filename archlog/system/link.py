@@ -16,6 +16,7 @@ from archlog.extract.workspace.messages import message_files
 from archlog.system.camera_info import placed_camera_info
 from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
+from archlog.system.infrastructure import infrastructure_ports
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels, argv_ports
 from archlog.system.nodelets import in_process, is_manager, loaded_ports, loader_ports, manager_summary
@@ -156,6 +157,7 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
         summary = replace(summary, ports=file_ports(node, summary.ports, config, workspace, diagnostics))
     if summary is not None:
         summary = _with_transforms(_with_marks(summary, model), model, node, config, workspace, diagnostics)
+        summary = replace(summary, ports=summary.ports + infrastructure_ports(node, summary, workspace))
     if summary is None and node.kind not in missing:
         kind = node.kind
         missing.add(kind)

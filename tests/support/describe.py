@@ -31,6 +31,8 @@ def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
     lines = [f"node {json.dumps(plain(summary.default_name))} namespace {json.dumps(plain(summary.namespace))}"
              f" anonymous {summary.anonymous}"]
     lines += [f"incomplete {summary.incomplete}"] if summary.incomplete else []
+    lines += [f"built-in ports {' '.join(summary.infrastructure) or '-'} without {' '.join(summary.without) or '-'}"] \
+        if summary.infrastructure or summary.without else []
     for p in summary.ports:
         extra = f" default {json.dumps(plain(p.default))}" if p.default is not None else ""
         extra += "".join(f" {k}={v}" for k, v in p.qos)

@@ -43,7 +43,8 @@ _ROSPY = {
 }
 # rclpy Node methods: method -> (kind, index of the type, index of the name)
 _RCLPY_METHODS = {
-    "create_publisher": ("publisher", 0, 1), "create_subscription": ("subscriber", 0, 1),
+    "create_publisher": ("publisher", 0, 1), "create_lifecycle_publisher": ("publisher", 0, 1),
+    "create_subscription": ("subscriber", 0, 1),
     "create_service": ("service_server", 0, 1), "create_client": ("service_client", 0, 1),
 }
 _RCLPY_ACTIONS = {"rclpy.action.ActionServer": "action_server", "rclpy.action.ActionClient": "action_client"}
@@ -61,6 +62,10 @@ _PARAM_READS = {"rospy.get_param": True, "rospy.search_param": False, "rospy.has
 _PARAM_WRITES = {"rospy.set_param", "rospy.delete_param"}
 _FIXED_TYPES = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage",
                 "/diagnostics": "diagnostic_msgs/DiagnosticArray"}
+_LIFECYCLE = ("rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode", "rclpy.lifecycle.node.LifecycleNode")
+# rclpy Node keywords that add (True) or remove (False) a group of built-in ports: keyword -> (group, adds)
+_NODE_FLAGS = {"enable_logger_service": ("logger_service", True), "start_parameter_services": ("parameter_services", False),
+               "enable_rosout": ("rosout", False)}
 _RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "get_parameter", "get_parameter_or",
                "create_timer"}
 _DIAGNOSTIC_MESSAGES = ("DiagnosticArray", "DiagnosticStatus", "KeyValue")  # diagnostic_updater re-exports them
@@ -198,11 +203,22 @@ class NodeReader(ValueFolder):
                     and stmt.name in only:
                 self._visit(stmt)
 
-    def is_rclpy_node_class(self, cls: str | None, depth: int = 0) -> bool:
-        """A class deriving (in the file, up to 5 levels) from an rclpy Node."""
+    def is_rclpy_node_class(self, cls: str | None, depth: int = 0, lifecycle: bool = False) -> bool:
+        """A class deriving (in the file, up to 5 levels) from an rclpy Node (a LifecycleNode with `lifecycle`)."""
         bases = self.class_bases.get(cls or "", [])
-        return any(b in ("rclpy.node.Node", "rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode")
-                   or (depth < 5 and self.is_rclpy_node_class(b, depth + 1)) for b in bases)
+        roots = _LIFECYCLE if lifecycle else ("rclpy.node.Node", *_LIFECYCLE)
+        return any(b in roots or (depth < 5 and self.is_rclpy_node_class(b, depth + 1, lifecycle)) for b in bases)
+
+    def builtin_ports(self, call: ast.Call, lifecycle: bool) -> None:
+        """The built-in port groups (system/infrastructure.py) a node's construction asks for or turns off:
+        a lifecycle node, enable_logger_service=True, start_parameter_services=False, enable_rosout=False."""
+        self.summary.ros = 2
+        flags = {kw.arg: self.value(kw.value) for kw in call.keywords if kw.arg in _NODE_FLAGS}
+        wanted = [group for flag, (group, on) in _NODE_FLAGS.items() if on and flags.get(flag) == "true"]
+        off = [group for flag, (group, on) in _NODE_FLAGS.items() if not on and flags.get(flag) == "false"]
+        self.summary.infrastructure = tuple(dict.fromkeys([*self.summary.infrastructure, *wanted,
+                                                           *(["lifecycle"] if lifecycle else [])]))
+        self.summary.without = tuple(dict.fromkeys([*self.summary.without, *off]))
 
     # -- traversal --------------------------------------------------------------------------
     def _visit(self, node: ast.AST) -> None:
@@ -309,6 +325,7 @@ class NodeReader(ValueFolder):
         func = self.qualified(call.func)
         method = call.func.attr if isinstance(call.func, ast.Attribute) else None
         if func == "rospy.init_node":
+            self.summary.ros = 1
             self.set_name(call, self.value(arg(call, 0, "name")))
             anon = arg(call, 2, "anonymous")
             self.summary.anonymous = isinstance(anon, ast.Constant) and anon.value is True
@@ -338,11 +355,13 @@ class NodeReader(ValueFolder):
                      self.message_type(arg(call, 1, "action_type"), True))
         elif method and self.is_rclpy_call(call):
             self.rclpy_call(call, method)
-        elif func in ("rclpy.create_node", "rclpy.node.Node") or (
+        elif func in ("rclpy.create_node", "rclpy.node.Node", *_LIFECYCLE) or (
                 isinstance(call.func, ast.Attribute) and call.func.attr == "__init__"
                 and isinstance(call.func.value, ast.Call) and isinstance(call.func.value.func, ast.Name)
                 and call.func.value.func.id == "super" and self.scope and self.is_rclpy_node_class(self.scope.cls)):
             self.set_name(call, self.value(arg(call, 0, "node_name")))
+            self.builtin_ports(call, func in _LIFECYCLE or self.is_rclpy_node_class(self.scope and self.scope.cls,
+                                                                                      lifecycle=True))
             namespace = next((kw.value for kw in call.keywords if kw.arg == "namespace"), None)
             if namespace is not None:
                 self.summary.namespace = self.value(namespace)
