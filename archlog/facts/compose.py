@@ -97,8 +97,8 @@ def _unknown_patterns(store: FactStore) -> None:
 def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSink | None = None) -> None:
     """near_name facts (both directions) for the names that only one side uses (published and not
     subscribed, served and not called, or the reverse): the ends a near miss may explain, each with
-    every name the ports use (the client library's built-in ports are left out). A name too long to compare is noted (once, at its first port) when
-    `diagnostics` is given."""
+    every name the ports use (the client library's built-in ports are left out). A name too long to
+    compare is noted (once, at its first port) when `diagnostics` is given."""
     first_port: dict[str, str] = {}
     sides: dict[str, set[str]] = {rel: set() for rel in NAMED_PORTS}
     builtin = {row[0] for row in store.rows("infrastructure_port")}

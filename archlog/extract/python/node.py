@@ -360,8 +360,8 @@ class NodeReader(ValueFolder):
                 and isinstance(call.func.value, ast.Call) and isinstance(call.func.value.func, ast.Name)
                 and call.func.value.func.id == "super" and self.scope and self.is_rclpy_node_class(self.scope.cls)):
             self.set_name(call, self.value(arg(call, 0, "node_name")))
-            self.builtin_ports(call, func in _LIFECYCLE or self.is_rclpy_node_class(self.scope and self.scope.cls,
-                                                                                      lifecycle=True))
+            cls = self.scope.cls if self.scope else None
+            self.builtin_ports(call, func in _LIFECYCLE or self.is_rclpy_node_class(cls, lifecycle=True))
             namespace = next((kw.value for kw in call.keywords if kw.arg == "namespace"), None)
             if namespace is not None:
                 self.summary.namespace = self.value(namespace)
