@@ -177,3 +177,4 @@ class NodeSummary:
     # node, enable_logger_service), and the default ones it turns off (start_parameter_services=False)
     infrastructure: tuple[str, ...] = ()
     without: tuple[str, ...] = ()
+    others: list[NodeSummary] = field(default_factory=list)  # further nodes the same process creates (rclpy)

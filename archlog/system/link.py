@@ -62,9 +62,25 @@ def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, 
         config.nodes.append(LaunchNode(elem, summary.package, summary.executable, names.join("/", instance),
                                        names.namespace_of(names.join("/", instance))))
     missing: set[tuple[str, str]] = set()
-    instances = [Instance(node, _summary(node, summaries, models, config, workspace, diagnostics, missing))
-                 for node in config.nodes]
+    instances = []
+    for node in list(config.nodes):
+        instances.append(Instance(node, _summary(node, summaries, models, config, workspace, diagnostics, missing)))
+        for co_node, co_summary in _co_nodes(node, summaries.get(node.kind)):
+            config.nodes.append(co_node)
+            instances.append(Instance(co_node, _summary(co_node, {node.kind: co_summary}, models, config, workspace,
+                                                        diagnostics, missing)))
     return System(workspace, config, instances, message_files(workspace))
+
+
+def _co_nodes(node: LaunchNode, summary: NodeSummary | None) -> list[tuple[LaunchNode, NodeSummary]]:
+    """The further nodes an instance's process creates (several rclpy nodes in one program), each under
+    the name its code gives it, in the instance's namespace, with the instance's remaps and parameters."""
+    found = []
+    for other in summary.others if summary is not None else []:
+        name = other.default_name if isinstance(other.default_name, str) and other.default_name else node.type
+        namespace = names.join(node.namespace, other.namespace) if isinstance(other.namespace, str) else node.namespace
+        found.append((replace(node, name=names.join(namespace, name), namespace=namespace), other))
+    return found
 
 
 _COMPARED = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")

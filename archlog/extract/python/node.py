@@ -25,6 +25,7 @@ from archlog.extract.python.imports import Module, imported_calls, package_modul
 from archlog.extract.python.index import Function, arg
 from archlog.extract.python.qos_profile import QosReader
 from archlog.extract.python.repair import REPAIR_LINES, NestedTooDeeply, parse_tolerant
+from archlog.extract.python.several import OUTSIDE, Nodes
 from archlog.extract.summary import NodeSummary, Port
 from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Unknown, Value, concat
 
@@ -124,7 +125,8 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
     tree = _tree(source, shown, summary, diagnostics)
     if tree is None:
         return summary
-    reader = NodeReader(summary, shown, tree)
+    nodes = Nodes()
+    reader = NodeReader(summary, shown, tree, nodes)
     reader.run()
     summary.publishes, summary.writes = recover_behavior(reader, summary.ports, diagnostics)
     readers = [reader]
@@ -133,7 +135,7 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
         module_tree = _tree(module.data.decode("utf-8", errors="replace"), module_shown, summary, diagnostics) \
             if calls[module] else None
         if module_tree is not None:
-            readers.append(NodeReader(summary, module_shown, module_tree))
+            readers.append(NodeReader(summary, module_shown, module_tree, nodes))
             readers[-1].run(calls[module])
             if missing := sorted(calls[module] - _defined(module_tree)):
                 summary.incomplete = summary.incomplete or f"{module_shown}:1: {', '.join(missing)} not defined " \
@@ -141,7 +143,9 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
     for read in readers:
         for line, code, message, severity in read.notes:
             diagnostics.add(read.file, line, code, message, severity)
-    summary.ports = _without_untyped_duplicates(summary.ports)
+    summary = nodes.split(summary)
+    for node in [summary, *summary.others]:
+        node.ports = _without_untyped_duplicates(node.ports)
     if not summary.name_file and not summary.ports and not summary.incomplete:
         summary.incomplete = f"{shown}:1: sets up no ROS node (no rospy.init_node, no rclpy node) here or in the " \
             "package modules it calls that archlog reads: if it is a node, its ROS code is elsewhere"
@@ -188,9 +192,10 @@ def _without_untyped_duplicates(ports: list[Port]) -> list[Port]:
 class NodeReader(ValueFolder):
     """Walks a module's scopes in order and reads the ROS calls in each into the summary."""
 
-    def __init__(self, summary: NodeSummary, shown: str, tree: ast.Module) -> None:
+    def __init__(self, summary: NodeSummary, shown: str, tree: ast.Module, nodes: Nodes) -> None:
         super().__init__(shown, tree)
         self.summary = summary
+        self.nodes = nodes
         self.profiles = QosReader(self)
         self.notes: list[tuple[int, str, str, str]] = []  # diagnostics: line, code, message, severity
         self.seen: set[Port] = set()
@@ -216,9 +221,10 @@ class NodeReader(ValueFolder):
         flags = {kw.arg: self.value(kw.value) for kw in call.keywords if kw.arg in _NODE_FLAGS}
         wanted = [group for flag, (group, on) in _NODE_FLAGS.items() if on and flags.get(flag) == "true"]
         off = [group for flag, (group, on) in _NODE_FLAGS.items() if not on and flags.get(flag) == "false"]
-        self.summary.infrastructure = tuple(dict.fromkeys([*self.summary.infrastructure, *wanted,
-                                                           *(["lifecycle"] if lifecycle else [])]))
-        self.summary.without = tuple(dict.fromkeys([*self.summary.without, *off]))
+        for node in (self.summary, self.nodes.part(self.owner())):
+            node.infrastructure = tuple(dict.fromkeys([*node.infrastructure, *wanted,
+                                                       *(["lifecycle"] if lifecycle else [])]))
+            node.without = tuple(dict.fromkeys([*node.without, *off]))
 
     # -- traversal --------------------------------------------------------------------------
     def _visit(self, node: ast.AST) -> None:
@@ -364,7 +370,7 @@ class NodeReader(ValueFolder):
             self.builtin_ports(call, func in _LIFECYCLE or self.is_rclpy_node_class(cls, lifecycle=True))
             namespace = next((kw.value for kw in call.keywords if kw.arg == "namespace"), None)
             if namespace is not None:
-                self.summary.namespace = self.value(namespace)
+                self.summary.namespace = self.nodes.part(self.owner()).namespace = self.value(namespace)
 
     def is_rclpy_call(self, call: ast.Call) -> bool:
         """A method call on an rclpy Node: `self` in a Node subclass, or any object of a module
@@ -434,12 +440,19 @@ class NodeReader(ValueFolder):
                 return self.unknown(expr, "not a rate")
         return value
 
+    def owner(self) -> str:
+        """Whose ports the walk is reading: the rclpy Node subclass of the method, else the code outside them."""
+        cls = self.scope.cls if self.scope else None
+        return cls if cls and self.is_rclpy_node_class(cls) else OUTSIDE
+
     def set_name(self, call: ast.Call, name: Value) -> None:
-        """The node's name (a note when the file creates several nodes)."""
-        if self.summary.default_name is not None and self.summary.default_name != name:
-            self.notes.append((call.lineno, "python-several-nodes", f"this file creates several nodes "
-                               f"({self.summary.default_name}, {name}); archlog reads them as one node named after "
-                               "the last", "note"))
+        """The name of the node the walk's code creates (each Node subclass, and the code outside them, is a
+        node of its own: several.py); a note when one of them names several nodes."""
+        part = self.nodes.part(self.owner())
+        if part.name is not None and part.name != name:
+            self.notes.append((call.lineno, "python-several-nodes", f"this code creates several nodes "
+                               f"({part.name}, {name}); archlog reads them as one node named after the last", "note"))
+        part.name, part.file, part.line = name, self.file, call.lineno
         self.summary.default_name = name
         self.summary.name_file, self.summary.name_line = self.file, call.lineno
 
@@ -457,6 +470,7 @@ class NodeReader(ValueFolder):
         if port not in self.seen:
             self.seen.add(port)
             self.summary.ports.append(port)
+            self.nodes.owners.setdefault(port, self.owner())
 
 
 def _listed(value: Value) -> list[ParamList]:
