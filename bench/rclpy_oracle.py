@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from archlog.analysis import analyse
-from archlog.system.infrastructure import builtin
+from archlog.extract.builtin_ports import builtin
 
 KINDS = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 _ACTION_SERVICES = ("send_goal", "cancel_goal", "get_result")
@@ -186,7 +186,7 @@ def _full(namespace: str, name: str) -> str:
     return namespace.rstrip("/") + "/" + name
 
 
-def _poll(observer, before: set[str], seen: Ports) -> None:  # noqa: ANN001 (an rclpy Node)
+def _poll(observer, before: set[str], seen: Ports) -> None:
     """Add what the graph shows now for every node not there before."""
     for name, namespace in observer.get_node_names_and_namespaces():
         node = _full(namespace, name)
@@ -200,7 +200,7 @@ def _poll(observer, before: set[str], seen: Ports) -> None:  # noqa: ANN001 (an 
         for kind, call in calls:
             try:
                 found = call(name, namespace)
-            except Exception:  # noqa: BLE001 - the node left the graph meanwhile
+            except Exception:
                 continue
             for topic, types in found:
                 ports[(kind, topic)] = types[0] if types else ""
@@ -221,7 +221,7 @@ def _fold_actions(ports: dict[tuple[str, str], str]) -> dict[tuple[str, str], st
     return folded
 
 
-def _activate(observer, seen: Ports) -> None:  # noqa: ANN001 (an rclpy Node)
+def _activate(observer, seen: Ports) -> None:
     """Configure and activate every lifecycle node seen (its ports made in on_configure then exist)."""
     import rclpy
     from lifecycle_msgs.srv import ChangeState

@@ -4,47 +4,11 @@ to every ROS 2 node instance, whatever read its source, each marked with the gro
 
 from __future__ import annotations
 
-import functools
-from dataclasses import dataclass
-from pathlib import Path
-
-import yaml
-
 from archlog import sandbox
+from archlog.extract.builtin_ports import Group, builtin
 from archlog.extract.launch.model import LaunchNode
 from archlog.extract.summary import NodeSummary, Port
 from archlog.extract.workspace.index import Workspace
-
-DATA = Path(__file__).resolve().parent.parent / "models" / "infrastructure" / "ros2.yaml"
-_KINDS = {"publishers": "publisher", "subscribers": "subscriber", "services": "service_server"}
-
-
-@dataclass(frozen=True)
-class Group:
-    """One group of built-in ports: (kind, name, type) each, from distribution `since` on."""
-
-    name: str
-    ports: tuple[tuple[str, str, str], ...]
-    since: str | None
-
-
-@dataclass(frozen=True)
-class Builtin:
-    """The groups, which of them every node has, and the distributions in release order."""
-
-    groups: dict[str, Group]
-    default: tuple[str, ...]
-    distros: tuple[str, ...]
-
-
-@functools.cache
-def builtin() -> Builtin:
-    """The shipped table of built-in ports."""
-    data = yaml.safe_load(DATA.read_text())
-    groups = {name: Group(name, tuple((_KINDS[key], p["name"], p["type"]) for key in _KINDS
-                                      for p in entry.get(key, [])), entry.get("since"))
-              for name, entry in data["groups"].items()}
-    return Builtin(groups, tuple(data["default"]), tuple(data["distros"]))
 
 
 def is_ros2(node: LaunchNode, summary: NodeSummary, workspace: Workspace) -> bool:

@@ -18,6 +18,7 @@ from pathlib import Path
 
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.builtin_ports import builtin
 from archlog.extract.cpp.cache import ResultCache, key
 from archlog.extract.python.behavior.triggers import recover_behavior
 from archlog.extract.python.fold import Element, ValueFolder
@@ -63,6 +64,8 @@ _PARAM_READS = {"rospy.get_param": True, "rospy.search_param": False, "rospy.has
 _PARAM_WRITES = {"rospy.set_param", "rospy.delete_param"}
 _FIXED_TYPES = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage",
                 "/diagnostics": "diagnostic_msgs/DiagnosticArray"}
+# rclpy's parameter clients: a client of each parameter service of the remote node
+_PARAMETER_CLIENTS = ("rclpy.parameter_client.AsyncParameterClient",)
 _LIFECYCLE = ("rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode", "rclpy.lifecycle.node.LifecycleNode")
 # rclpy Node keywords that add (True) or remove (False) a group of built-in ports: keyword -> (group, adds)
 _NODE_FLAGS = {"enable_logger_service": ("logger_service", True), "start_parameter_services": ("parameter_services", False),
@@ -359,6 +362,10 @@ class NodeReader(ValueFolder):
         elif func in _RCLPY_ACTIONS:
             self.add(_RCLPY_ACTIONS[func], call, self.value(arg(call, 2, "action_name")),
                      self.message_type(arg(call, 1, "action_type"), True))
+        elif func in _PARAMETER_CLIENTS:
+            remote = self.value(arg(call, 1, "remote_node_name"))
+            for _kind, name, type_ in builtin().groups["parameter_services"].ports:
+                self.add("service_client", call, concat(remote, name.removeprefix("~")), type_)
         elif method and self.is_rclpy_call(call):
             self.rclpy_call(call, method)
         elif func in ("rclpy.create_node", "rclpy.node.Node", *_LIFECYCLE) or (
