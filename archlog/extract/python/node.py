@@ -326,6 +326,11 @@ class NodeReader(ValueFolder):
             return f"{parts[0]}/{parts[1]}/{base}" if ros2 else f"{parts[0]}/{base}"
         if expr is None:
             return Unknown("<missing type>", self.file, 0)
+        root = expr
+        while isinstance(root, ast.Attribute):
+            root = root.value
+        if isinstance(root, ast.Name) and root.id in self.conditional:
+            return self.unknown(expr, f"one of {', '.join(self.conditional[root.id])}, by which import runs")
         return self.unknown(expr, "message type not resolved")
 
     # -- ROS calls --------------------------------------------------------------------------
