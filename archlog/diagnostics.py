@@ -92,7 +92,8 @@ CODES: dict[str, Code] = {
                           "Fix the syntax."),
         "python2": ("note", "Python 2 syntax was repaired line by line to read the file's ROS calls.",
                     "Port the file to Python 3."),
-        "python-several-nodes": ("note", "A Python file creates several nodes; they are read as one.",
+        "python-several-nodes": ("note", "One piece of Python code (an rclpy Node subclass, or the code outside them) "
+                                 "creates several nodes; they are read as one.",
                                  "Split the nodes, or model them."),
         "python-behavior": ("note", "A file has more paths than the behavior walk's budget; some publish "
                             "triggers are unknown.", "Nothing; the triggers not found are unknown."),

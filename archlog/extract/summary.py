@@ -32,6 +32,7 @@ class Port:
     after_tf: tuple[str, ...] = ()  # the node creates it only after these transform waits (TransformWait.id) end
     type_of: tuple[Value, ...] = ()  # models: it carries the type the publishers of these topics (as written) give
     optional: bool = False  # an input the node works without (a model's `optional: true`)
+    infrastructure: str = ""  # a built-in port of the client library: its group (system/infrastructure.py)
 
 
 @dataclass(frozen=True)
@@ -171,3 +172,9 @@ class NodeSummary:
     tf_unknown: bool = False  # its description, arguments or gazebo plugins leave what it broadcasts unknown
     argv_ports: tuple[tuple[str, dict, str], ...] = ()  # models: (kind, entry, file) named from the command line
     valued_options: tuple[str, ...] = ()  # models: command-line options that take a value (not a positional word)
+    ros: int = 0  # the ROS version its source uses (rospy/roscpp 1, rclpy/rclcpp 2), 0 when the source does not say
+    # built-in port groups (models/infrastructure/) beyond every node's that its code asks for (a lifecycle
+    # node, enable_logger_service), and the default ones it turns off (start_parameter_services=False)
+    infrastructure: tuple[str, ...] = ()
+    without: tuple[str, ...] = ()
+    others: list[NodeSummary] = field(default_factory=list)  # further nodes the same process creates (rclpy)

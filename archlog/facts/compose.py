@@ -97,13 +97,14 @@ def _unknown_patterns(store: FactStore) -> None:
 def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSink | None = None) -> None:
     """near_name facts (both directions) for the names that only one side uses (published and not
     subscribed, served and not called, or the reverse): the ends a near miss may explain, each with
-    every name the ports use. A name too long to compare is noted (once, at its first port) when
-    `diagnostics` is given."""
+    every name the ports use (the client library's built-in ports are left out). A name too long to
+    compare is noted (once, at its first port) when `diagnostics` is given."""
     first_port: dict[str, str] = {}
     sides: dict[str, set[str]] = {rel: set() for rel in NAMED_PORTS}
+    builtin = {row[0] for row in store.rows("infrastructure_port")}
     for rel in NAMED_PORTS:
         for row in store.rows(rel):
-            if isinstance(row[2], str):
+            if isinstance(row[2], str) and row[0] not in builtin:
                 first_port.setdefault(row[2], str(row[0]))
                 sides[rel].add(row[2])
     for name, port in first_port.items():
@@ -136,6 +137,8 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
                 store.add("port_after_tf", pid, waits[wait])
         if port.optional:
             store.add("optional_port", pid)
+        if port.infrastructure:
+            store.add("infrastructure_port", pid, port.infrastructure)
         sites.setdefault(Site(port.file, port.line), []).append((port.kind, pid))
         for policy, value in port.qos:
             store.add("qos", pid, policy, value)

@@ -111,6 +111,11 @@ RELATIONS: tuple[Relation, ...] = (
          ("microseconds", "int", "the duration in microseconds, at most 2147483647 (about 36 minutes)")),
     _rel("ports", "optional_port", "A subscriber its node works without (a model marks it `optional: true`: an "
          "input users may send, such as a reset); AL103, AL104 and AL601 do not report it as unfed.", _PORT),
+    _rel("ports", "infrastructure_port", "A port every ROS 2 node of its kind has because of its client library, not "
+         "because its code creates it: /rosout, /parameter_events, the parameter services, a lifecycle node's "
+         "services and transition_event, the logger services (archlog/models/infrastructure/ros2.yaml). Rules and "
+         "reports may hide them.", _PORT, ("group", "str", "rosout, parameter_events, parameter_services, "
+                                            "type_description, lifecycle or logger_service")),
     _rel("ports", "alternative_names", "A port whose name is one of several at run time (a ternary, if/else); "
          "each alternative is its own row of the port's relation.", _PORT, ("count", "int", "how many alternatives")),
     _rel("ports", "port_source_name", "A port's name resolved in the node's namespace, before remapping.",

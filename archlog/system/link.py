@@ -16,6 +16,7 @@ from archlog.extract.workspace.messages import message_files
 from archlog.system.camera_info import placed_camera_info
 from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
+from archlog.system.infrastructure import infrastructure_ports
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels, argv_ports
 from archlog.system.nodelets import in_process, is_manager, loaded_ports, loader_ports, manager_summary
@@ -61,9 +62,25 @@ def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, 
         config.nodes.append(LaunchNode(elem, summary.package, summary.executable, names.join("/", instance),
                                        names.namespace_of(names.join("/", instance))))
     missing: set[tuple[str, str]] = set()
-    instances = [Instance(node, _summary(node, summaries, models, config, workspace, diagnostics, missing))
-                 for node in config.nodes]
+    instances = []
+    for node in list(config.nodes):
+        instances.append(Instance(node, _summary(node, summaries, models, config, workspace, diagnostics, missing)))
+        for co_node, co_summary in _co_nodes(node, summaries.get(node.kind)):
+            config.nodes.append(co_node)
+            instances.append(Instance(co_node, _summary(co_node, {node.kind: co_summary}, models, config, workspace,
+                                                        diagnostics, missing)))
     return System(workspace, config, instances, message_files(workspace))
+
+
+def _co_nodes(node: LaunchNode, summary: NodeSummary | None) -> list[tuple[LaunchNode, NodeSummary]]:
+    """The further nodes an instance's process creates (several rclpy nodes in one program), each under
+    the name its code gives it, in the instance's namespace, with the instance's remaps and parameters."""
+    found = []
+    for other in summary.others if summary is not None else []:
+        name = other.default_name if isinstance(other.default_name, str) and other.default_name else node.type
+        namespace = names.join(node.namespace, other.namespace) if isinstance(other.namespace, str) else node.namespace
+        found.append((replace(node, name=names.join(namespace, name), namespace=namespace), other))
+    return found
 
 
 _COMPARED = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
@@ -156,6 +173,7 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
         summary = replace(summary, ports=file_ports(node, summary.ports, config, workspace, diagnostics))
     if summary is not None:
         summary = _with_transforms(_with_marks(summary, model), model, node, config, workspace, diagnostics)
+        summary = replace(summary, ports=summary.ports + infrastructure_ports(node, summary, workspace))
     if summary is None and node.kind not in missing:
         kind = node.kind
         missing.add(kind)

@@ -31,6 +31,8 @@ def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
     lines = [f"node {json.dumps(plain(summary.default_name))} namespace {json.dumps(plain(summary.namespace))}"
              f" anonymous {summary.anonymous}"]
     lines += [f"incomplete {summary.incomplete}"] if summary.incomplete else []
+    lines += [f"built-in ports {' '.join(summary.infrastructure) or '-'} without {' '.join(summary.without) or '-'}"] \
+        if summary.infrastructure or summary.without else []
     for p in summary.ports:
         extra = f" default {json.dumps(plain(p.default))}" if p.default is not None else ""
         extra += "".join(f" {k}={v}" for k, v in p.qos)
@@ -42,6 +44,8 @@ def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
         lines.append(f"{site}: {p.kind} {json.dumps(plain(p.name))} {json.dumps(plain(p.type))}{handle}{extra}")
     lines += [f"{n.line}: load {json.dumps(plain(n.plugin))} as {json.dumps(plain(n.name))}"
               + "".join(f" {json.dumps(plain(k))}:={json.dumps(plain(v))}" for k, v in n.remaps) for n in summary.loads]
+    for other in summary.others:  # further nodes of the same process
+        lines += ["also " + line for line in describe(other, []).splitlines()]
     lines += [f"diagnostic {d.line}: {d.severity} {d.code}" for d in diagnostics]
     lines += [describe_publish(p) for p in summary.publishes]
     lines += [f"write {w.line} {w.var}={w.value}" + (f" by {_site(w.source, w.file)}" if w.source else "")

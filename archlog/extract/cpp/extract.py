@@ -600,6 +600,7 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
         summary.default_name, summary.anonymous = result.default_name, result.anonymous
         summary.name_file, summary.name_line = result.name_file, result.name_line
         summary.namespace = result.namespace
+    summary.infrastructure = tuple(dict.fromkeys([*summary.infrastructure, *result.infrastructure]))
     summary.incomplete = summary.incomplete or result.incomplete
     diagnostics.extend(result.diagnostics)
 

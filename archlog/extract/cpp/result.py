@@ -22,6 +22,7 @@ class FileResult:
     name_file: str = ""
     name_line: int = 0
     namespace: Value = ""
+    infrastructure: tuple[str, ...] = ()  # built-in port groups its node asks for (a lifecycle node)
     incomplete: str | None = None
     diagnostics: list[Diagnostic] = field(default_factory=list)
     fallback_lines: list[int] = field(default_factory=list)

@@ -34,6 +34,7 @@ class FileIndex:
     def __init__(self, tree: ast.Module) -> None:
         self.tree = tree
         self.aliases: dict[str, str] = {}
+        self.conditional: dict[str, list[str]] = {}  # a name several imports bind to different things
         self.module_assigns: dict[str, list[Assigned]] = {}
         self.class_attrs: dict[str, dict[str, list[Assigned]]] = {}
         self.attr_scope: dict[int, Function] = {}
@@ -48,13 +49,19 @@ class FileIndex:
 
     def _index(self) -> None:
         """Aliases, assignments, functions, class attributes, declared parameters and call sites."""
+        bound: dict[str, list[str]] = {}
         for node in ast.walk(self.tree):
             if isinstance(node, ast.Import):
                 for a in node.names:
-                    self.aliases[a.asname or a.name.split(".")[0]] = a.name if a.asname else a.name.split(".")[0]
+                    bound.setdefault(a.asname or a.name.split(".")[0], []).append(
+                        a.name if a.asname else a.name.split(".")[0])
             elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
                 for a in node.names:
-                    self.aliases[a.asname or a.name] = f"{node.module}.{a.name}"
+                    bound.setdefault(a.asname or a.name, []).append(f"{node.module}.{a.name}")
+        for alias, targets in bound.items():
+            self.aliases[alias] = targets[-1]
+            if len(set(targets)) > 1:  # imported under conditions: which one runs is not known statically
+                self.conditional[alias] = list(dict.fromkeys(targets))
         record_assigns(self.tree.body, self.module_assigns, nested=True)
         for node in self.tree.body:
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
@@ -100,9 +107,10 @@ class FileIndex:
         self.functions[(cls, node.name)] = function
 
     def qualified(self, expr: ast.expr) -> str | None:
-        """The dotted name of a name or attribute, its first part resolved through the imports."""
+        """The dotted name of a name or attribute, its first part resolved through the imports (None when
+        that part is bound by several imports to different things: which one runs is not known)."""
         if isinstance(expr, ast.Name):
-            return self.aliases.get(expr.id, expr.id)
+            return None if expr.id in self.conditional else self.aliases.get(expr.id, expr.id)
         if isinstance(expr, ast.Attribute):
             base = self.qualified(expr.value)
             return f"{base}.{expr.attr}" if base else None

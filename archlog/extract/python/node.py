@@ -18,6 +18,7 @@ from pathlib import Path
 
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.builtin_ports import builtin
 from archlog.extract.cpp.cache import ResultCache, key
 from archlog.extract.python.behavior.triggers import recover_behavior
 from archlog.extract.python.fold import Element, ValueFolder
@@ -25,6 +26,7 @@ from archlog.extract.python.imports import Module, imported_calls, package_modul
 from archlog.extract.python.index import Function, arg
 from archlog.extract.python.qos_profile import QosReader
 from archlog.extract.python.repair import REPAIR_LINES, NestedTooDeeply, parse_tolerant
+from archlog.extract.python.several import OUTSIDE, Nodes
 from archlog.extract.summary import NodeSummary, Port
 from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Unknown, Value, concat
 
@@ -43,7 +45,8 @@ _ROSPY = {
 }
 # rclpy Node methods: method -> (kind, index of the type, index of the name)
 _RCLPY_METHODS = {
-    "create_publisher": ("publisher", 0, 1), "create_subscription": ("subscriber", 0, 1),
+    "create_publisher": ("publisher", 0, 1), "create_lifecycle_publisher": ("publisher", 0, 1),
+    "create_subscription": ("subscriber", 0, 1),
     "create_service": ("service_server", 0, 1), "create_client": ("service_client", 0, 1),
 }
 _RCLPY_ACTIONS = {"rclpy.action.ActionServer": "action_server", "rclpy.action.ActionClient": "action_client"}
@@ -61,6 +64,12 @@ _PARAM_READS = {"rospy.get_param": True, "rospy.search_param": False, "rospy.has
 _PARAM_WRITES = {"rospy.set_param", "rospy.delete_param"}
 _FIXED_TYPES = {"/tf": "tf2_msgs/TFMessage", "/tf_static": "tf2_msgs/TFMessage",
                 "/diagnostics": "diagnostic_msgs/DiagnosticArray"}
+# rclpy's parameter clients: a client of each parameter service of the remote node
+_PARAMETER_CLIENTS = ("rclpy.parameter_client.AsyncParameterClient",)
+_LIFECYCLE = ("rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode", "rclpy.lifecycle.node.LifecycleNode")
+# rclpy Node keywords that add (True) or remove (False) a group of built-in ports: keyword -> (group, adds)
+_NODE_FLAGS = {"enable_logger_service": ("logger_service", True), "start_parameter_services": ("parameter_services", False),
+               "enable_rosout": ("rosout", False)}
 _RCLPY_ONLY = {*_RCLPY_METHODS, "declare_parameter", "declare_parameters", "get_parameter", "get_parameter_or",
                "create_timer"}
 _DIAGNOSTIC_MESSAGES = ("DiagnosticArray", "DiagnosticStatus", "KeyValue")  # diagnostic_updater re-exports them
@@ -119,7 +128,8 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
     tree = _tree(source, shown, summary, diagnostics)
     if tree is None:
         return summary
-    reader = NodeReader(summary, shown, tree)
+    nodes = Nodes()
+    reader = NodeReader(summary, shown, tree, nodes)
     reader.run()
     summary.publishes, summary.writes = recover_behavior(reader, summary.ports, diagnostics)
     readers = [reader]
@@ -128,7 +138,7 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
         module_tree = _tree(module.data.decode("utf-8", errors="replace"), module_shown, summary, diagnostics) \
             if calls[module] else None
         if module_tree is not None:
-            readers.append(NodeReader(summary, module_shown, module_tree))
+            readers.append(NodeReader(summary, module_shown, module_tree, nodes))
             readers[-1].run(calls[module])
             if missing := sorted(calls[module] - _defined(module_tree)):
                 summary.incomplete = summary.incomplete or f"{module_shown}:1: {', '.join(missing)} not defined " \
@@ -136,7 +146,9 @@ def _read(source: str, summary: NodeSummary, shown: str, diagnostics: Diagnostic
     for read in readers:
         for line, code, message, severity in read.notes:
             diagnostics.add(read.file, line, code, message, severity)
-    summary.ports = _without_untyped_duplicates(summary.ports)
+    summary = nodes.split(summary)
+    for node in [summary, *summary.others]:
+        node.ports = _without_untyped_duplicates(node.ports)
     if not summary.name_file and not summary.ports and not summary.incomplete:
         summary.incomplete = f"{shown}:1: sets up no ROS node (no rospy.init_node, no rclpy node) here or in the " \
             "package modules it calls that archlog reads: if it is a node, its ROS code is elsewhere"
@@ -183,9 +195,10 @@ def _without_untyped_duplicates(ports: list[Port]) -> list[Port]:
 class NodeReader(ValueFolder):
     """Walks a module's scopes in order and reads the ROS calls in each into the summary."""
 
-    def __init__(self, summary: NodeSummary, shown: str, tree: ast.Module) -> None:
+    def __init__(self, summary: NodeSummary, shown: str, tree: ast.Module, nodes: Nodes) -> None:
         super().__init__(shown, tree)
         self.summary = summary
+        self.nodes = nodes
         self.profiles = QosReader(self)
         self.notes: list[tuple[int, str, str, str]] = []  # diagnostics: line, code, message, severity
         self.seen: set[Port] = set()
@@ -198,11 +211,23 @@ class NodeReader(ValueFolder):
                     and stmt.name in only:
                 self._visit(stmt)
 
-    def is_rclpy_node_class(self, cls: str | None, depth: int = 0) -> bool:
-        """A class deriving (in the file, up to 5 levels) from an rclpy Node."""
+    def is_rclpy_node_class(self, cls: str | None, depth: int = 0, lifecycle: bool = False) -> bool:
+        """A class deriving (in the file, up to 5 levels) from an rclpy Node (a LifecycleNode with `lifecycle`)."""
         bases = self.class_bases.get(cls or "", [])
-        return any(b in ("rclpy.node.Node", "rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode")
-                   or (depth < 5 and self.is_rclpy_node_class(b, depth + 1)) for b in bases)
+        roots = _LIFECYCLE if lifecycle else ("rclpy.node.Node", *_LIFECYCLE)
+        return any(b in roots or (depth < 5 and self.is_rclpy_node_class(b, depth + 1, lifecycle)) for b in bases)
+
+    def builtin_ports(self, call: ast.Call, lifecycle: bool) -> None:
+        """The built-in port groups (system/infrastructure.py) a node's construction asks for or turns off:
+        a lifecycle node, enable_logger_service=True, start_parameter_services=False, enable_rosout=False."""
+        self.summary.ros = 2
+        flags = {kw.arg: self.value(kw.value) for kw in call.keywords if kw.arg in _NODE_FLAGS}
+        wanted = [group for flag, (group, on) in _NODE_FLAGS.items() if on and flags.get(flag) == "true"]
+        off = [group for flag, (group, on) in _NODE_FLAGS.items() if not on and flags.get(flag) == "false"]
+        for node in (self.summary, self.nodes.part(self.owner())):
+            node.infrastructure = tuple(dict.fromkeys([*node.infrastructure, *wanted,
+                                                       *(["lifecycle"] if lifecycle else [])]))
+            node.without = tuple(dict.fromkeys([*node.without, *off]))
 
     # -- traversal --------------------------------------------------------------------------
     def _visit(self, node: ast.AST) -> None:
@@ -301,6 +326,11 @@ class NodeReader(ValueFolder):
             return f"{parts[0]}/{parts[1]}/{base}" if ros2 else f"{parts[0]}/{base}"
         if expr is None:
             return Unknown("<missing type>", self.file, 0)
+        root = expr
+        while isinstance(root, ast.Attribute):
+            root = root.value
+        if isinstance(root, ast.Name) and root.id in self.conditional:
+            return self.unknown(expr, f"one of {', '.join(self.conditional[root.id])}, by which import runs")
         return self.unknown(expr, "message type not resolved")
 
     # -- ROS calls --------------------------------------------------------------------------
@@ -309,6 +339,7 @@ class NodeReader(ValueFolder):
         func = self.qualified(call.func)
         method = call.func.attr if isinstance(call.func, ast.Attribute) else None
         if func == "rospy.init_node":
+            self.summary.ros = 1
             self.set_name(call, self.value(arg(call, 0, "name")))
             anon = arg(call, 2, "anonymous")
             self.summary.anonymous = isinstance(anon, ast.Constant) and anon.value is True
@@ -336,16 +367,22 @@ class NodeReader(ValueFolder):
         elif func in _RCLPY_ACTIONS:
             self.add(_RCLPY_ACTIONS[func], call, self.value(arg(call, 2, "action_name")),
                      self.message_type(arg(call, 1, "action_type"), True))
+        elif func in _PARAMETER_CLIENTS:
+            remote = self.value(arg(call, 1, "remote_node_name"))
+            for _kind, name, type_ in builtin().groups["parameter_services"].ports:
+                self.add("service_client", call, concat(remote, name.removeprefix("~")), type_)
         elif method and self.is_rclpy_call(call):
             self.rclpy_call(call, method)
-        elif func in ("rclpy.create_node", "rclpy.node.Node") or (
+        elif func in ("rclpy.create_node", "rclpy.node.Node", *_LIFECYCLE) or (
                 isinstance(call.func, ast.Attribute) and call.func.attr == "__init__"
                 and isinstance(call.func.value, ast.Call) and isinstance(call.func.value.func, ast.Name)
                 and call.func.value.func.id == "super" and self.scope and self.is_rclpy_node_class(self.scope.cls)):
             self.set_name(call, self.value(arg(call, 0, "node_name")))
+            cls = self.scope.cls if self.scope else None
+            self.builtin_ports(call, func in _LIFECYCLE or self.is_rclpy_node_class(cls, lifecycle=True))
             namespace = next((kw.value for kw in call.keywords if kw.arg == "namespace"), None)
             if namespace is not None:
-                self.summary.namespace = self.value(namespace)
+                self.summary.namespace = self.nodes.part(self.owner()).namespace = self.value(namespace)
 
     def is_rclpy_call(self, call: ast.Call) -> bool:
         """A method call on an rclpy Node: `self` in a Node subclass, or any object of a module
@@ -415,12 +452,19 @@ class NodeReader(ValueFolder):
                 return self.unknown(expr, "not a rate")
         return value
 
+    def owner(self) -> str:
+        """Whose ports the walk is reading: the rclpy Node subclass of the method, else the code outside them."""
+        cls = self.scope.cls if self.scope else None
+        return cls if cls and self.is_rclpy_node_class(cls) else OUTSIDE
+
     def set_name(self, call: ast.Call, name: Value) -> None:
-        """The node's name (a note when the file creates several nodes)."""
-        if self.summary.default_name is not None and self.summary.default_name != name:
-            self.notes.append((call.lineno, "python-several-nodes", f"this file creates several nodes "
-                               f"({self.summary.default_name}, {name}); archlog reads them as one node named after "
-                               "the last", "note"))
+        """The name of the node the walk's code creates (each Node subclass, and the code outside them, is a
+        node of its own: several.py); a note when one of them names several nodes."""
+        part = self.nodes.part(self.owner())
+        if part.name is not None and part.name != name:
+            self.notes.append((call.lineno, "python-several-nodes", f"this code creates several nodes "
+                               f"({part.name}, {name}); archlog reads them as one node named after the last", "note"))
+        part.name, part.file, part.line = name, self.file, call.lineno
         self.summary.default_name = name
         self.summary.name_file, self.summary.name_line = self.file, call.lineno
 
@@ -438,6 +482,7 @@ class NodeReader(ValueFolder):
         if port not in self.seen:
             self.seen.add(port)
             self.summary.ports.append(port)
+            self.nodes.owners.setdefault(port, self.owner())
 
 
 def _listed(value: Value) -> list[ParamList]:

@@ -10,7 +10,8 @@ import clang.cindex as ci
 from archlog import sandbox
 from archlog.extract.cpp.clang_ast import SKIP, K, qualified, strip, written_args
 
-NODE_CLASSES = ("rclcpp::Node", "rclcpp_lifecycle::LifecycleNode")
+LIFECYCLE_NODE = "rclcpp_lifecycle::LifecycleNode"
+NODE_CLASSES = ("rclcpp::Node", LIFECYCLE_NODE)
 # Node methods (and free functions of the same name) -> port kind
 ENTITIES = {"create_publisher": "publisher", "create_subscription": "subscriber", "create_service": "service_server",
             "create_client": "service_client", "create_generic_publisher": "publisher",

@@ -6,7 +6,7 @@ import clang.cindex as ci
 
 from archlog.diagnostics import Diagnostic
 from archlog.extract.cpp.clang_ast import CursorKey, K, qualified, written_args
-from archlog.extract.cpp.rclcpp.api import NODE_CLASSES, object_of, parameter_names
+from archlog.extract.cpp.rclcpp.api import LIFECYCLE_NODE, NODE_CLASSES, object_of, parameter_names
 from archlog.extract.cpp.rclcpp.context import WalkContext
 from archlog.extract.cpp.rclcpp.definitions import Definitions
 from archlog.values import Value, concat
@@ -47,6 +47,8 @@ class Nodes:
         name = next((a for n, a in texts if n in ("node_name", "name")), texts[0][1] if texts else None)
         if name is None:
             return
+        if ctor is not None and qualified(ctor.semantic_parent) == LIFECYCLE_NODE:
+            self.ctx.result.infrastructure = ("lifecycle",)
         value = self.ctx.value(name)
         namespace = next((a for n, a in texts if n in ("namespace_", "namespace", "ns", "node_namespace")), None)
         if self.node_names and value not in self.node_names:
