@@ -4,7 +4,7 @@
                                 [--config 'LAUNCH [name:=value ...]']... [--rosrun-only]
 
 Each ROOT is one repository, indexed as the workspace. It is checked once per ROS 2 launch file
-in it (`*.launch.py`, `*.launch.xml`, `*.launch.yaml`, `launch/*.py`), and once without a launch
+in it (`*.launch.py`, `*_launch.py` and the same for xml and yaml, `launch/*.py`), and once without a launch
 file (the rosrun configuration: every executable once). `--config` replaces the launch files by
 the ones given (relative to ROOT, each with its launch arguments; repeat it); `--rosrun-only`
 checks only the rosrun configuration. Each run is `analyse` plus the built-in rules, as `archlog check`
@@ -70,7 +70,7 @@ def launch_files(root: Path) -> list[Path]:
         if not path.is_file() or any(p in SKIP_DIRS or p.startswith(".") for p in parts):
             continue
         name = path.name
-        if name.endswith((".launch.py", ".launch.xml", ".launch.yaml")) or \
+        if name.endswith((".launch.py", ".launch.xml", ".launch.yaml", "_launch.py", "_launch.xml", "_launch.yaml")) or \
                 (path.suffix == ".py" and path.parent.name == "launch" and name != "__init__.py"):
             found.append(path)
     return found
