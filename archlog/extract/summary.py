@@ -171,3 +171,4 @@ class NodeSummary:
     tf_unknown: bool = False  # its description, arguments or gazebo plugins leave what it broadcasts unknown
     argv_ports: tuple[tuple[str, dict, str], ...] = ()  # models: (kind, entry, file) named from the command line
     valued_options: tuple[str, ...] = ()  # models: command-line options that take a value (not a positional word)
+    ros: int | None = None  # models: the ROS version (1 or 2) of the nodes it describes; None: either
