@@ -51,6 +51,8 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
             store.add("ros2_node", node.name)
         if node.standalone:
             store.add("standalone", node.elem.id)
+        if node.name_unknown:
+            store.add("node_name_unknown", node.elem.id)
         for depth, include in enumerate(node.chain, 1):
             store.add("included_through", node.elem.id, include.id, depth)
             store.locate(include.id, include.file, include.line)

@@ -57,6 +57,9 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("configuration", "standalone", "A node instance of the configuration without a launch file (every executable "
          "once, each started by itself): which of them run together is not known.",
          ("elem", "id", "the node's element")),
+    _rel("configuration", "node_name_unknown", "A node instance whose name is not known statically (neither the "
+         "launch file nor the code gives one archlog can read): the executable's name stands in for it.",
+         ("elem", "id", "the node's element")),
     _rel("configuration", "nodelet", "A node instance that loads a nodelet plugin (nodelet load/standalone).",
          _NODE, ("plugin", "str", "plugin type pkg/Name"), ("manager", "str", "manager node as written, or empty")),
     _rel("configuration", "included_through", "An <include> a node's element was loaded through.",
