@@ -1,10 +1,13 @@
 """Survey: run archlog's whole pipeline on real ROS 2 repositories, to find crashes and false positives.
 
     python bench/ros2_survey.py ROOT... [--timeout S] [--json FILE] [--show N] [--findings]
+                                [--config 'LAUNCH [name:=value ...]']... [--rosrun-only]
 
 Each ROOT is one repository, indexed as the workspace. It is checked once per ROS 2 launch file
-in it (`*.launch.py`, `*.launch.xml`, `*.launch.yaml`, `launch/*.py`), and once without a launch
-file (the rosrun configuration). Each run is `analyse` plus the built-in rules, as `archlog check`
+in it (`*.launch.py`, `*_launch.py` and the same for xml and yaml, `launch/*.py`), and once without a launch
+file (the rosrun configuration: every executable once). `--config` replaces the launch files by
+the ones given (relative to ROOT, each with its launch arguments; repeat it); `--rosrun-only`
+checks only the rosrun configuration. Each run is `analyse` plus the built-in rules, as `archlog check`
 does, in a child process with a time limit; any exception is a crash, with its traceback.
 Per repository: launch files, crashes (must be 0), timeouts, nodes and ports recovered, ports
 with a known QoS and the publisher/subscriber pairs the QoS rules can judge, diagnostics by code,
@@ -46,6 +49,7 @@ class Run:
 
     root: str
     launch: str
+    args: dict[str, str] = field(default_factory=dict)
     seconds: float = 0.0
     crash: str | None = None  # the traceback
     timeout: bool = False
@@ -66,18 +70,18 @@ def launch_files(root: Path) -> list[Path]:
         if not path.is_file() or any(p in SKIP_DIRS or p.startswith(".") for p in parts):
             continue
         name = path.name
-        if name.endswith((".launch.py", ".launch.xml", ".launch.yaml")) or \
+        if name.endswith((".launch.py", ".launch.xml", ".launch.yaml", "_launch.py", "_launch.xml", "_launch.yaml")) or \
                 (path.suffix == ".py" and path.parent.name == "launch" and name != "__init__.py"):
             found.append(path)
     return found
 
 
-def check(root: Path, launch: Path | None) -> Run:
-    """archlog check ROOT [--launch LAUNCH] in this process: facts, then the built-in rules."""
-    run = Run(str(root), str(launch.relative_to(root)) if launch else ROSRUN)
+def check(root: Path, launch: Path | None, args: dict[str, str]) -> Run:
+    """archlog check ROOT [--launch LAUNCH name:=value...] in this process: facts, then the built-in rules."""
+    run = Run(str(root), label(root, launch, args), args)
     start = time.perf_counter()
     try:
-        analysis = analyse([root], [str(launch)] if launch else [], {}, [])
+        analysis = analyse([root], [str(launch)] if launch else [], args, [])
         ctl, findings = Engine(load_rules([])).run(analysis.store)
     except Exception:  # the point of the survey: any exception is a crash to report
         run.crash = traceback.format_exc()
@@ -96,17 +100,37 @@ def check(root: Path, launch: Path | None) -> Run:
     return run
 
 
-def _child(root: Path, launch: Path | None, conn: Connection) -> None:
+def label(root: Path, launch: Path | None, args: dict[str, str]) -> str:
+    """How a configuration is named in the output: the launch file and its arguments, or ROSRUN."""
+    if launch is None:
+        return ROSRUN
+    return " ".join([str(launch.relative_to(root)), *(f"{k}:={v}" for k, v in args.items())])
+
+
+def configurations(root: Path, given: list[str], rosrun_only: bool) -> list[tuple[Path | None, dict[str, str]]]:
+    """The configurations to check in root: the launch files given (or found), then the rosrun one."""
+    if rosrun_only:
+        return [(None, {})]
+    if not given:
+        return [*((launch, {}) for launch in launch_files(root)), (None, {})]
+    chosen: list[tuple[Path | None, dict[str, str]]] = []
+    for spec in given:
+        path, *pairs = spec.split()
+        chosen.append((root / path, dict(pair.split(":=", 1) for pair in pairs)))
+    return [*chosen, (None, {})]
+
+
+def _child(root: Path, launch: Path | None, args: dict[str, str], conn: Connection) -> None:
     os.setpgrp()  # its own process group, so that a timeout also ends the C++ workers it starts
-    conn.send(check(root, launch))
+    conn.send(check(root, launch, args))
     conn.close()
 
 
-def check_limited(root: Path, launch: Path | None, limit: float) -> Run:
+def check_limited(root: Path, launch: Path | None, args: dict[str, str], limit: float) -> Run:
     """`check` in a child process, ended (with its process group) after `limit` seconds. The child
     is spawned, so that it imports archlog afresh: one consistent version of it per run."""
     receiver, sender = multiprocessing.Pipe(duplex=False)
-    child = multiprocessing.get_context("spawn").Process(target=_child, args=(root, launch, sender))
+    child = multiprocessing.get_context("spawn").Process(target=_child, args=(root, launch, args, sender))
     start = time.perf_counter()
     child.start()
     sender.close()
@@ -118,7 +142,7 @@ def check_limited(root: Path, launch: Path | None, limit: float) -> Run:
             child.join(10)
     if run is None:
         timed_out = child.is_alive()
-        run = Run(str(root), str(launch.relative_to(root)) if launch else ROSRUN, timeout=timed_out,
+        run = Run(str(root), label(root, launch, args), args, timeout=timed_out,
                   crash=None if timed_out else f"child process died (exit code {child.exitcode})")
         run.seconds = round(time.perf_counter() - start, 2)
     child.join(0 if run.timeout else 30)
@@ -169,12 +193,15 @@ def main() -> None:
     parser.add_argument("--json", type=Path, help="write every run (findings, crashes) here")
     parser.add_argument("--show", type=int, default=3, help="tracebacks to print per repository")
     parser.add_argument("--findings", action="store_true", help="also list every distinct finding")
+    parser.add_argument("--config", action="append", default=[],
+                        help="a launch file relative to each ROOT, with its name:=value arguments (repeatable)")
+    parser.add_argument("--rosrun-only", action="store_true", help="check only the rosrun configuration")
     opts = parser.parse_args()
     rows, everything = [], []
     for root in (r.resolve() for r in opts.roots):
         runs = []
-        for launch in [*launch_files(root), None]:
-            run = check_limited(root, launch, opts.timeout)
+        for launch, args in configurations(root, opts.config, opts.rosrun_only):
+            run = check_limited(root, launch, args, opts.timeout)
             status = "CRASH" if run.crash else "TIMEOUT" if run.timeout else "ok"
             print(f"{root.name}: {run.launch}: {status}, {run.nodes} nodes, {run.ports} ports, "
                   f"{len(run.findings)} findings, {run.seconds} s", file=sys.stderr, flush=True)

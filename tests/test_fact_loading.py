@@ -180,7 +180,8 @@ def test_rows_a_negated_fact_rules_out_are_not_given() -> None:
     assert grounded.given("node") == 3 and grounded.given("node_source") == 1  # /b, /c twice; /c's source
     grounded.load(list(grounded.later))
     atoms = {str(a.symbol) for a in grounded.ctl.symbolic_atoms if a.symbol.name not in BY_NAME}
-    assert {'opaque_node("/b")', 'duplicate_node("/c","e4","e3")'} <= atoms
+    assert {'opaque_node("/b")', 'duplicate_node("/c","e4","e3","a second node with the same name shuts the first '
+            'one down")'} <= atoms
     assert atoms == every_atom(engine, store)
 
 

@@ -551,6 +551,55 @@ def test_python_what_cannot_be_read_is_reported_not_dropped(tmp_path: Path) -> N
                            ("main.launch.py", 22, "launch-unknown"), ("main.launch.py", 23, "launch-unknown")]
 
 
+def test_python_for_each_calls_its_function_per_yaml_item(tmp_path: Path) -> None:
+    """launch 3.x's ForEach: the input split at ';', each item a YAML mapping of keyword arguments."""
+    config, sink = load(tmp_path, {"main.launch.py": python("""
+        from launch.actions import ForEach
+
+        def robot(name='', pose={}):
+            return [GroupAction([PushRosNamespace(name),
+                                 Node(package='p', executable='driver', name='driver',
+                                      parameters=[{'x': pose.get('x', 0.0)}])])]
+
+        def generate_launch_description():
+            return LaunchDescription([
+                DeclareLaunchArgument('robots', default_value="{name: r1, pose: {x: 1.5}}; {name: r2}"),
+                ForEach(LaunchConfiguration('robots'), function=robot),
+                ForEach(LaunchConfiguration('robots'), function=robot_from_elsewhere),
+                ForEach('[1, 2]', function=robot),
+            ])
+        """)}, "main.launch.py")
+    assert [(n.name, params(n)) for n in config.nodes] == [("/r1/driver", [("", "x", 1.5)]),
+                                                            ("/r2/driver", [("", "x", 0.0)])]
+    assert codes(sink) == [("main.launch.py", 25, "launch-unknown"), ("main.launch.py", 26, "launch-unknown")]
+
+
+def test_python_execute_process_of_a_package_executable_is_a_node(tmp_path: Path) -> None:
+    """ExecuteProcess with ExecutableInPackage or `ros2 run` starts a node (launch_ros's scope
+    actions do not reach it: only its own command line names it); any other process is left out."""
+    config, sink = load(tmp_path, {"main.launch.py": python("""
+        from launch.actions import ExecuteProcess
+        from launch.substitutions import FindExecutable
+        from launch_ros.substitutions import ExecutableInPackage
+
+        def generate_launch_description():
+            return LaunchDescription([
+                PushRosNamespace('scoped'),
+                ExecuteProcess(cmd=[ExecutableInPackage(package='mon', executable='pub'), 'small',
+                                    '--ros-args', '-r', '__node:=small_pub', '-r', 'data:=small_data']),
+                ExecuteProcess(cmd=[FindExecutable(name='ros2'), 'run', 'mon', 'sub', '--ros-args', '-r',
+                                    '__ns:=/watch']),
+                ExecuteProcess(cmd=['ros2', 'run', 'mon', 'sub']),
+                ExecuteProcess(cmd=['rviz2', '-d', 'view.rviz']),
+            ])
+        """)}, "main.launch.py")
+    assert [(n.pkg, n.type, n.name, n.namespace, remaps(n)) for n in config.nodes] == [
+        ("mon", "pub", "/small_pub", "", [("data", "small_data")]), ("mon", "sub", "", "/watch", []),
+        ("mon", "sub", "", "", [])]
+    assert config.nodes[0].args == "small --ros-args -r __node:=small_pub -r data:=small_data"
+    assert codes(sink) == [("main.launch.py", 26, "launch-process")]
+
+
 # -- parameter files ------------------------------------------------------------------------
 def test_parameter_file_layouts(tmp_path: Path) -> None:
     from archlog.extract.launch.ros2_params import load_param_file

@@ -40,7 +40,9 @@ def test_executables_from_every_source(tmp_path: Path) -> None:
         "setup.py": "from setuptools import setup\nsetup(name='py_pkg', entry_points={'console_scripts': "
                     "['talker = py_pkg.talker:main']})\n",
         "setup.cfg": "[options.entry_points]\nconsole_scripts =\n    listener = py_pkg.listener:main\n",
-        "py_pkg/__init__.py": "", "py_pkg/talker.py": "import rclpy\n", "py_pkg/listener.py": "import rclpy\n",
+        "py_pkg/__init__.py": "", "py_pkg/listener.py": "import rclpy\n",
+        # an entry point's module with a __main__ block of its own is still one executable
+        "py_pkg/talker.py": "import rclpy\ndef main():\n    rclpy.init()\nif __name__ == '__main__':\n    main()\n",
         "py_pkg/standalone.py": "import rclpy\nif __name__ == '__main__':\n    rclpy.init()\n",
         "py_pkg/util.py": "import rclpy\n",
     })

@@ -172,7 +172,8 @@ class NodeSummary:
     tf_unknown: bool = False  # its description, arguments or gazebo plugins leave what it broadcasts unknown
     argv_ports: tuple[tuple[str, dict, str], ...] = ()  # models: (kind, entry, file) named from the command line
     valued_options: tuple[str, ...] = ()  # models: command-line options that take a value (not a positional word)
-    ros: int = 0  # the ROS version its source uses (rospy/roscpp 1, rclpy/rclcpp 2), 0 when the source does not say
+    # the ROS version (1 or 2) its source uses (rospy/roscpp, rclpy/rclcpp) or its model describes; None: unknown
+    ros: int | None = None
     # built-in port groups (models/infrastructure/) beyond every node's that its code asks for (a lifecycle
     # node, enable_logger_service), and the default ones it turns off (start_parameter_services=False)
     infrastructure: tuple[str, ...] = ()

@@ -47,6 +47,12 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
         store.locate(node.elem.id, node.elem.file, node.elem.line)
         if node.condition:
             store.add("conditional", node.elem.id, node.condition)
+        if node.ros2:
+            store.add("ros2_node", node.name)
+        if node.standalone:
+            store.add("standalone", node.elem.id)
+        if node.name_unknown:
+            store.add("node_name_unknown", node.elem.id)
         for depth, include in enumerate(node.chain, 1):
             store.add("included_through", node.elem.id, include.id, depth)
             store.locate(include.id, include.file, include.line)

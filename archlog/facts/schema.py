@@ -52,6 +52,14 @@ RELATIONS: tuple[Relation, ...] = (
          ("elem", "id", "the launch element (or executable, for a rosrun configuration) that creates it")),
     _rel("configuration", "conditional", "A node kept although its if/unless (or an enclosing one) could not be "
          "resolved statically.", ("elem", "id", "the node's element"), ("condition", "str", "the condition and why")),
+    _rel("configuration", "ros2_node", "A node instance that runs on ROS 2: a ROS 2 launch file starts it, or, with "
+         "no launch file, its package is built with ament.", _NODE),
+    _rel("configuration", "standalone", "A node instance of the configuration without a launch file (every executable "
+         "once, each started by itself): which of them run together is not known.",
+         ("elem", "id", "the node's element")),
+    _rel("configuration", "node_name_unknown", "A node instance whose name is not known statically (neither the "
+         "launch file nor the code gives one archlog can read): the executable's name stands in for it.",
+         ("elem", "id", "the node's element")),
     _rel("configuration", "nodelet", "A node instance that loads a nodelet plugin (nodelet load/standalone).",
          _NODE, ("plugin", "str", "plugin type pkg/Name"), ("manager", "str", "manager node as written, or empty")),
     _rel("configuration", "included_through", "An <include> a node's element was loaded through.",
@@ -214,6 +222,9 @@ _SUB = ("sub", "id", "the subscriber port")
 DERIVED: tuple[Relation, ...] = (
     _derived(_PRELUDE, "is_unknown", "A value static analysis could not know (a term unknown(N)).",
              ("value", "id", "the unknown term")),
+    _derived(_PRELUDE, "alternative_instances", "Two node instances started by themselves (standalone): alternatives "
+             "that are not known to run together (AL202 and AL301 do not pair them).",
+             ("a", "id", "a node's element"), ("b", "id", "another node's element")),
     _derived(_PRELUDE, "port_node", "The node instance a port of any kind belongs to.", _PORT, _NODE),
     _derived(_PRELUDE, "published", "A topic some publisher uses.", ("topic", "name", "the topic")),
     _derived(_PRELUDE, "subscribed", "A topic some subscriber uses.", ("topic", "name", "the topic")),

@@ -44,4 +44,5 @@ def _source_name(node: LaunchNode, summary: NodeSummary | None, diagnostics: Dia
     why = "has no source or model" if summary is None else "gives itself a name not known statically"
     diagnostics.add(node.elem.file, node.elem.line, "node-name", f"the launch file does not name this node and "
                     f"{'/'.join(node.kind)} {why}; using {fallback}", "note")
+    node.name_unknown = True
     return fallback

@@ -49,9 +49,12 @@ def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, 
          diagnostics: DiagnosticSink) -> System:
     """The system a configuration (None: no launch file, every executable runs once) starts, from
     the extracted summaries and the node models (the user's win over extracted ones)."""
-    summaries = {**models.builtin, **extracted, **models.user}
-    for kind in extracted.keys() & models.builtin.keys() - models.user.keys():
-        summaries[kind] = _source_or_model(extracted[kind], models.builtin[kind], diagnostics)
+    on_ros2 = _on_ros2(config)
+    shipped = {kind: model for kind in models.builtin
+               if (model := models.shipped(kind, _kind_on_ros2(kind, on_ros2, workspace))) is not None}
+    summaries = {**shipped, **extracted, **models.user}
+    for kind in extracted.keys() & shipped.keys() - models.user.keys():
+        summaries[kind] = _source_or_model(extracted[kind], shipped[kind], diagnostics)
     if config is None:
         config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
                                workspace, diagnostics)
@@ -81,6 +84,18 @@ def _co_nodes(node: LaunchNode, summary: NodeSummary | None) -> list[tuple[Launc
         namespace = names.join(node.namespace, other.namespace) if isinstance(other.namespace, str) else node.namespace
         found.append((replace(node, name=names.join(namespace, name), namespace=namespace), other))
     return found
+
+
+def _on_ros2(config: LaunchConfig | None) -> bool | None:
+    """Whether a configuration's launch files are ROS 2 ones (None without a launch file or node)."""
+    return any(node.ros2 for node in config.nodes) if config is not None and config.nodes else None
+
+
+def _kind_on_ros2(kind: tuple[str, str], on_ros2: bool | None, workspace: Workspace) -> bool | None:
+    """Whether an executable runs on ROS 2: as the configuration's launch files do, else as its
+    package is built (ament), None when neither is known."""
+    package = workspace.packages.get(kind[0])
+    return on_ros2 if on_ros2 is not None else package.ament if package is not None else None
 
 
 _COMPARED = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
@@ -154,7 +169,7 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
     if summary is not None and summary.loads:
         summary = replace(summary, ports=summary.ports + loaded_ports(node, summary, summaries, diagnostics))
-    model = models.user.get(node.kind) or models.builtin.get(node.kind)
+    model = models.user.get(node.kind) or models.shipped(node.kind, node.ros2)
     if summary is not None and summary.argv_ports:  # the model is used
         summary = replace(summary, ports=summary.ports + argv_ports(summary, node.args)[0])
     elif summary is not None and model is not None and model.argv_ports:

@@ -98,32 +98,41 @@ class PluginClass:
 
 @dataclass
 class NodeModels:
-    """The models of one run: shipped ones, the user's (which win over extracted summaries),
-    external instances that models declare, and pluginlib classes by lookup name."""
+    """The models of one run: shipped ones (per executable, one per ROS version it is modelled
+    for), the user's (which win over extracted summaries), external instances that models declare,
+    and pluginlib classes by lookup name."""
 
-    builtin: Summaries = field(default_factory=dict)
+    builtin: dict[tuple[str, str], list[NodeSummary]] = field(default_factory=dict)
     user: Summaries = field(default_factory=dict)
     externals: list[tuple[NodeSummary, str, Element]] = field(default_factory=list)
     classes: dict[str, PluginClass] = field(default_factory=dict)
+
+    def shipped(self, kind: tuple[str, str], ros2: bool | None) -> NodeSummary | None:
+        """The shipped model of an executable for a node on ROS 2 (True), on ROS 1 (False) or on
+        either (None): a model of the other ROS version never applies."""
+        wanted = None if ros2 is None else 2 if ros2 else 1
+        return next((m for m in self.builtin.get(kind, []) if wanted is None or m.ros in (None, wanted)), None)
 
 
 def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: DiagnosticSink) -> NodeModels:
     """The shipped models and those in the user's files (a missing file is a ConfigError)."""
     models = NodeModels()
     version = cache(workspace.version)
-    files = [(p, models.builtin) for p in sorted(BUILTIN_DIR.glob("*.yaml"))] + [(p, models.user) for p in paths]
-    for index, (path, target) in enumerate(files, 1):
+    files = [(p, True) for p in sorted(BUILTIN_DIR.glob("*.yaml"))] + [(p, False) for p in paths]
+    for index, (path, shipped) in enumerate(files, 1):
         if not path.is_file():
             raise ConfigError(f"model file not found: {path}")
         shown = workspace.display(path)
-        loader = ShippedLoader if target is models.builtin else LineLoader
+        loader = ShippedLoader if shipped else LineLoader
         for summary, instance in load_models(path, shown, diagnostics, loader, models.classes, version):
             if instance:
                 line = summary.ports[0].line - 1 if summary.ports else 1
                 element = Element(f"m{index:03d}{len(models.externals):03d}", shown, max(line, 1))
                 models.externals.append((summary, instance, element))
+            elif shipped:
+                models.builtin.setdefault((summary.package, summary.executable), []).append(summary)
             else:
-                target[(summary.package, summary.executable)] = summary
+                models.user[(summary.package, summary.executable)] = summary
     return models
 
 
@@ -164,7 +173,8 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink, loader: typ
         instance = item.get("instance")
         summary = NodeSummary(str(item.get("package", "external")), str(item.get("executable", instance)), "model",
                               default_name=str(item.get("name", instance or item["executable"])),
-                              incomplete=item.get("incomplete"), valued_options=tuple(item.get("valued_options", ())))
+                              incomplete=item.get("incomplete"), valued_options=tuple(item.get("valued_options", ())),
+                              ros=item.get("ros") or ros_version(item))
         for section, kind in SECTIONS.items():
             for port in item.get(section) or []:
                 if "since" not in port or version is None or \
@@ -177,6 +187,19 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink, loader: typ
         _transforms(summary, item, shown, diagnostics)
         result.append((summary, instance))
     return result
+
+
+_ROS2_TYPE = re.compile(r"^\w+/(msg|srv|action)/\w+$")
+_ROS1_TYPE = re.compile(r"^\w+/\w+$")
+
+
+def ros_version(item: dict) -> int | None:
+    """The ROS version a model's port types are spelled for: 2 for pkg/msg/Type (srv, action), 1
+    for pkg/Type; None when it gives no type, or both spellings."""
+    types = {port["type"] for section in SECTIONS for port in item.get(section) or []
+             if isinstance(port, dict) and isinstance(port.get("type"), str)}
+    found = {2 if _ROS2_TYPE.match(t) else 1 for t in types if _ROS2_TYPE.match(t) or _ROS1_TYPE.match(t)}
+    return found.pop() if len(found) == 1 else None
 
 
 def _classes(data: dict, shown: str, diagnostics: DiagnosticSink, classes: dict[str, PluginClass]) -> None:

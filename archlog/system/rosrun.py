@@ -11,7 +11,8 @@ from archlog.extract.workspace.index import Workspace
 
 def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Workspace,
                   diagnostics: DiagnosticSink) -> LaunchConfig:
-    """With no launch file: every executable is one instance under its default name."""
+    """With no launch file: every executable is one instance under its default name, started by
+    itself (standalone), on ROS 2 when its package is built with ament."""
     config = LaunchConfig()
     for index, ((pkg, exe), summary) in enumerate(sorted(summaries.items()), 1):
         executable = workspace.executable(pkg, exe)
@@ -21,9 +22,13 @@ def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Work
         file = summary.name_file or (workspace.display(source) if source else pkg)
         elem = Element(f"x{index:05d}", file, summary.name_line or 1)
         name = summary.default_name if isinstance(summary.default_name, str) else exe
-        if summary.default_name is not None and not isinstance(summary.default_name, str):
+        unknown = summary.default_name is not None and not isinstance(summary.default_name, str)
+        if unknown:
             diagnostics.add(elem.file, elem.line, "node-name", f"node name of {pkg}/{exe} is not known statically; "
                             f"using the executable name {exe}", "note")
         namespace = names.join("/", summary.namespace) if isinstance(summary.namespace, str) else "/"
-        config.nodes.append(LaunchNode(elem, pkg, exe, names.join(namespace, name), namespace))
+        package = workspace.packages.get(pkg)
+        config.nodes.append(LaunchNode(elem, pkg, exe, names.join(namespace, name), namespace,
+                                       ros2=package is not None and package.ament, standalone=True,
+                                       name_unknown=unknown))
     return config

@@ -47,6 +47,8 @@ class LaunchNode:
     # parameters given to this node directly, else a parameter file's node key ("/**", "/ns/talker")
     parameters: list[tuple[str, str, object, Element]] = field(default_factory=list)
     ros2: bool = False  # remaps then apply first-match-wins, as rcl does (roslaunch's last one wins)
+    standalone: bool = False  # started by itself (no launch file): not known to run with the others
+    name_unknown: bool = False  # its name is not known statically: the executable's name stands in for it
 
     @property
     def kind(self) -> tuple[str, str]:

@@ -142,6 +142,32 @@ def _opaque_function(c: CallSite) -> object:
     return Opaque(where=where, conditions=c.conditions(), reason="OpaqueFunction", run=run)
 
 
+def _for_each(c: CallSite) -> object:
+    """launch's ForEach (launch 3.x): its input performed and split at `;`, each part a YAML mapping
+    whose keys are the function's keyword arguments; the entities of every call, in order."""
+    values = to_parts(c.arg(0, "input_values"), c.line)
+    function = c.arg(1, "function")
+    if isinstance(function, (Unread, Ref)):
+        return Opaque(where=c.where(), conditions=c.conditions(), reason=f"ForEach {_describe(function)}")
+    interp, where = c.interp, c.where()
+
+    def run(ctx: Context) -> list[Action]:
+        found: list[Action] = []
+        for part in perform(values, ctx).split(";"):
+            if not part.strip():
+                continue
+            try:
+                given = bounded_yaml.load(part)
+            except yaml.YAMLError as exc:
+                raise Unresolved(f"ForEach input {part.strip()!r} is not YAML: {exc}") from None
+            if not isinstance(given, dict):
+                raise Unresolved(f"ForEach input {part.strip()!r} is not a mapping of the function's arguments")
+            found += entities(interp.call(function, [], {str(k): v for k, v in given.items()}, where.line), where)
+        return found
+
+    return Opaque(where=where, conditions=c.conditions(), reason="ForEach", run=run)
+
+
 def _describe(value: object) -> str:
     if isinstance(value, Ref):
         return value.name
@@ -280,7 +306,7 @@ CONSTRUCTORS: dict[str, Callable[[CallSite], object]] = {
     "YAMLLaunchDescriptionSource": lambda c: Source(to_parts(c.arg(0, "launch_file_path"), c.line), YAML),
     "FrontendLaunchDescriptionSource": lambda c: Source(to_parts(c.arg(0, "launch_file_path"), c.line), None),
     "AnyLaunchDescriptionSource": lambda c: Source(to_parts(c.arg(0, "launch_file_path"), c.line), None),
-    "OpaqueFunction": _opaque_function,
+    "OpaqueFunction": _opaque_function, "ForEach": _for_each,
     "TimerAction": lambda c: Group(where=c.where(), conditions=c.conditions(),
                                    actions=tuple(entities(c.arg(1, "actions"), c.where())), scoped=False),
     "RegisterEventHandler": _register,

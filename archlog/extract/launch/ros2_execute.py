@@ -70,7 +70,7 @@ from archlog.extract.launch.ros2_nodes import (
     prefix,
     value_or_unknown,
 )
-from archlog.extract.launch.ros2_subst import Context, describe, perform, truth, unknown_reason
+from archlog.extract.launch.ros2_subst import Call, Context, Parts, describe, perform, text, truth, unknown_reason
 
 A = TypeVar("A", bound=Action)
 DescribeFile = Callable[[Path, "Ros2Launch"], Description | None]
@@ -201,11 +201,26 @@ class Ros2Launch(Ros2Nodes):
         elif isinstance(action, LoadComponents):
             self._load_components(action, ctx)
         elif isinstance(action, Process):
+            self._process(action, ctx)
+        elif isinstance(action, Opaque):
+            self._opaque(action, ctx)
+
+    def _process(self, action: Process, ctx: Context) -> None:
+        """ExecuteProcess (<executable>): a node when it runs a package's executable, named by
+        ExecutableInPackage (`$(exec-in-pkg EXE PKG)`) or by `ros2 run PKG EXE`; its name, namespace,
+        remaps and parameters come from its own command line only (launch_ros's scope actions set
+        those of its Node actions)."""
+        started = _package_executable(action.cmd, ctx)
+        if started is None:
             shown = " ".join(describe(p) for p in action.cmd)
             self.diag(action.where, "launch-process", f"process `{shown}` is not a ROS node launch_ros starts; "
                       "it is not part of the architecture", "note")
-        elif isinstance(action, Opaque):
-            self._opaque(action, ctx)
+            return
+        pkg, exe, rest = started
+        own = ctx.scoped()
+        for key in ("ros_namespace", "ros_remaps", "global_params"):
+            own.configs.pop(key, None)
+        self._node(Node(where=action.where, pkg=pkg, exe=exe, arguments=rest), own)
 
     def _push_namespace(self, action: PushNamespace, ctx: Context, uncertain: bool) -> None:
         """Push a namespace; one that is not known makes the nodes of the scope unknown (they are
@@ -338,6 +353,25 @@ class Ros2Launch(Ros2Nodes):
             manager = names.join("/", perform(action.target, ctx))
         for component in action.components:
             self._guarded(component, ctx, lambda c, here, _: self._component(c, manager, here))
+
+
+def _package_executable(cmd: tuple[Parts, ...], ctx: Context) -> tuple[Parts, Parts, tuple[Parts, ...]] | None:
+    """(package, executable, the words after it) of a command that runs a package's executable:
+    `$(exec-in-pkg EXE PKG) ARGS...` or `ros2 run PKG EXE ARGS...` (ros2 written, or found with
+    FindExecutable); None for any other command."""
+    first = cmd[0] if cmd else ()
+    if len(first) == 1 and isinstance(first[0], Call) and first[0].name == "exec-in-pkg" and len(first[0].args) == 2:
+        exe, pkg = first[0].args
+        return pkg, exe, cmd[1:]
+    if len(cmd) == 1 and not any(isinstance(p, Call) for p in first):  # one string: the words of a shell command
+        cmd = tuple(text(word) for word in shlex.split(perform(first, ctx)))
+    program = cmd[0] if cmd else ()
+    runs = len(program) == 1 and isinstance(program[0], Call) and program[0].name == "find-exec" and \
+        [perform(a, ctx) for a in program[0].args] == ["ros2"] or \
+        not any(isinstance(p, Call) for p in program) and perform(program, ctx).rsplit("/", 1)[-1] == "ros2"
+    if runs and len(cmd) >= 4 and perform(cmd[1], ctx) == "run":
+        return cmd[2], cmd[3], cmd[4:]
+    return None
 
 
 def _label(action: Action) -> str:

@@ -237,10 +237,13 @@ linked ones count only where the executable's own code reaches them (extract/cpp
 
     def _script_executables(self, package: Package) -> None:
         """Executable Python scripts in the usual folders, and modules with a `__main__` block
-        that use rospy or rclpy."""
+        that use rospy or rclpy. A module an entry point already runs is that one executable: its
+        `__main__` block is the same program (ros2 run finds only the entry point)."""
+        entry_modules = {exe.sources[0] for exe in package.executables.values() if exe.lang == "python" and exe.sources}
         for folder in ("scripts", "nodes", "bin", "src", package.name):
             for path in files_under(package.path / folder):
-                if path.name in package.executables or not path.is_file() or path.suffix in SOURCE_SUFFIXES:
+                if path.name in package.executables or path in entry_modules or not path.is_file() or \
+                        path.suffix in SOURCE_SUFFIXES:
                     continue
                 if os.access(path, os.X_OK) and _is_python_script(path) or _is_main_module(path):
                     package.executables[path.name] = Executable(package.name, path.name, "python", [path])
