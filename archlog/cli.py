@@ -142,6 +142,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     from archlog.reports.codequality import to_codequality
     from archlog.reports.json_report import to_json
     from archlog.reports.paths import Rebase, source_root
+    from archlog.reports.relocate import relocate, shipped
     from archlog.reports.report import Report, coverage
     from archlog.reports.sarif import to_sarif
     from archlog.reports.suppress import apply_suppressions, read_baseline
@@ -151,7 +152,9 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env, quiet or fmt != "text" and output is None)
     root = analysis.workspace.roots[0]
-    findings = Session(analysis.store, ruleset, config).findings()
+    rebase = Rebase(analysis.workspace.roots, source_root(root, source_root_dir))
+    findings, labels = relocate(Session(analysis.store, ruleset, config).findings(), analysis.store,
+                                lambda file: shipped(file) or os.path.isabs(rebase(file)))
     files = {str(row[1]) for row in analysis.store.rows("location")}
     with sandbox.active(analysis.policy):  # inline suppressions are read where the analysis could read
         unused = apply_suppressions(findings, files, root if root.is_dir() else root.parent, config.suppress)
@@ -164,8 +167,8 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     if write_baseline:
         write_baseline_file(findings, write_baseline)
     report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused), config.adjust(ruleset.rules),
-                    root, Report.node_origins(analysis.store), coverage(analysis.store))
-    report = Rebase(analysis.workspace.roots, source_root(root, source_root_dir)).report(report)
+                    root, Report.node_origins(analysis.store), coverage(analysis.store), labels)
+    report = rebase.report(report)
     if fmt == "concise":
         with output.open("w", encoding="utf-8") if output else nullcontext(sys.stdout) as stream:
             print_concise(report, stream)

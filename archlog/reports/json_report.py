@@ -12,8 +12,8 @@ from archlog.rules.engine import Location
 FORMAT_VERSION = 1
 
 
-def _location(loc: Location, role: str) -> dict:
-    return {"file": loc.file, "line": loc.line, "column": loc.column, "role": role}
+def _location(loc: Location, role: str, label: str = "") -> dict:
+    return {"file": loc.file, "line": loc.line, "column": loc.column, "role": role, **({"label": label} if label else {})}
 
 
 def to_json(report: Report) -> str:
@@ -25,7 +25,8 @@ def to_json(report: Report) -> str:
             "message": f.message,
             "help": hint(f.rule),
             "url": url(f.rule),
-            "locations": [_location(f.location, "primary")] + [_location(r, "related") for r in f.related],
+            "locations": [_location(f.location, "primary")] + [_location(r, "related", report.label(r, ""))
+                                                              for r in f.related],
             "subjects": f.subjects,
             "fingerprint": f.fingerprint,
             **({"suppressed": {"kind": f.suppression[0], "justification": f.suppression[1]}}

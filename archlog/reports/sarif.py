@@ -33,7 +33,7 @@ def _escape(text: str) -> str:
 
 def _related(f: Finding, report: Report) -> list[tuple[Location, str]]:
     """The finding's other sides, then the launch elements and includes of the nodes it names."""
-    related = [(r, "the other side") for r in f.related]
+    related = [(r, report.label(r)) for r in f.related]
     for node in f.subjects.get("nodes", []):
         related += report.origins.get(node, [])
     return [(loc, text) for loc, text in related if loc.file]

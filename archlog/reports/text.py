@@ -28,7 +28,7 @@ def print_text(report: Report, console: Console, quiet: bool = False) -> None:
                 continue
             _source(report, console, loc.file, loc.line, loc.column)
             for rel in f.related:
-                console.print(f"    [dim]other side:[/] {escape(rel.file)}:{rel.line}")
+                console.print(f"    [dim]{escape(report.label(rel))}:[/] {escape(rel.file)}:{rel.line}")
                 _source(report, console, rel.file, rel.line, rel.column)
             if hint(f.rule):
                 console.print(f"    [dim]fix:[/] {escape(hint(f.rule))}", highlight=False)
