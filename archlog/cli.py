@@ -133,8 +133,13 @@ def main() -> None:
 @click.option("--fail-on-incomplete", is_flag=True,
               help="Also exit 1 when a node is only partially recovered or opaque (no model or source).")
 @click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
+@click.option("--fix", "fix", is_flag=True, help="Apply the safe fixes (remaps in launch files) and report what remains.")
+@click.option("--unsafe-fixes", is_flag=True, help="With --fix or --diff: the fixes that may change the meaning too.")
+@click.option("--diff", "show_diff", is_flag=True,
+              help="Print the fixes as a unified diff instead of applying them (exit 1 when there is one).")
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
-          source_root_dir, output, fail_on, baseline, write_baseline, fail_on_incomplete, quiet) -> None:
+          source_root_dir, output, fail_on, baseline, write_baseline, fail_on_incomplete, quiet, fix, unsafe_fixes,
+          show_diff) -> None:
     """Check a ROS system configuration and report findings."""
     from rich.console import Console
 
@@ -158,6 +163,8 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     files = {str(row[1]) for row in analysis.store.rows("location")}
     with sandbox.active(analysis.policy):  # inline suppressions are read where the analysis could read
         unused = apply_suppressions(findings, files, root if root.is_dir() else root.parent, config.suppress)
+    if fix or show_diff:
+        findings = _fix(findings, analysis.store, rebase, unsafe_fixes, show_diff)
     if baseline:
         try:
             known = read_baseline(baseline)
@@ -189,6 +196,28 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
         worst = SEVERITIES[: SEVERITIES.index(fail_on) + 1]
         failed = failed or any(f.severity in worst and f.suppression is None for f in findings)
     sys.exit(1 if failed else 0)
+
+
+def _fix(findings: list, store, rebase, unsafe: bool, show_diff: bool) -> list:
+    """Apply the fixes (or print them with `show_diff`, then exit); the findings left unfixed."""
+    from archlog.reports import fixes
+
+    planned = fixes.plan(findings, store, rebase.absolute)
+    applied = fixes.chosen(planned, unsafe)
+    changes = fixes.edited(applied)
+    if show_diff:
+        sys.stdout.write(fixes.unified(changes, lambda path: rebase(str(path))))
+        sys.exit(1 if changes else 0)
+    for path, (_before, after) in changes.items():
+        path.write_text(after, encoding="utf-8")
+    for done in applied:
+        click.echo(f"fixed: {done.finding.rule.id} {done.what} ({rebase(str(done.edit.file))})", err=True)
+    waiting = len([f for f in planned if not f.safe]) if not unsafe else 0
+    click.echo(f"archlog: applied {len(applied)} fix{'es' if len(applied) != 1 else ''} in {len(changes)} "
+               f"file{'s' if len(changes) != 1 else ''}" + (f"; {waiting} more with --unsafe-fixes" if waiting else ""),
+               err=True)
+    fixed = {id(done.finding) for done in applied}
+    return [f for f in findings if id(f) not in fixed]
 
 
 @main.command()

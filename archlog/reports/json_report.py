@@ -23,7 +23,7 @@ def to_json(report: Report) -> str:
             "name": f.rule.name,
             "severity": f.severity,
             "message": f.message,
-            "help": hint(f.rule),
+            "help": hint(f.rule, f.values),
             "url": url(f.rule),
             "locations": [_location(f.location, "primary")] + [_location(r, "related", report.label(r, ""))
                                                               for r in f.related],

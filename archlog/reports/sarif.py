@@ -7,7 +7,7 @@ from pathlib import Path
 
 from archlog import __version__
 from archlog.reports.report import Report
-from archlog.reports.rule_help import INFO_URI, url
+from archlog.reports.rule_help import INFO_URI, help_text, url
 from archlog.rules.engine import Finding, Location
 
 LEVELS = {"error": "error", "warning": "warning", "note": "note"}
@@ -56,7 +56,7 @@ def to_sarif(report: Report) -> str:
             "name": r.name,
             "shortDescription": {"text": r.summary},
             "fullDescription": {"text": r.description or r.summary},
-            "help": {"text": r.help or r.summary, "markdown": r.help or r.summary},
+            "help": {"text": help_text(r) or r.summary, "markdown": help_text(r) or r.summary},
             **({"helpUri": url(r)} if url(r) else {}),
             "defaultConfiguration": {"level": LEVELS[r.severity]},
             "properties": {"tags": r.tags, "precision": r.precision, "problem.severity": SECURITY[r.severity]},

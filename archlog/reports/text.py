@@ -31,7 +31,7 @@ def print_text(report: Report, console: Console, quiet: bool = False) -> None:
                 console.print(f"    [dim]{escape(report.label(rel))}:[/] {escape(rel.file)}:{rel.line}")
                 _source(report, console, rel.file, rel.line, rel.column)
             if hint(f.rule):
-                console.print(f"    [dim]fix:[/] {escape(hint(f.rule))}", highlight=False)
+                console.print(f"    [dim]fix:[/] {escape(hint(f.rule, f.values))}", highlight=False)
         if not quiet:
             console.print()
     if report.diagnostics and not quiet:
