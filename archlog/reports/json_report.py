@@ -46,6 +46,7 @@ def to_json(report: Report) -> str:
         "findings": findings,
         "diagnostics": diagnostics,
         "summary": report.counts(),
+        "hidden": report.hidden,
         "coverage": {
             **report.coverage_counts(),
             "nodes": [

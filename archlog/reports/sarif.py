@@ -108,7 +108,7 @@ def to_sarif(report: Report) -> str:
                             "informationUri": INFO_URI, "rules": driver_rules}},
         "originalUriBaseIds": {"SRCROOT": {"uri": report.root.resolve().as_uri() + "/"}},
         "invocations": [{"executionSuccessful": True, "toolExecutionNotifications": notifications,
-                         "properties": {"coverage": report.coverage_counts()}}],
+                         "properties": {"coverage": report.coverage_counts(), "hidden": report.hidden}}],
         "results": results,
         "columnKind": "unicodeCodePoints",
     }
