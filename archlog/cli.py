@@ -142,9 +142,11 @@ def main() -> None:
 
 @main.command()
 @_system_options
-@click.option("--format", "fmt", type=click.Choice(["text", "concise", "json", "sarif", "codequality"]),
+@click.option("--format", "fmt",
+              type=click.Choice(["text", "concise", "json", "sarif", "codequality", "github", "junit"]),
               default="text", show_default=True,
-              help="concise: one `path:line:col: ID message` line per finding; codequality: GitLab's Code Quality.")
+              help="concise: one `path:line:col: ID message` line per finding and a summary; codequality: GitLab's "
+                   "Code Quality; github: workflow command annotations; junit: one failing test case per finding.")
 @click.option("--source-root", "source_root_dir", type=click.Path(exists=True, file_okay=False, path_type=Path),
               help="Report paths relative to this folder [default: the git work tree holding the first PATH, "
                    "else the current folder].")
@@ -173,6 +175,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     from rich.console import Console
 
     from archlog.queries.session import Session
+    from archlog.reports.annotations import to_github, to_junit
     from archlog.reports.codequality import to_codequality
     from archlog.reports.json_report import to_json
     from archlog.reports.paths import Rebase, source_root
@@ -227,7 +230,8 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
         with sandbox.active(analysis.policy):  # the source lines it quotes
             print_text(report, Console(no_color=bool(os.environ.get("NO_COLOR")), soft_wrap=True), quiet)
     else:
-        text = {"json": to_json, "sarif": to_sarif, "codequality": to_codequality}[fmt](report)
+        text = {"json": to_json, "sarif": to_sarif, "codequality": to_codequality, "github": to_github,
+                "junit": to_junit}[fmt](report)
         if output:
             output.write_text(text, encoding="utf-8")
         else:

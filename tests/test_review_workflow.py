@@ -106,3 +106,23 @@ def test_concise_ends_with_one_summary_line(tmp_path: Path) -> None:
     lines = archlog(*CHECK, "--format", "concise", cwd=workspace(tmp_path)).stdout.splitlines()
     assert len(lines) == 2 and " AL102 " in lines[0]
     assert lines[1] == "1 finding (1 error, 0 warnings, 0 notes); 0 diagnostics; 3 of 3 nodes fully recovered"
+
+
+def test_github_annotations_and_junit(tmp_path: Path) -> None:
+    import xml.etree.ElementTree as ET
+
+    repo = workspace(tmp_path)
+    github = archlog(*CHECK, "--format", "github", cwd=repo)
+    assert github.returncode == 1
+    first, summary = github.stdout.splitlines()
+    assert first.startswith("::error file=src/waypoint_nav/src/pure_pursuit.cpp,line=45,col=")
+    assert ",title=AL102 near-miss-topic::/rover/pure_pursuit subscribes to /rover/base_waypoint" in first
+    assert summary.startswith("archlog: 1 finding (1 error")
+    suite = ET.fromstring(archlog(*CHECK, "--format", "junit", cwd=repo).stdout).find("testsuite")
+    assert suite is not None and (suite.get("tests"), suite.get("failures")) == ("1", "1")
+    case = suite.find("testcase")
+    assert case is not None and case.get("name") == "src/waypoint_nav/src/pure_pursuit.cpp:45"
+    assert case.find("failure") is not None
+    fixed = archlog(*CHECK, "--fix", "--format", "junit", cwd=repo)
+    clean = ET.fromstring(fixed.stdout).find("testsuite")
+    assert fixed.returncode == 0 and clean is not None and (clean.get("tests"), clean.get("failures")) == ("1", "0")
