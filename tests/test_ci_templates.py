@@ -52,7 +52,7 @@ def test_pre_commit_hook_runs_without_args_and_watches_every_input(tmp_path: Pat
 def test_ci_template_installs_from_a_source_and_analyses_once(template: str, report: str, tmp_path: Path) -> None:
     text = (ROOT / "docs" / "ci" / template).read_text()
     assert not re.search(r"pip install archlog\b", text) and 'pip install "$ARCHLOG_SOURCE"' in text
-    commands = [line for line in re.findall(r"(?:run: |- )(archlog check[^\n]*)", text)]
+    commands = re.findall(r"(?:run: |- )(archlog check[^\n]*)", text)
     assert len(commands) == 1, commands  # one analysis: the report and the exit status
     repo = repository(tmp_path)
     command = shlex.split(commands[0].replace("my_robot_bringup/launch/robot.launch", LAUNCH))

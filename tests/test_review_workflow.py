@@ -4,6 +4,7 @@ launch element, and the concise summary line."""
 
 from __future__ import annotations
 
+import io
 import json
 import shutil
 import subprocess
@@ -126,3 +127,22 @@ def test_github_annotations_and_junit(tmp_path: Path) -> None:
     fixed = archlog(*CHECK, "--fix", "--format", "junit", cwd=repo)
     clean = ET.fromstring(fixed.stdout).find("testsuite")
     assert fixed.returncode == 0 and clean is not None and (clean.get("tests"), clean.get("failures")) == ("1", "0")
+
+
+def test_repeated_notes_of_one_code_are_counted_not_listed(tmp_path: Path) -> None:
+    from rich.console import Console
+
+    from archlog.diagnostics import Diagnostic
+    from archlog.reports.report import Report
+    from archlog.reports.text import print_text
+
+    notes = [Diagnostic("a.launch", n, "env-not-given", f"environment variable V{n} is not given", "note")
+             for n in range(1, 11)]
+    warning = Diagnostic("a.launch", 20, "launch-unresolved", "<include> skipped", "warning")
+    out = io.StringIO()
+    console = Console(file=out, no_color=True, width=200)
+    print_text(Report([], [*notes, warning], [], tmp_path), console)
+    text = out.getvalue()
+    assert text.count("env-not-given") == 4 and "<include> skipped" in text
+    assert "... and 7 more env-not-given notes like these" in text
+    assert "0 findings (0 errors, 0 warnings, 0 notes); 11 diagnostics" in text
