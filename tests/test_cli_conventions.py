@@ -73,7 +73,7 @@ def test_rule_explains_description_example_and_fix() -> None:
     assert out.startswith("AL102 near-miss-topic (error, precision medium; tags: topics, names, dangling)\n")
     assert "A subscriber with no publisher waits forever" in out  # the description
     assert "Example finding (from the rule's fixtures):\n  ctl.cpp:11 /arm/joint_cmd: /arm/ctl subscribes" in out
-    assert "How to fix:\nRename one side" in out
+    assert 'How to fix:\nConnect them in the launch file: `<remap from="TOPIC" to="OTHER_TOPIC"/>`' in out
     assert out.rstrip().endswith("docs/rules.md#al102")
     assert archlog("rule", "near-miss-topic").stdout == out  # by name too
     listed = archlog("rule").stdout.splitlines()
