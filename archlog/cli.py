@@ -6,6 +6,7 @@ import json
 import os
 import sys
 from contextlib import nullcontext
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -71,14 +72,22 @@ def _system_options(func):
     return func
 
 
-def _load(paths, launches, args, models, rule_paths, config_path, profile, threshold, env,
-          quiet: bool = False) -> tuple[Analysis, RuleSet, Config]:
-    """Configuration, rules (checked before the slow part), then the analysis, with a progress bar
-    on a terminal. The environment is [env] of the configuration with --env over it."""
-    from rich.console import Console
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+@dataclass
+class Inputs:
+    """What one run analyses: the configuration and rules, the system's inputs and environment."""
 
-    from archlog.analysis import analyse
+    config: Config
+    ruleset: RuleSet
+    paths: list[Path]
+    launches: list[str]
+    args: dict[str, str]
+    models: list[Path]
+    env: dict[str, str]
+
+
+def _inputs(paths, launches, args, models, rule_paths, config_path, profile, threshold, env) -> Inputs:
+    """Configuration, rules (checked before the slow part) and the system's inputs. The environment
+    is [env] of the configuration with --env over it."""
     from archlog.config import find_config, load_config, workspace_config
     from archlog.rules.ruleset import load_rules
 
@@ -92,11 +101,21 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
     config = cli_choices.select(config, choices, ruleset.rules)
     paths, launches, args, models = cli_choices.inputs(config, choices, list(paths), list(launches),
                                                        _arg_pairs(args), list(models))
-    given = {**config.env, **_env_pairs(env)}
+    return Inputs(config, ruleset, paths, launches, args, models, {**config.env, **_env_pairs(env)})
+
+
+def _analyse(given: Inputs, quiet: bool = False) -> Analysis:
+    """The analysis of the inputs, with a progress bar on a terminal."""
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+    from archlog.analysis import analyse
+
+    config = given.config
     stderr = Console(stderr=True)
     if quiet or not stderr.is_terminal:
-        return analyse(paths, launches, args, models, config.near_miss_threshold,
-                       env=given, limits=config.limits), ruleset, config
+        return analyse(given.paths, given.launches, given.args, given.models, config.near_miss_threshold,
+                       env=given.env, limits=config.limits)
     with Progress(SpinnerColumn(), TextColumn("reading nodes"), BarColumn(), MofNCompleteColumn(),
                   TimeElapsedColumn(), console=stderr, transient=True) as bar:
         task = bar.add_task("nodes", total=None)
@@ -104,9 +123,15 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
         def advance(done: int, total: int) -> None:
             bar.update(task, completed=done, total=total if total > 0 else None)
 
-        analysis = analyse(paths, launches, args, models, config.near_miss_threshold,
-                           advance, env=given, limits=config.limits)
-    return analysis, ruleset, config
+        return analyse(given.paths, given.launches, given.args, given.models, config.near_miss_threshold,
+                       advance, env=given.env, limits=config.limits)
+
+
+def _load(paths, launches, args, models, rule_paths, config_path, profile, threshold, env,
+          quiet: bool = False) -> tuple[Analysis, RuleSet, Config]:
+    """The configuration, the rules and the analysis of one run."""
+    given = _inputs(paths, launches, args, models, rule_paths, config_path, profile, threshold, env)
+    return _analyse(given, quiet), given.ruleset, given.config
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -117,9 +142,11 @@ def main() -> None:
 
 @main.command()
 @_system_options
-@click.option("--format", "fmt", type=click.Choice(["text", "concise", "json", "sarif", "codequality"]),
+@click.option("--format", "fmt",
+              type=click.Choice(["text", "concise", "json", "sarif", "codequality", "github", "junit"]),
               default="text", show_default=True,
-              help="concise: one `path:line:col: ID message` line per finding; codequality: GitLab's Code Quality.")
+              help="concise: one `path:line:col: ID message` line per finding and a summary; codequality: GitLab's "
+                   "Code Quality; github: workflow command annotations; junit: one failing test case per finding.")
 @click.option("--source-root", "source_root_dir", type=click.Path(exists=True, file_okay=False, path_type=Path),
               help="Report paths relative to this folder [default: the git work tree holding the first PATH, "
                    "else the current folder].")
@@ -130,42 +157,69 @@ def main() -> None:
               help="Report only findings that are not in this baseline (matched by fingerprint).")
 @click.option("--write-baseline", type=click.Path(dir_okay=False, path_type=Path),
               help="Record the current findings as the baseline.")
+@click.option("--new-only", is_flag=True, help="Report only the findings the change introduces relative to --base "
+              "(matched by fingerprint, so moved lines do not count as new).")
+@click.option("--base", "base_ref", default="HEAD", show_default=True, metavar="REF",
+              help="With --new-only: the git revision the change is compared with.")
 @click.option("--fail-on-incomplete", is_flag=True,
               help="Also exit 1 when a node is only partially recovered or opaque (no model or source).")
 @click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
+@click.option("--fix", "fix", is_flag=True, help="Apply the safe fixes (remaps in launch files) and report what remains.")
+@click.option("--unsafe-fixes", is_flag=True, help="With --fix or --diff: the fixes that may change the meaning too.")
+@click.option("--diff", "show_diff", is_flag=True,
+              help="Print the fixes as a unified diff instead of applying them (exit 1 when there is one).")
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
-          source_root_dir, output, fail_on, baseline, write_baseline, fail_on_incomplete, quiet) -> None:
+          source_root_dir, output, fail_on, baseline, write_baseline, new_only, base_ref, fail_on_incomplete, quiet, fix,
+          unsafe_fixes, show_diff) -> None:
     """Check a ROS system configuration and report findings."""
     from rich.console import Console
 
     from archlog.queries.session import Session
+    from archlog.reports.annotations import to_github, to_junit
     from archlog.reports.codequality import to_codequality
     from archlog.reports.json_report import to_json
     from archlog.reports.paths import Rebase, source_root
+    from archlog.reports.relocate import relocate, shipped
     from archlog.reports.report import Report, coverage
     from archlog.reports.sarif import to_sarif
-    from archlog.reports.suppress import apply_suppressions, read_baseline
+    from archlog.reports.suppress import apply_suppressions, read_baseline, stale_baseline
     from archlog.reports.suppress import write_baseline as write_baseline_file
     from archlog.reports.text import print_concise, print_text
 
-    analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
-                                      near_miss_threshold, env, quiet or fmt != "text" and output is None)
+    given = _inputs(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env)
+    ruleset, config = given.ruleset, given.config
+    analysis = _analyse(given, quiet or fmt != "text" and output is None)
     root = analysis.workspace.roots[0]
-    findings = Session(analysis.store, ruleset, config).findings()
+    rebase = Rebase(analysis.workspace.roots, source_root(root, source_root_dir))
+    findings, labels = relocate(Session(analysis.store, ruleset, config).findings(), analysis.store,
+                                lambda file: shipped(file) or os.path.isabs(rebase(file)))
     files = {str(row[1]) for row in analysis.store.rows("location")}
     with sandbox.active(analysis.policy):  # inline suppressions are read where the analysis could read
-        unused = apply_suppressions(findings, files, root if root.is_dir() else root.parent, config.suppress)
+        elements = {str(node): (loc[0], loc[1]) for node, _pkg, _exe, elem in analysis.store.rows("node")
+                    if (loc := analysis.store.location(str(elem)))}
+        unused = apply_suppressions(findings, files, root if root.is_dir() else root.parent, config.suppress,
+                                    str(config.source or ""), elements)
+    if fix or show_diff:
+        findings = _fix(findings, analysis.store, rebase, unsafe_fixes, show_diff)
+    hidden: dict[str, int] = {}
+    if new_only:
+        before = _base_fingerprints(given, base_ref)
+        hidden[f"pre-existing in {base_ref}"] = sum(f.fingerprint in before for f in findings)
+        findings = [f for f in findings if f.fingerprint not in before]
     if baseline:
         try:
             known = read_baseline(baseline)
         except ValueError as exc:
             raise click.UsageError(str(exc)) from None
+        hidden["in the baseline"] = sum(f.fingerprint in known for f in findings)
+        unused += stale_baseline(baseline, known, {f.fingerprint for f in findings})
         findings = [f for f in findings if f.fingerprint not in known]
     if write_baseline:
-        write_baseline_file(findings, write_baseline)
+        written = write_baseline_file(findings, write_baseline)
+        click.echo(f"archlog: wrote {written} finding{'s' if written != 1 else ''} to {write_baseline}", err=True)
     report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused), config.adjust(ruleset.rules),
-                    root, Report.node_origins(analysis.store), coverage(analysis.store))
-    report = Rebase(analysis.workspace.roots, source_root(root, source_root_dir)).report(report)
+                    root, Report.node_origins(analysis.store), coverage(analysis.store), labels, hidden)
+    report = rebase.report(report)
     if fmt == "concise":
         with output.open("w", encoding="utf-8") if output else nullcontext(sys.stdout) as stream:
             print_concise(report, stream)
@@ -176,16 +230,58 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
         with sandbox.active(analysis.policy):  # the source lines it quotes
             print_text(report, Console(no_color=bool(os.environ.get("NO_COLOR")), soft_wrap=True), quiet)
     else:
-        text = {"json": to_json, "sarif": to_sarif, "codequality": to_codequality}[fmt](report)
+        text = {"json": to_json, "sarif": to_sarif, "codequality": to_codequality, "github": to_github,
+                "junit": to_junit}[fmt](report)
         if output:
             output.write_text(text, encoding="utf-8")
         else:
             sys.stdout.write(text)
     failed = fail_on_incomplete and report.incomplete
-    if fail_on != "never":
+    if fail_on != "never" and not write_baseline:  # what was just recorded as accepted fails nothing
         worst = SEVERITIES[: SEVERITIES.index(fail_on) + 1]
         failed = failed or any(f.severity in worst and f.suppression is None for f in findings)
     sys.exit(1 if failed else 0)
+
+
+def _base_fingerprints(given: Inputs, ref: str) -> set[str]:
+    """The fingerprints of the findings of the same system in the git revision `ref`."""
+    import tempfile
+    from dataclasses import replace
+
+    from archlog.queries.session import Session
+    from archlog.reports import differential
+
+    tree = differential.work_tree(given.paths[0])
+    with tempfile.TemporaryDirectory(prefix="archlog-base-") as folder:
+        dest = Path(folder)
+        differential.checkout(tree, ref, dest)
+        base = replace(given, paths=[differential.moved(p, tree, dest) for p in given.paths],
+                       launches=[differential.moved_launch(lf, tree, dest) for lf in given.launches],
+                       models=[differential.moved(m, tree, dest) for m in given.models])
+        analysis = _analyse(base, quiet=True)
+        return {f.fingerprint for f in Session(analysis.store, given.ruleset, given.config).findings()}
+
+
+def _fix(findings: list, store, rebase, unsafe: bool, show_diff: bool) -> list:
+    """Apply the fixes (or print them with `show_diff`, then exit); the findings left unfixed."""
+    from archlog.reports import fixes
+
+    planned = fixes.plan(findings, store, rebase.absolute)
+    applied = fixes.chosen(planned, unsafe)
+    changes = fixes.edited(applied)
+    if show_diff:
+        sys.stdout.write(fixes.unified(changes, lambda path: rebase(str(path))))
+        sys.exit(1 if changes else 0)
+    for path, (_before, after) in changes.items():
+        path.write_text(after, encoding="utf-8")
+    for done in applied:
+        click.echo(f"fixed: {done.finding.rule.id} {done.what} ({rebase(str(done.edit.file))})", err=True)
+    waiting = len([f for f in planned if not f.safe]) if not unsafe else 0
+    click.echo(f"archlog: applied {len(applied)} fix{'es' if len(applied) != 1 else ''} in {len(changes)} "
+               f"file{'s' if len(changes) != 1 else ''}" + (f"; {waiting} more with --unsafe-fixes" if waiting else ""),
+               err=True)
+    fixed = {id(done.finding) for done in applied}
+    return [f for f in findings if id(f) not in fixed]
 
 
 @main.command()

@@ -89,6 +89,12 @@ def inputs(config: Config, choices: Choices, paths: list[Path], launches: list[s
         system = config.systems[choices.system]
         paths, launches = [*system.paths, *paths], [*system.launch, *launches]
         args, models = {**system.args, **args}, [*system.models, *models]
-    if not paths:
-        raise click.UsageError("give PATH... or --system NAME")
+    if not paths and len(config.systems) == 1:  # the repository's one named system
+        system = next(iter(config.systems.values()))
+        paths, launches = [*system.paths], [*system.launch, *launches]
+        args, models = {**system.args, **args}, [*system.models, *models]
+    elif not paths and config.systems:
+        raise click.UsageError(f"give PATH... or --system NAME (one of {', '.join(sorted(config.systems))})")
+    elif not paths:  # the folder of archlog.toml, else the current one: its packages as rosrun starts them
+        paths = [config.source.parent if config.source is not None else Path(".")]
     return paths, launches, args, list(dict.fromkeys(models))  # an operator named twice is one instance

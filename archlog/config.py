@@ -33,6 +33,8 @@ Built-in profiles: `ci` (precision: only high- and medium-precision rules, thres
 
 from __future__ import annotations
 
+import difflib
+import re
 import tomllib
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -138,7 +140,7 @@ def load_config(path: Path | None, profile: str | None) -> Config:
         rule_paths=[(base / p) for p in data.get("rules", [])],
         select=list(data.get("select", [])), ignore=list(data.get("ignore", [])),
         severity=dict(data.get("severity", {})), precision=list(data.get("precision", [])),
-        near_miss_threshold=float(data.get("near-miss-threshold", 0.5)), suppress=list(data.get("suppress", [])),
+        near_miss_threshold=float(data.get("near-miss-threshold", 0.5)), suppress=_suppress(data.get("suppress", []), path),
         env=_env(data.get("env", {}), path), limits=_budget(data.get("budget", {}), path),
         operators=_operators(data.get("operators", []), path, "operators"),
         systems={name: _system(name, table, base, path) for name, table in _table(data, "systems", path).items()},
@@ -151,6 +153,38 @@ def load_config(path: Path | None, profile: str | None) -> Config:
         if not rule_path.exists():
             raise ConfigError(f"{path}: rule path {rule_path} does not exist")
     return config
+
+
+SUPPRESS_KEYS = ("rule", "node", "topic", "service", "reason")
+
+
+def _suppress(entries: object, path: Path | None) -> list[dict]:
+    """[[suppress]] entries, each with the `line` of its header: only known keys, string values, and
+    at least one of rule, node, topic or service (an entry of none would hide every finding)."""
+    if not isinstance(entries, list) or not all(isinstance(e, dict) for e in entries):
+        raise ConfigError(f"{path}: suppress must be a list of [[suppress]] tables")
+    text = path.read_text(encoding="utf-8").splitlines() if path is not None else []
+    headers = [n for n, line in enumerate(text, 1) if re.match(r"\s*\[\[\s*(tool\.archlog\.)?suppress\s*\]\]", line)]
+    result = []
+    for index, entry in enumerate(entries):
+        start = headers[index] if index < len(headers) else 0
+        end = headers[index + 1] if index + 1 < len(headers) else len(text) + 1
+
+        def line_of(key: str, start: int = start, end: int = end) -> int:
+            return next((n for n in range(start, end) if re.match(rf"\s*{re.escape(key)}\s*=", text[n - 1])), start)
+
+        for key, value in entry.items():
+            if key not in SUPPRESS_KEYS:
+                near = difflib.get_close_matches(key, SUPPRESS_KEYS, n=1)
+                raise ConfigError(f"{path}:{line_of(key)}: [[suppress]] has an unknown key '{key}' (known: "
+                                  f"{', '.join(SUPPRESS_KEYS)}" + (f"; did you mean '{near[0]}'?)" if near else ")"))
+            if not isinstance(value, str):
+                raise ConfigError(f"{path}:{line_of(key)}: [[suppress]] {key} must be a string (a glob)")
+        if not set(entry) - {"reason"}:
+            raise ConfigError(f"{path}:{start}: [[suppress]] names no rule, node, topic or service, so it would hide "
+                              "every finding")
+        result.append({**entry, "line": start})
+    return result
 
 
 def _env(table: object, path: Path | None) -> dict[str, str]:

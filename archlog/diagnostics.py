@@ -171,7 +171,10 @@ CODES: dict[str, Code] = {
                             "Index the package that defines it (pass its folder) or fix the .msg line."),
     }),
     **_codes("Reports", {
-        "unused-suppression": ("warning", "An inline suppression matches no finding.", "Remove it."),
+        "unused-suppression": ("warning", "An inline suppression, or a `[[suppress]]` entry of archlog.toml, "
+                               "matches no finding.", "Remove it, or correct its rule, node or topic."),
+        "stale-baseline": ("warning", "A baseline entry matches no finding of the run (the finding was fixed, "
+                           "or its names changed).", "Remove the entry, or write the baseline again."),
     }),
 }
 

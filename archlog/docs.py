@@ -12,7 +12,7 @@ from pathlib import Path
 
 from archlog.diagnostics import CODES
 from archlog.facts import schema
-from archlog.reports.rule_help import example, fixtures
+from archlog.reports.rule_help import example, fixtures, help_text
 from archlog.rules.ruleset import load_rules
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
@@ -53,7 +53,7 @@ def rules_markdown() -> str:
                   "", r.summary, "", r.description, ""]
         if example(r):
             lines += ["**Example finding** (from its fixtures)", "", f"    {example(r)}", ""]
-        lines += ["**How to fix**", "", r.help, "",
+        lines += ["**How to fix**", "", help_text(r), "",
                   f"Source: `archlog/rules/builtin/{Path(r.file).name}`; fixtures: "
                   + ", ".join(f"`tests/{case.name}/`" for case in fixtures(r)), "",
                   f"`archlog rule {r.id}` prints this section.", ""]

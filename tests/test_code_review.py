@@ -110,9 +110,10 @@ def test_without_git_the_current_folder_is_the_root(tmp_path: Path) -> None:
 
 def test_text_and_json_give_the_fix_hint_and_url(repo: Path) -> None:
     text = archlog("check", repo / NESTED, *LAUNCH).stdout
-    assert "    fix: Publish the input (start the node that provides it" in text
     [finding] = json.loads(archlog("check", repo / NESTED, *LAUNCH, "--format", "json").stdout)["findings"]
-    assert finding["help"].startswith("Publish the input") and "\n" not in finding["help"]
+    topic = finding["subjects"]["topics"][0]  # the hint names the finding's own input
+    assert f"    fix: Publish {topic}: start the node that provides it" in text
+    assert finding["help"].startswith(f"Publish {topic}:") and "\n" not in finding["help"]
     assert finding["url"].endswith("/docs/rules.md#al601")
 
 

@@ -12,8 +12,8 @@ from archlog.rules.engine import Location
 FORMAT_VERSION = 1
 
 
-def _location(loc: Location, role: str) -> dict:
-    return {"file": loc.file, "line": loc.line, "column": loc.column, "role": role}
+def _location(loc: Location, role: str, label: str = "") -> dict:
+    return {"file": loc.file, "line": loc.line, "column": loc.column, "role": role, **({"label": label} if label else {})}
 
 
 def to_json(report: Report) -> str:
@@ -23,9 +23,10 @@ def to_json(report: Report) -> str:
             "name": f.rule.name,
             "severity": f.severity,
             "message": f.message,
-            "help": hint(f.rule),
+            "help": hint(f.rule, f.values),
             "url": url(f.rule),
-            "locations": [_location(f.location, "primary")] + [_location(r, "related") for r in f.related],
+            "locations": [_location(f.location, "primary")] + [_location(r, "related", report.label(r, ""))
+                                                              for r in f.related],
             "subjects": f.subjects,
             "fingerprint": f.fingerprint,
             **({"suppressed": {"kind": f.suppression[0], "justification": f.suppression[1]}}
@@ -45,6 +46,7 @@ def to_json(report: Report) -> str:
         "findings": findings,
         "diagnostics": diagnostics,
         "summary": report.counts(),
+        "hidden": report.hidden,
         "coverage": {
             **report.coverage_counts(),
             "nodes": [

@@ -82,4 +82,6 @@ class Rebase:
                        diagnostics=[self.diagnostic(d) for d in report.diagnostics],
                        origins={node: [(self.location(loc), text) for loc, text in chain]
                                 for node, chain in report.origins.items()},
-                       coverage=[self.coverage(c) for c in report.coverage])
+                       coverage=[self.coverage(c) for c in report.coverage],
+                       labels={(self(file), line, column): text
+                               for (file, line, column), text in report.labels.items()})

@@ -70,6 +70,12 @@ class Report:
     root: Path
     origins: dict[str, list[tuple[Location, str]]] = field(default_factory=dict)
     coverage: list[NodeCoverage] = field(default_factory=list)
+    labels: dict[tuple[str, int, int], str] = field(default_factory=dict)  # what a related location is
+    hidden: dict[str, int] = field(default_factory=dict)  # findings left out, by why (baseline, --new-only)
+
+    def label(self, loc: Location, default: str = "the other side") -> str:
+        """What a related location of a finding is: the model a finding was moved from, else `default`."""
+        return self.labels.get((loc.file, loc.line, loc.column), default)
 
     @staticmethod
     def node_origins(store) -> dict[str, list[tuple[Location, str]]]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import difflib
 import re
+from collections.abc import Mapping
 from pathlib import Path
 
 from archlog.rules.ruleset import BUILTIN, Rule
@@ -13,9 +14,29 @@ INFO_URI = "https://github.com/archlog/archlog"
 DOCS_URI = f"{INFO_URI}/blob/main/docs/rules.md"
 
 
-def hint(rule: Rule) -> str:
-    """The first paragraph of the rule's `help`, on one line."""
-    return " ".join(rule.help.split("\n\n")[0].split())
+_PLACE = re.compile(r"\{(\w+)\}")
+
+
+def names(rule: Rule, text: str, values: Mapping[str, object] | None = None) -> str:
+    """`text` with each `{column}` of the rule replaced by the finding's value, or by the column's
+    name in capitals without a finding; other braces stay as written."""
+    def fill(match: re.Match) -> str:
+        name = match.group(1)
+        if values is not None and name in values:
+            return str(values[name])
+        return name.upper() if name in rule.columns else "" if name in rule.lists else match.group(0)
+
+    return _PLACE.sub(fill, text)
+
+
+def hint(rule: Rule, values: Mapping[str, object] | None = None) -> str:
+    """The first paragraph of the rule's `help`, on one line, with the finding's own names."""
+    return names(rule, " ".join(rule.help.split("\n\n")[0].split()), values)
+
+
+def help_text(rule: Rule) -> str:
+    """The rule's whole `help`, columns named in capitals (rule pages, SARIF)."""
+    return names(rule, rule.help)
 
 
 def url(rule: Rule) -> str:
@@ -52,7 +73,7 @@ def explain(rule: Rule) -> str:
     if example(rule):
         parts += ["", "Example finding (from the rule's fixtures):", f"  {example(rule)}"]
     if rule.help:
-        parts += ["", "How to fix:", rule.help]
+        parts += ["", "How to fix:", help_text(rule)]
     parts += ["", f"Finding: {rule.predicate}({', '.join(rule.columns)}); defined in {rule.file}:{rule.line}"]
     if url(rule):
         parts.append(f"More: {url(rule)}")

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from archlog import __version__
 from archlog.reports.report import Report
-from archlog.reports.rule_help import INFO_URI, url
+from archlog.reports.rule_help import INFO_URI, help_text, url
 from archlog.rules.engine import Finding, Location
 
 LEVELS = {"error": "error", "warning": "warning", "note": "note"}
@@ -33,7 +33,7 @@ def _escape(text: str) -> str:
 
 def _related(f: Finding, report: Report) -> list[tuple[Location, str]]:
     """The finding's other sides, then the launch elements and includes of the nodes it names."""
-    related = [(r, "the other side") for r in f.related]
+    related = [(r, report.label(r)) for r in f.related]
     for node in f.subjects.get("nodes", []):
         related += report.origins.get(node, [])
     return [(loc, text) for loc, text in related if loc.file]
@@ -56,7 +56,7 @@ def to_sarif(report: Report) -> str:
             "name": r.name,
             "shortDescription": {"text": r.summary},
             "fullDescription": {"text": r.description or r.summary},
-            "help": {"text": r.help or r.summary, "markdown": r.help or r.summary},
+            "help": {"text": help_text(r) or r.summary, "markdown": help_text(r) or r.summary},
             **({"helpUri": url(r)} if url(r) else {}),
             "defaultConfiguration": {"level": LEVELS[r.severity]},
             "properties": {"tags": r.tags, "precision": r.precision, "problem.severity": SECURITY[r.severity]},
@@ -108,7 +108,7 @@ def to_sarif(report: Report) -> str:
                             "informationUri": INFO_URI, "rules": driver_rules}},
         "originalUriBaseIds": {"SRCROOT": {"uri": report.root.resolve().as_uri() + "/"}},
         "invocations": [{"executionSuccessful": True, "toolExecutionNotifications": notifications,
-                         "properties": {"coverage": report.coverage_counts()}}],
+                         "properties": {"coverage": report.coverage_counts(), "hidden": report.hidden}}],
         "results": results,
         "columnKind": "unicodeCodePoints",
     }

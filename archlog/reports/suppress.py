@@ -2,9 +2,10 @@
 
 Inline: `<!-- archlog: ignore[AL401] reason -->` (launch XML), `// archlog: ignore[AL102] reason`
 (C++) or `# archlog: ignore[AL102] reason` (Python) on the finding's line or the line above.
-Configured: `[[suppress]]` tables in archlog.toml with `rule`, `node` and/or `topic` globs and a
-`reason`. A suppressed finding stays in the report, marked; an inline suppression that matches
-nothing is reported. A baseline file holds the fingerprints of accepted findings.
+A comment on (or above) a node's `<node>`/`Node(...)` applies to every finding about that node.
+Configured: `[[suppress]]` tables in archlog.toml (docs/suppressions.md). A suppressed finding
+stays in the report, marked; a suppression that matches nothing is reported. A baseline file holds
+the fingerprints of accepted findings; its entries that match nothing are reported too.
 """
 
 from __future__ import annotations
@@ -48,26 +49,55 @@ def inline_suppressions(files: set[str], root: Path) -> dict[tuple[str, int], In
     return found
 
 
-def apply_suppressions(findings: list[Finding], files: set[str], root: Path,
-                       configured: list[dict]) -> list[Diagnostic]:
-    """Mark suppressed findings; returns a diagnostic for each inline suppression left unused."""
+def apply_suppressions(findings: list[Finding], files: set[str], root: Path, configured: list[dict],
+                       config_file: str = "", elements: dict[str, tuple[str, int]] | None = None) -> list[Diagnostic]:
+    """Mark suppressed findings; returns a diagnostic for each inline suppression and each
+    configured entry left unused. An inline suppression on (or above) the launch element of a
+    node instance (`elements`: node -> its element's file and line) applies to the findings about
+    that instance, wherever they are located."""
     inline = inline_suppressions(files, root)
     used: set[tuple[str, int]] = set()
+    entries_used: set[int] = set()
     for finding in findings:
         loc = finding.location
-        for line in (loc.line, loc.line - 1):
-            mark = inline.get((loc.file, line))
+        lines = [(loc.file, loc.line), (loc.file, loc.line - 1)]
+        nodes = finding.subjects.get("nodes", [])
+        if elements and nodes and nodes[0] in elements:
+            file, line = elements[nodes[0]]
+            start = _element_start(file, line, root)
+            lines += [(file, start), (file, start - 1)]
+        for key in lines:
+            mark = inline.get(key)
             if mark and (finding.rule.id in mark.rules or finding.rule.name in mark.rules):
                 finding.suppression = ("inSource", mark.reason or "suppressed in source")
                 used.add((mark.file, mark.line))
                 break
         if finding.suppression is None:
-            entry = next((e for e in configured if _matches(e, finding)), None)
-            if entry is not None:
-                finding.suppression = ("external", str(entry.get("reason", "suppressed in the configuration")))
+            index = next((i for i, e in enumerate(configured) if _matches(e, finding)), None)
+            if index is not None:
+                entries_used.add(index)
+                finding.suppression = ("external", str(configured[index].get("reason",
+                                                                             "suppressed in the configuration")))
     return [Diagnostic(mark.file, mark.line, "unused-suppression",
                        f"suppression of {', '.join(mark.rules)} matches no finding here; remove it", "warning")
-            for key, mark in sorted(inline.items()) if key not in used]
+            for key, mark in sorted(inline.items()) if key not in used] + \
+        [Diagnostic(config_file, int(entry.get("line", 0)), "unused-suppression",
+                    "[[suppress]] " + ", ".join(f"{k} = {entry[k]!r}" for k in ("rule", "node", "topic", "service")
+                                                if k in entry) + " matches no finding; remove it", "warning")
+         for i, entry in enumerate(configured) if i not in entries_used]
+
+
+def _element_start(file: str, line: int, root: Path) -> int:
+    """The line where the launch element ending its start tag on `line` begins (`<node`, `Node(`)."""
+    path = Path(file) if Path(file).is_absolute() else root / file
+    try:
+        lines = sandbox.read_text(path, "source").splitlines()
+    except sandbox.Refused:
+        return line
+    for number in range(min(line, len(lines)), max(line - 20, 0), -1):
+        if re.search(r"<node\b|Node\s*\(", lines[number - 1]):
+            return number
+    return line
 
 
 def _matches(entry: dict, finding: Finding) -> bool:
@@ -77,11 +107,22 @@ def _matches(entry: dict, finding: Finding) -> bool:
     return bool(given) and all(any(fnmatch.fnmatchcase(v, str(entry[key])) for v in checks[key]) for key in given)
 
 
-def write_baseline(findings: list[Finding], path: Path) -> None:
+def write_baseline(findings: list[Finding], path: Path) -> int:
+    """Record the unsuppressed findings; returns how many entries were written."""
     entries = sorted({(f.fingerprint, f.rule.id, f.message) for f in findings if f.suppression is None})
     document = {"version": BASELINE_VERSION,
                 "findings": [{"fingerprint": fp, "rule": rule, "message": msg} for fp, rule, msg in entries]}
     path.write_text(json.dumps(document, indent=1) + "\n", encoding="utf-8")
+    return len(entries)
+
+
+def stale_baseline(path: Path, known: set[str], found: set[str]) -> list[Diagnostic]:
+    """A diagnostic at each baseline entry that no finding of this run matches."""
+    lines = path.read_text(encoding="utf-8").splitlines()
+    return [Diagnostic(str(path), next((n for n, text in enumerate(lines, 1) if fingerprint in text), 0),
+                       "stale-baseline", f"baseline entry {fingerprint} matches no finding; remove it "
+                       "(or write the baseline again)", "warning")
+            for fingerprint in sorted(known - found)]
 
 
 def read_baseline(path: Path) -> set[str]:

@@ -13,6 +13,7 @@ from archlog.reports.report import Report
 from archlog.reports.rule_help import hint
 
 STYLE = {"error": "bold red", "warning": "yellow", "note": "cyan"}
+NOTES_SHOWN = 3  # notes of one code printed before the rest are counted
 
 
 def print_text(report: Report, console: Console, quiet: bool = False) -> None:
@@ -28,25 +29,47 @@ def print_text(report: Report, console: Console, quiet: bool = False) -> None:
                 continue
             _source(report, console, loc.file, loc.line, loc.column)
             for rel in f.related:
-                console.print(f"    [dim]other side:[/] {escape(rel.file)}:{rel.line}")
+                console.print(f"    [dim]{escape(report.label(rel))}:[/] {escape(rel.file)}:{rel.line}")
                 _source(report, console, rel.file, rel.line, rel.column)
             if hint(f.rule):
-                console.print(f"    [dim]fix:[/] {escape(hint(f.rule))}", highlight=False)
+                console.print(f"    [dim]fix:[/] {escape(hint(f.rule, f.values))}", highlight=False)
         if not quiet:
             console.print()
     if report.diagnostics and not quiet:
         console.print("[bold]diagnostics[/] (problems reading the input)")
+        shown: dict[str, int] = {}
         for d in report.diagnostics:
+            if d.severity == "note":  # repeated notes of one cause: the first few, then a count
+                shown[d.code] = shown.get(d.code, 0) + 1
+                if shown[d.code] > NOTES_SHOWN:
+                    continue
             console.print(f"  {escape(d.file)}:{d.line}: [{STYLE[d.severity]}]{d.severity}[/] "
                           f"{escape(d.message)} [dim]{d.code}[/]")
+        for code, n in shown.items():
+            if n > NOTES_SHOWN:
+                console.print(f"  ... and {n - NOTES_SHOWN} more {code} notes like these (--format json lists "
+                              "each)", highlight=False)
         console.print()
-    counts = report.counts()
-    summary = ", ".join(f"{n} {s}{'s' if n != 1 else ''}" for s, n in counts.items())
-    total = sum(counts.values())
-    suppressed = f"; {report.suppressed} suppressed" if report.suppressed else ""
-    console.print(f"[bold]{total} finding{'s' if total != 1 else ''}[/] ({summary}){suppressed}; "
-                  f"{len(report.diagnostics)} diagnostic{'s' if len(report.diagnostics) != 1 else ''}")
+    console.print(escape(summary_line(report, recovery=False)), highlight=False)
     print_coverage(report, console)
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}{'s' if n != 1 else ''}"
+
+
+def summary_line(report: Report, recovery: bool = True) -> str:
+    """One line: findings per severity, suppressed and hidden ones, diagnostics, recovery."""
+    counts = report.counts()
+    parts = [f"{_plural(sum(counts.values()), 'finding')} ({', '.join(_plural(n, s) for s, n in counts.items())})"]
+    if report.suppressed:
+        parts.append(f"{report.suppressed} suppressed")
+    parts += [f"{n} {why} not shown" for why, n in report.hidden.items()]
+    parts.append(_plural(len(report.diagnostics), "diagnostic"))
+    if report.coverage and recovery:
+        n = report.coverage_counts()
+        parts.append(f"{n['recovered']} of {len(report.coverage)} nodes fully recovered")
+    return "; ".join(parts)
 
 
 def print_coverage(report: Report, console: Console) -> None:
@@ -75,8 +98,9 @@ def _source(report: Report, console: Console, file: str, line: int, column: int)
 
 
 def print_concise(report: Report, out: TextIO) -> None:
-    """One `path:line:col: ID message` line per finding, then per diagnostic (code for id), with
-    paths relative to the current folder so that editors and terminals open them."""
+    """One `path:line:col: ID message` line per finding, then per diagnostic that is not a note
+    (code for id), with paths relative to the current folder so that editors and terminals open
+    them; then the one-line summary."""
     def where(file: str, line: int, column: int) -> str:
         path = report.root / file if file else None
         shown = os.path.relpath(path) if path is not None else "."
@@ -87,4 +111,6 @@ def print_concise(report: Report, out: TextIO) -> None:
             loc = f.location
             out.write(f"{where(loc.file, loc.line, loc.column)}: {f.rule.id} {f.message}\n")
     for d in report.diagnostics:
-        out.write(f"{where(d.file, d.line, d.column)}: {d.code} {d.message}\n")
+        if d.severity != "note":  # notes are counted in the summary; --format text lists them
+            out.write(f"{where(d.file, d.line, d.column)}: {d.code} {d.message}\n")
+    out.write(summary_line(report) + "\n")

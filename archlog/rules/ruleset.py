@@ -27,7 +27,7 @@ from archlog.diagnostics import SEVERITIES
 
 BUILTIN = Path(__file__).resolve().parent / "builtin"
 REQUIRED = ("id", "name", "severity", "finding", "location", "message", "summary")
-OPTIONAL = ("related", "description", "help", "tags", "precision", "lists", "url")
+OPTIONAL = ("related", "description", "help", "tags", "precision", "lists", "url", "fix")
 KEYS = REQUIRED + OPTIONAL  # a closed set: any other key is an error (docs/writing-rules.md documents each)
 PRECISIONS = ("high", "medium", "low")
 _HEAD = re.compile(r"^\s*(\w+)\s*\(([^()]*)\)\s*$")
@@ -67,6 +67,10 @@ class Rule:
     list_phrases: dict[str, str] = field(default_factory=dict)
     # metadata key -> its line in the file (errors about a key point at it)
     lines: dict[str, int] = field(default_factory=dict)
+    # `fix: {remap: [node, from, to], safe: BOOL}`: the columns of the node whose launch element gets
+    # `<remap from= to=/>` (archlog check --fix), and whether --fix applies it without --unsafe-fixes
+    fix: tuple[str, str, str] | None = None
+    fix_safe: bool = False
 
 
 @dataclass
@@ -205,6 +209,11 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
         if not match or match.group(2).strip() not in columns:
             raise fail("lists", f"list '{name}' must look like relation(column), with a column of {head.group(1)}")
         lists[str(name)] = (match.group(1), match.group(2).strip())
+    fix = meta.get("fix")
+    if fix is not None and not (isinstance(fix, dict) and set(fix) <= {"remap", "safe"}
+                                and isinstance(fix.get("remap"), list) and len(fix["remap"]) == 3
+                                and all(c in columns for c in fix["remap"]) and isinstance(fix.get("safe", False), bool)):
+        raise fail("fix", f"`fix` must be {{remap: [node, from, to], safe: true|false}} with columns of {head.group(1)}")
     try:
         str(meta["message"]).format(**dict.fromkeys([*columns, *lists], ""))
     except (KeyError, IndexError, ValueError, AttributeError) as exc:
@@ -215,4 +224,5 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
         related=list(related), description=str(meta.get("description", "")).strip(),
         help=str(meta.get("help", "")).strip(), url=str(meta.get("url", "")).strip(), tags=list(meta.get("tags") or []),
         precision=precision, file=file, line=line, lists=lists, list_phrases=phrases, lines=lines,
+        fix=tuple(fix["remap"]) if fix else None, fix_safe=bool(fix and fix.get("safe", False)),
     )
