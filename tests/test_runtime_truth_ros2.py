@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 from conftest import CORPUS_ROS2, corpus_cases, requires_rclpy, run_case
-from support.ros2_nodes import NodeRun, observe, private_domain, running_nodes
+from support.ros2_nodes import observe, private_domain, rclpy_nodes, rclpy_runs, running_nodes
 
 from archlog.analysis import Analysis
 from archlog.observe import from_facts
@@ -58,27 +58,6 @@ def recovered_ports(analysis: Analysis, nodes: set[str]) -> tuple[frozenset[Port
                        normal_type(str(type_), interface))
                 (infra if port in infrastructure else own).add(row)
     return frozenset(own), frozenset(infra)
-
-
-def rclpy_nodes(analysis: Analysis) -> set[str]:
-    return {str(n) for n, origin in analysis.store.rows("node_source") if origin == "python"}
-
-
-def rclpy_runs(analysis: Analysis) -> list[NodeRun]:
-    """How to start every rclpy instance as launch_ros would, with what archlog recovered for it."""
-    runs = []
-    for node in analysis.config.nodes:
-        if node.name not in rclpy_nodes(analysis):
-            continue
-        executable = analysis.workspace.packages[node.pkg].executables[node.type]
-        source = executable.sources[0]
-        depth = len(executable.entry.partition(":")[0].split(".")) + (source.name == "__init__.py")
-        root = source.parents[depth - 1] if executable.entry else source.parent
-        prefix = node.name + "/"
-        params = tuple((key[len(prefix):], value) for key, (value, _elem) in analysis.config.params.items()
-                       if key.startswith(prefix) and "/" not in key[len(prefix):])
-        runs.append(NodeRun(node.name, source, root, executable.entry, tuple((a, b) for a, b, _e in node.remaps), params))
-    return runs
 
 
 def test_enough_rclpy_instances_run() -> None:

@@ -25,6 +25,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
+from archlog.analysis import Analysis
 from archlog.observe_ros2 import Port, Ros2Graph
 
 _counter = itertools.count()
@@ -110,6 +111,27 @@ def _stop(proc: subprocess.Popen) -> None:
             proc.wait(timeout=5)
     if proc.stderr is not None:
         proc.stderr.close()
+
+
+def rclpy_nodes(analysis: Analysis) -> set[str]:
+    return {str(n) for n, origin in analysis.store.rows("node_source") if origin == "python"}
+
+
+def rclpy_runs(analysis: Analysis) -> list[NodeRun]:
+    """How to start every rclpy instance as launch_ros would, with what archlog recovered for it."""
+    runs = []
+    for node in analysis.config.nodes:
+        if node.name not in rclpy_nodes(analysis):
+            continue
+        executable = analysis.workspace.packages[node.pkg].executables[node.type]
+        source = executable.sources[0]
+        depth = len(executable.entry.partition(":")[0].split(".")) + (source.name == "__init__.py")
+        root = source.parents[depth - 1] if executable.entry else source.parent
+        prefix = node.name + "/"
+        params = tuple((key[len(prefix):], value) for key, (value, _elem) in analysis.config.params.items()
+                       if key.startswith(prefix) and "/" not in key[len(prefix):])
+        runs.append(NodeRun(node.name, source, root, executable.entry, tuple((a, b) for a, b, _e in node.remaps), params))
+    return runs
 
 
 OBSERVE = """
