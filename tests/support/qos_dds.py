@@ -19,7 +19,7 @@ from pathlib import Path
 from archlog.analysis import analyse
 from archlog.rules.engine import Engine
 from archlog.rules.ruleset import load_rules
-from support.ros2_nodes import ros2_env
+from support.ros2_nodes import ros2_env, stop
 
 QOS_RULES = ("AL501", "AL502", "AL503", "AL504", "AL505")
 Side = dict[str, object]  # policy -> value (durations in seconds; None: not set, ROS 2's default)
@@ -185,9 +185,9 @@ def dds_verdicts(workspace: Path, domain: int, timeout: float = 60.0) -> dict[st
             try:
                 line = _first_line(listener, timeout)
             finally:
-                _end(listener)
+                stop(listener)
         finally:
-            _end(talker)
+            stop(talker)
     return json.loads(line)
 
 
@@ -199,19 +199,6 @@ def _first_line(proc: subprocess.Popen, timeout: float) -> str:
         if not selector.select(timeout):
             raise TimeoutError(f"the listener decided no verdict within {timeout} s")
     return proc.stdout.readline()  # type: ignore[union-attr]
-
-
-def _end(proc: subprocess.Popen) -> None:
-    import os
-    import signal
-
-    if proc.poll() is None:
-        os.killpg(proc.pid, signal.SIGINT)
-        try:
-            proc.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait(timeout=5)
 
 
 def describe(side: Side) -> str:

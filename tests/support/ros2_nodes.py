@@ -98,10 +98,11 @@ def running_nodes(runs: list[NodeRun], domain: int) -> Iterator[list[subprocess.
             yield procs
         finally:
             for proc in procs:
-                _stop(proc)
+                stop(proc)
 
 
-def _stop(proc: subprocess.Popen) -> None:
+def stop(proc: subprocess.Popen) -> None:
+    """Stop a process started in a session of its own: SIGINT, then SIGKILL to its group."""
     if proc.poll() is None:
         os.killpg(proc.pid, signal.SIGINT)
         try:
