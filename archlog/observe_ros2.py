@@ -27,6 +27,7 @@ ACTION_PART = "/_action/"  # an action's own topics and services live under NAME
 # QoS policies compared with the recovered ones (history and depth of a remote endpoint are not
 # sent by DDS discovery); a policy at the value ROS 2 gives by default is left out on both sides
 QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
+EMPTY_WAIT = 5.0  # seconds without any node before a domain is taken to be empty
 INFINITE_US = 2**31  # durations at or above this (DDS's infinite is 2^31 - 1 s) are infinite
 
 
@@ -97,14 +98,18 @@ def _rclpy() -> tuple[Any, Any]:
 
 
 def _settled(node: Any, action_graph: Any, settle: float, expect: frozenset[str], timeout: float) -> Ros2Graph:
-    end = time.monotonic() + timeout
-    last, since = None, time.monotonic()
+    """Discovery of the other participants takes a while (longer on a busy machine): an empty graph
+    counts as settled only after EMPTY_WAIT seconds."""
+    start = time.monotonic()
+    end = start + timeout
+    last, since = None, start
     while True:
         graph = _snapshot(node, action_graph)
         now = time.monotonic()
         if graph != last:
             last, since = graph, now
-        if expect <= graph.nodes and now - since >= settle or now >= end:
+        waited = bool(graph.nodes) or now - start >= EMPTY_WAIT
+        if expect <= graph.nodes and waited and now - since >= settle or now >= end:
             return graph
         time.sleep(0.2)
 
