@@ -372,8 +372,16 @@ def graph(paths, launches, args, models, rule_paths, config_path, profile, near_
 @click.option("--ros2-node-info", "node_info", multiple=True,
               type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="Read saved `ros2 node info NODE` output (repeatable) instead of a ROS 1 master.")
-def observe_command(master_uri, output, write_models, node_info) -> None:
-    """Read the live architecture (nodes, topics with types, services) from a running master."""
+@click.option("--ros2", "ros2", is_flag=True,
+              help="Read the live ROS 2 graph with rclpy (archlog's ros2 extra) instead of a ROS 1 master: every "
+                   "port kind, and each topic endpoint's QoS.")
+@click.option("--domain", type=click.IntRange(0, 232), default=None, show_default="$ROS_DOMAIN_ID",
+              help="With --ros2: the DDS domain to read.")
+@click.option("--settle", type=click.FloatRange(0.1, 60), default=2.0, show_default=True,
+              help="With --ros2: seconds the graph must stay unchanged before it is read (discovery takes time).")
+def observe_command(master_uri, output, write_models, node_info, ros2, domain, settle) -> None:
+    """Read the live architecture (nodes, topics with types, services) from a running ROS 1 master
+    or ROS 2 domain."""
     from archlog import observe
 
     if node_info:
@@ -382,6 +390,13 @@ def observe_command(master_uri, output, write_models, node_info) -> None:
         except observe.NodeInfoError as exc:
             raise click.ClickException(str(exc)) from None
         observed = observe.Architecture.merged(parts)
+    elif ros2:
+        from archlog import observe_ros2
+
+        try:
+            observed = observe_ros2.read_graph(domain, settle=settle, timeout=settle + 20).architecture()
+        except observe_ros2.Ros2Unavailable as exc:
+            raise click.ClickException(str(exc)) from None
     else:
         try:
             observed = observe.read_master(observe.master(master_uri))

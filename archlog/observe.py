@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import json
 import xmlrpc.client
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Any, ClassVar
 
 import yaml
 
@@ -27,34 +28,55 @@ KINDS = ("nodes", "publishers", "subscribers", "services")
 ROS2_INFRA_TOPICS = frozenset({"/rosout", "/parameter_events"})
 ROS2_PARAMETER_SERVICES = ("describe_parameters", "get_parameter_types", "get_parameters", "list_parameters",
                            "set_parameters", "set_parameters_atomically", "get_type_description")
+# the QoS values ROS 2 gives a policy by default; an observation and a recovery list the others
+ROS2_QOS_DEFAULTS = {"reliability": "reliable", "durability": "volatile", "liveliness": "automatic"}
 ROS2_SECTIONS = {"Subscribers:": "subscribers", "Publishers:": "publishers", "Service Servers:": "services",
                  "Service Clients:": None, "Action Servers:": None, "Action Clients:": None}
 
 
 @dataclass(frozen=True)
 class Architecture:
+    """`kinds` are those the observation can see: a ROS 1 master has no clients, actions or QoS, a
+    live ROS 2 graph has them all (ROS2_KINDS). JSON holds only those kinds."""
+
     nodes: frozenset[str]
     publishers: frozenset[tuple[str, str, str]]
     subscribers: frozenset[tuple[str, str, str]]
     services: frozenset[tuple[str, str]]
+    clients: frozenset[tuple[str, str]] = frozenset()
+    action_servers: frozenset[tuple[str, str]] = frozenset()
+    action_clients: frozenset[tuple[str, str]] = frozenset()
+    qos: frozenset[tuple[str, str, str, str, str]] = frozenset()  # (node, topic, publisher|subscriber, policy, value)
+    kinds: tuple[str, ...] = KINDS
+
+    ROS2_KINDS: ClassVar[tuple[str, ...]] = KINDS + ("clients", "action_servers", "action_clients", "qos")
 
     def to_json(self) -> str:
-        return json.dumps({k: sorted(map(list, v)) if k != "nodes" else sorted(v)
-                           for k, v in self.__dict__.items()}, indent=1) + "\n"
+        return json.dumps({k: sorted(map(list, getattr(self, k))) if k != "nodes" else sorted(self.nodes)
+                           for k in self.kinds}, indent=1) + "\n"
 
     @classmethod
     def merged(cls, parts: list[Architecture]) -> Architecture:
-        return cls(*(frozenset().union(*(getattr(a, k) for a in parts)) for k in KINDS))
+        kinds = tuple(k for k in cls.ROS2_KINDS if any(k in a.kinds for a in parts))
+        return cls(**{k: frozenset().union(*(getattr(a, k) for a in parts)) for k in kinds}, kinds=kinds)
 
     @classmethod
     def from_json(cls, text: str) -> Architecture:
         data = json.loads(text)
-        return cls(frozenset(data["nodes"]), *(frozenset(map(tuple, data[k])) for k in KINDS[1:]))
+        kinds = KINDS + tuple(k for k in cls.ROS2_KINDS[len(KINDS):] if k in data)
+        rows: dict[str, Any] = {k: frozenset(data[k]) if k == "nodes" else frozenset(map(tuple, data[k]))
+                                for k in kinds}
+        return cls(**rows, kinds=kinds)
+
+    def restricted(self, nodes: set[str] | frozenset[str]) -> Architecture:
+        """The part of the architecture on `nodes`: those nodes and their ports."""
+        ports: dict[str, Any] = {k: frozenset(r for r in getattr(self, k) if r[0] in nodes) for k in self.ROS2_KINDS[1:]}
+        return replace(self, nodes=self.nodes & nodes, **ports)
 
     def compared(self) -> dict[str, frozenset]:
         """What a comparison looks at: subscribers without their (master-side ambiguous) type."""
-        return {"nodes": self.nodes, "publishers": self.publishers,
-                "subscribers": frozenset((n, t) for n, t, _ty in self.subscribers), "services": self.services}
+        every = {k: getattr(self, k) for k in self.ROS2_KINDS}
+        return {**every, "subscribers": frozenset((n, t) for n, t, _ty in self.subscribers)}
 
 
 class _Transport(xmlrpc.client.Transport):
@@ -121,27 +143,44 @@ def read_ros2_node_info(text: str, file: str) -> Architecture:
                     found["services"].add((node, name))
             elif name not in ROS2_INFRA_TOPICS:
                 found[section].add((node, name, type_))
-    return Architecture(frozenset(nodes), *(frozenset(found[k]) for k in KINDS[1:]))
+    return Architecture(frozenset(nodes), frozenset(found["publishers"]), frozenset(found["subscribers"]),
+                        frozenset(found["services"]))
 
 
 def from_facts(store: FactStore) -> Architecture:
-    """The recovered architecture in the same shape (ports with unknown names left out)."""
-    def rows(relation: str) -> frozenset:
-        return frozenset((str(n), t, ty if isinstance(ty, str) else "") for _p, n, t, ty in store.rows(relation)
-                         if not isinstance(t, Unknown))
+    """The recovered architecture in the same shape (ports with unknown names left out, and the
+    ports marked `infrastructure_port`, which an observation keeps apart too)."""
+    infrastructure = {r[0] for r in store.rows("infrastructure_port")}
 
-    services = frozenset((str(n), str(s)) for _p, n, s, _ty in store.rows("service_server")
-                         if not isinstance(s, Unknown))
-    return Architecture(frozenset(str(r[0]) for r in store.rows("node")), rows("publisher"), rows("subscriber"),
-                        services)
+    def rows(relation: str, typed: bool) -> frozenset:
+        return frozenset((str(n), t, ty if isinstance(ty, str) else "") if typed else (str(n), str(t))
+                         for p, n, t, ty in store.rows(relation) if not isinstance(t, Unknown) and p not in infrastructure)
+
+    return Architecture(frozenset(str(r[0]) for r in store.rows("node")), rows("publisher", True),
+                        rows("subscriber", True), rows("service_server", False), rows("service_client", False),
+                        rows("action_server", False), rows("action_client", False), _qos_from_facts(store),
+                        Architecture.ROS2_KINDS)
+
+
+def _qos_from_facts(store: FactStore) -> frozenset[tuple[str, str, str, str, str]]:
+    """(node, topic, publisher|subscriber, policy, value) of the non-default QoS policies an
+    observation reports: reliability, durability and liveliness, and durations in microseconds."""
+    ends = {p: (str(n), str(t), relation) for relation in ("publisher", "subscriber")
+            for p, n, t, _ty in store.rows(relation) if not isinstance(t, Unknown)}
+    found = {(*ends[p], str(policy), str(value)) for p, policy, value in store.rows("qos")
+             if p in ends and policy in ROS2_QOS_DEFAULTS and value != ROS2_QOS_DEFAULTS[policy]}
+    found |= {(*ends[p], str(policy), str(micros)) for p, policy, micros in store.rows("qos_duration")
+              if p in ends and not (policy == "lifespan" and ends[p][2] == "subscriber")}
+    return frozenset(found)
 
 
 def compare(recovered: Architecture, observed: Architecture) -> dict[str, dict]:
-    """Per kind: counts, over- and under-approximation (as in the ROSDiscover paper's Table IV:
-    both divided by the observed count, so over-approximation may exceed 100), and the differences."""
+    """Per kind the observation can see: counts, over- and under-approximation (as in the
+    ROSDiscover paper's Table IV: both divided by the observed count, so over-approximation may
+    exceed 100), and the differences."""
     result = {}
     ours, theirs = recovered.compared(), observed.compared()
-    for kind in KINDS:
+    for kind in observed.kinds:
         extra, missing = sorted(ours[kind] - theirs[kind]), sorted(theirs[kind] - ours[kind])
         result[kind] = {
             "recovered": len(ours[kind]), "observed": len(theirs[kind]),

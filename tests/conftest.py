@@ -89,3 +89,15 @@ def requires_ros() -> list:
 
     return [pytest.mark.ros,
             pytest.mark.skipif(not ros_available() and not os.environ.get("CI"), reason="Debian ROS 1 not installed")]
+
+
+def requires_rclpy() -> list:
+    """Marks for tests that start rclpy nodes (archlog's ros2 extra); in CI a missing rclpy is a
+    failure, not a skip."""
+    import os
+
+    from support.ros2_nodes import rclpy_available
+
+    return [pytest.mark.ros2,
+            pytest.mark.skipif(not rclpy_available() and not os.environ.get("CI"),
+                               reason="rclpy is not importable (pip install 'archlog[ros2]')")]

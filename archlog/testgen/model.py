@@ -49,9 +49,8 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     for pid, n, t, ty in ports["subscriber"]:
         if t in inputs and n in chosen:
             where.setdefault(str(ty), (store.location(pid) or ("", 0, 0))[:2])
-    whole = from_facts(store)
-    interface = Architecture(frozenset(chosen), *(frozenset(r for r in getattr(whole, kind) if r[0] in chosen)
-                                                  for kind in ("publishers", "subscribers", "services")))
+    part = from_facts(store).restricted(set(chosen))
+    interface = Architecture(frozenset(chosen), part.publishers, part.subscribers, part.services)
     periodic, requires = _behavior(analysis, ctl, chosen, outputs, inputs)
     params = {str(name): (None if isinstance(default, Unknown) else str(default))
               for _p, n, name, default in store.rows("param_read") if str(n) in chosen and not isinstance(name, Unknown)}

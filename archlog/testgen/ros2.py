@@ -190,7 +190,8 @@ class Ros2Session:
             parameters = {f"{full}/{x}" for x in observe.ROS2_PARAMETER_SERVICES}
             found["services"] |= {(full, s) for s, _types in self.node.get_service_names_and_types_by_node(name, ns)
                                   if s not in parameters}
-        return observe.Architecture(frozenset(names), *(frozenset(found[k]) for k in observe.KINDS[1:]))
+        return observe.Architecture(frozenset(names), frozenset(found["publishers"]), frozenset(found["subscribers"]),
+                                    frozenset(found["services"]))
 
     def close(self) -> None:
         self.stop_nodes()

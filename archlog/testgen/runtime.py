@@ -247,10 +247,7 @@ class Session:
 
     def graph(self) -> observe.Architecture:
         """The live graph of the nodes under test."""
-        live = observe.read_master(self.master)
-        nodes = set(self.model["nodes"])
-        return observe.Architecture(live.nodes & nodes, *(frozenset(r for r in getattr(live, kind) if r[0] in nodes)
-                                                          for kind in ("publishers", "subscribers", "services")))
+        return observe.read_master(self.master).restricted(set(self.model["nodes"]))
 
 
 class System(Protocol):

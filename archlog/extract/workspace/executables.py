@@ -203,7 +203,7 @@ linked ones count only where the executable's own code reaches them (extract/cpp
                 for candidate in (base / relative.with_suffix(".py"), base / relative / "__init__.py"):
                     if candidate.is_file():
                         package.executables[name.strip()] = Executable(package.name, name.strip(), "python",
-                                                                       [candidate])
+                                                                       [candidate], entry=target.strip())
                         break
 
     def _console_scripts(self, folder: Path) -> list[str]:

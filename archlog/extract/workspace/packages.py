@@ -27,6 +27,7 @@ class Executable:
     target: str = ""  # the CMake target it is built from
     plugin: str = ""  # a nodelet's name as its plugin description declares it (pkg/Type)
     linked: list[Path] = field(default_factory=list)  # those of `sources` from libraries it links
+    entry: str = ""  # a console_scripts entry point's `module:function`, what runs it
 
     @property
     def kinds(self) -> list[tuple[str, str]]:
