@@ -28,7 +28,7 @@ pytestmark = requires_rclpy()
 # Compare the ports every rclpy node creates on its own (/rosout, /parameter_events, the parameter
 # and type-description services) too. They are kept apart on both sides (observe_ros2's
 # `infrastructure`, the facts' `infrastructure_port`): set this to True once archlog recovers them.
-COMPARE_INFRASTRUCTURE = False
+COMPARE_INFRASTRUCTURE = True
 
 RELATIONS = {"publisher": ("publishers", "msg"), "subscriber": ("subscribers", "msg"),
              "service_server": ("services", "srv"), "service_client": ("clients", "srv"),
