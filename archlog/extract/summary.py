@@ -12,6 +12,22 @@ PORT_KINDS = (
 )
 
 
+PARAM_TYPES = ("bool", "integer", "double", "string", "byte_array", "bool_array", "integer_array", "double_array",
+               "string_array")
+
+
+@dataclass(frozen=True)
+class ParamSpec:
+    """What the code says about a parameter it declares or reads, beyond its name and default."""
+
+    type: str = ""  # one of PARAM_TYPES when the declaration fixes it (ROS 2), else ""
+    required: bool = False  # declared (or, rospy, read) without any default: the node needs it set
+    read_only: bool = False
+    bounds: tuple[tuple[str, str], ...] = ()  # (">=", "0.0"), ("<=", "1.0"), (">", ...), ("<", ...)
+    choices: tuple[str, ...] = ()  # the values it accepts, when a validator lists them
+    declared: bool = False  # a ROS 2 declaration (the node accepts values only of what it declares)
+
+
 @dataclass(frozen=True)
 class Port:
     """One architecturally relevant API call, names as written (relative to its handle)."""
@@ -32,6 +48,7 @@ class Port:
     after_tf: tuple[str, ...] = ()  # the node creates it only after these transform waits (TransformWait.id) end
     type_of: tuple[Value, ...] = ()  # models: it carries the type the publishers of these topics (as written) give
     optional: bool = False  # an input the node works without (a model's `optional: true`)
+    param: ParamSpec | None = None  # param_read: what the declaration says beyond the default
 
 
 @dataclass(frozen=True)
@@ -171,3 +188,6 @@ class NodeSummary:
     tf_unknown: bool = False  # its description, arguments or gazebo plugins leave what it broadcasts unknown
     argv_ports: tuple[tuple[str, dict, str], ...] = ()  # models: (kind, entry, file) named from the command line
     valued_options: tuple[str, ...] = ()  # models: command-line options that take a value (not a positional word)
+    # why the node may declare or read parameters under names not known statically (allow_undeclared_parameters,
+    # a read of every parameter under a prefix, dynamic_reconfigure) as "file:line: reason"; "" when it does not
+    params_dynamic: str = ""

@@ -601,6 +601,7 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
         summary.name_file, summary.name_line = result.name_file, result.name_line
         summary.namespace = result.namespace
     summary.incomplete = summary.incomplete or result.incomplete
+    summary.params_dynamic = summary.params_dynamic or result.params_dynamic
     diagnostics.extend(result.diagnostics)
 
 

@@ -23,6 +23,7 @@ class FileResult:
     name_line: int = 0
     namespace: Value = ""
     incomplete: str | None = None
+    params_dynamic: str = ""  # why its parameters are not all known (see NodeSummary.params_dynamic)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     fallback_lines: list[int] = field(default_factory=list)
     depends: list[tuple[str, int]] = field(default_factory=list)
