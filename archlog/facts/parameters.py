@@ -44,6 +44,9 @@ def add_parameters(store: FactStore, system: System) -> None:
         owner = next((node for node in instances if name.startswith(node.rstrip("/") + "/")), None)
         if owner is not None:
             store.add("param_of", name, owner, name[len(owner.rstrip("/")) + 1:])
+    for elem, why in system.config.params_unknown:
+        store.add("param_set_unknown", elem.id, why)
+        store.locate(elem.id, elem.file, elem.line)
     for instance in system.instances:
         if instance.summary is not None and instance.summary.params_dynamic:
             store.add("params_dynamic", instance.launch.name, instance.summary.params_dynamic)

@@ -150,6 +150,9 @@ RELATIONS: tuple[Relation, ...] = (
          "known statically (allow_undeclared_parameters, automatically_declare_parameters_from_overrides, a read "
          "of every parameter under a prefix, a dynamic_reconfigure server, a pluginlib class): parameter rules "
          "treat its parameters as partly unknown.", _NODE, ("reason", "str", "file:line: why")),
+    _rel("configuration", "param_set_unknown", "Where the configuration sets parameters archlog cannot know (a "
+         "parameter file or a parameter name not known statically, a <param> or <rosparam> skipped): any "
+         "parameter may be set there.", ("elem", "id", "the element"), ("reason", "str", "why")),
     _rel("derived", "param_near", "A parameter the configuration sets for a node that neither declares nor reads it "
          "(nor a namespace above it), and a parameter name that node does declare or read whose segment distance "
          "is below the near-miss threshold; computed only for nodes whose parameter names are all known.",
