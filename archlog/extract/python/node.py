@@ -432,6 +432,9 @@ class NodeReader(ValueFolder):
             self.notes.append((call.lineno, "python-several-nodes", f"this file creates several nodes "
                                f"({self.summary.default_name}, {name}); archlog reads them as one node named after "
                                "the last", "note"))
+            self.summary.params_dynamic = self.summary.params_dynamic or \
+                f"{self.file}:{call.lineno}: the file creates several nodes, read as one: which parameters each " \
+                "declares is not known"
         self.summary.default_name = name
         self.summary.name_file, self.summary.name_line = self.file, call.lineno
 

@@ -12,7 +12,7 @@ from archlog.extract.summary import ParamSpec
 from archlog.values import ParamRef, Value
 
 _INTEGERS = {"int", "long", "long long", "short", "unsigned int", "unsigned long", "unsigned long long",
-             "unsigned short", "signed char"}
+             "unsigned short", "signed char", "unsigned char"}
 _ARRAYS = {"bool": "bool_array", "integer": "integer_array", "double": "double_array", "string": "string_array"}
 # NodeOptions settings that make a node accept parameters it never declares, and reads of parameters by prefix
 _DYNAMIC_OPTIONS = ("allow_undeclared_parameters", "automatically_declare_parameters_from_overrides")
