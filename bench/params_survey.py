@@ -2,7 +2,7 @@
 sets, how many reach a node whose parameter names archlog knows completely (the only ones AL403 judges),
 how many have a declared type or bounds to check a value against, and every finding of the four rules.
 
-    python bench/params_survey.py PATH... --launch FILE [--launch FILE...] [--arg NAME:=VALUE...]
+    python bench/params_survey.py PATH... --launch FILE [--launch FILE...] [--arg NAME:=VALUE...] [--env NAME=VALUE...]
 
 One configuration per run (the launch files together, as `archlog check`); prints a summary and each
 finding (rule, file:line, message) so a reviewer can give each one a verdict.
@@ -30,10 +30,12 @@ def main() -> int:
     parser.add_argument("paths", nargs="+", type=Path)
     parser.add_argument("--launch", action="append", default=[])
     parser.add_argument("--arg", action="append", default=[])
+    parser.add_argument("--env", action="append", default=[], help="NAME=VALUE a launch file may read")
     options = parser.parse_args()
     args = dict(a.split(":=", 1) for a in options.arg)
+    env = dict(e.split("=", 1) for e in options.env)
     clock = time.perf_counter()
-    analysis = analyse(options.paths, options.launch, args, [])
+    analysis = analyse(options.paths, options.launch, args, [], env=env)
     ctl, findings = Engine(load_rules([])).run(analysis.store)
     store = analysis.store
     unknown = {str(a.symbol.arguments[0].string) for a in ctl.symbolic_atoms.by_signature("params_unknown", 1)
@@ -43,7 +45,7 @@ def main() -> int:
     judged = [row for row in set_for if str(row[1]) not in unknown]
     typed_ports = {str(row[0]) for row in store.rows("param_type")}
     bounded_ports = {str(row[0]) for row in store.rows("param_bound")} | {str(row[0]) for row in store.rows("param_choice")}
-    print(f"configuration: {' '.join(options.launch)} {' '.join(options.arg)}")
+    print(f"configuration: {' '.join(options.launch)} {' '.join(options.arg)} {' '.join(options.env)}")
     print(f"  parameters set: {len(list(store.rows('param')))} ({len(set_for)} for a node instance, "
           f"{len(judged)} for a node whose parameter names are all known)")
     print(f"  nodes: {len(nodes)}, parameter names all known: {len(nodes - unknown)}; "
