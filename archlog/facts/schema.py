@@ -234,6 +234,8 @@ _PRELUDE = "prelude.lp"
 _AL601 = "AL601_required_input_unreachable.lp"
 _AL401 = "AL401_unused_remap.lp"
 _AL701 = "AL701_transform_never_available.lp"
+_AL403 = "AL403_parameter_never_declared.lp"
+_AL405 = "AL405_parameter_out_of_range.lp"
 _SUB = ("sub", "id", "the subscriber port")
 
 # Relations the shipped rules derive that Python code reads from the grounded program (reports,
@@ -263,6 +265,18 @@ DERIVED: tuple[Relation, ...] = (
     _derived(_PRELUDE, "maybe_heard", "A topic some publisher uses that a subscriber of unknown name might hear "
              "(as maybe_fed, the other way).", ("topic", "name", "the topic"),
              ("type", "type", "the publisher's message type")),
+    _derived(_PRELUDE, "params_unknown", "A node instance whose parameter names archlog does not know completely: "
+             "opaque, a node model, a parameter read under an unknown name, or params_dynamic.", _NODE),
+    _derived(_PRELUDE, "param_candidate", "For a configured parameter its node never declares or reads (AL403), the "
+             "nearest parameter name the node does declare or read (param_near; ties: the first by name).",
+             ("param", "name", "the parameter set"), ("candidate", "name", "the nearest declared one")),
+    _derived(_AL403, "param_candidate_local", "An AL403 candidate's name relative to its node (the finding's "
+             "`candidate` list).", ("param", "name", "the parameter set"), ("local", "str", "the candidate's name")),
+    _derived(_AL403, "param_kept", "What a node keeps because a parameter was misnamed: the candidate's default, and "
+             "the topic a port named from it then uses (AL403's `kept` list).", ("param", "name", "the parameter set"),
+             ("text", "str", "`scan_topic = 'scan' and subscribes /scan, which nothing publishes`")),
+    _derived(_AL405, "param_choices_of", "The values a configured parameter's declaration accepts (AL405's `choices` "
+             "list).", ("param", "name", "the parameter set"), ("value", "str", "an accepted value")),
     _derived(_PRELUDE, "opaque_node", "A node instance whose ports are not (all) known: no source or model, or "
              "incomplete extraction.", _NODE),
     _derived(_PRELUDE, "system_opaque", "Some node instance of the configuration is opaque."),
