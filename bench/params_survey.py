@@ -52,6 +52,11 @@ def main() -> int:
           f"declarations: {len(list(store.rows('param_read')))}, typed: {len(typed_ports)}, bounded: {len(bounded_ports)}, "
           f"required: {len(list(store.rows('param_required')))}; places setting unknown parameters: "
           f"{len(list(store.rows('param_set_unknown')))}")
+    dynamic = {str(row[0]) for row in store.rows("params_dynamic")}
+    typed = {(str(row[1]), str(row[2])) for row in store.rows("param_read") if str(row[0]) in typed_ports}
+    checked = [row for row in set_for if str(row[1]) not in dynamic and (str(row[1]), str(row[0])) in typed]
+    print(f"  values whose type AL404 checks against a declaration: {len(checked)}; nodes with dynamic parameters: "
+          f"{len(dynamic)}")
     ours = [f for f in findings if f.rule.id in RULES]
     print(f"  findings of {', '.join(RULES)}: {len(ours)}; all findings: {len(findings)}; "
           f"{time.perf_counter() - clock:.0f} s")
