@@ -24,6 +24,7 @@ from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.packages import Executable, share_dirs
 from archlog.facts.compose import add_near_names, compose
+from archlog.facts.parameters import add_param_near
 from archlog.facts.patterns import add_name_fits
 from archlog.facts.store import FactStore
 from archlog.system.link import link
@@ -98,6 +99,7 @@ def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], model
 
     clock = time.perf_counter()
     add_near_names(store, near_threshold, diagnostics)
+    add_param_near(store, near_threshold)
     add_name_fits(store)
     timings["near-miss"] = _lap(clock)
     return Analysis(workspace, system.config, store, diagnostics, timings)

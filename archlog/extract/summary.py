@@ -12,6 +12,22 @@ PORT_KINDS = (
 )
 
 
+PARAM_TYPES = ("bool", "integer", "double", "string", "byte_array", "bool_array", "integer_array", "double_array",
+               "string_array")
+
+
+@dataclass(frozen=True)
+class ParamSpec:
+    """What the code says about a parameter it declares or reads, beyond its name and default."""
+
+    type: str = ""  # one of PARAM_TYPES when the declaration fixes it (ROS 2), else ""
+    required: bool = False  # declared (or, rospy, read) without any default: the node needs it set
+    read_only: bool = False
+    bounds: tuple[tuple[str, str], ...] = ()  # (">=", "0.0"), ("<=", "1.0"), (">", ...), ("<", ...)
+    choices: tuple[str, ...] = ()  # the values it accepts, when a validator lists them
+    declared: bool = False  # a ROS 2 declaration (the node accepts values only of what it declares)
+
+
 @dataclass(frozen=True)
 class Port:
     """One architecturally relevant API call, names as written (relative to its handle)."""
@@ -33,6 +49,7 @@ class Port:
     type_of: tuple[Value, ...] = ()  # models: it carries the type the publishers of these topics (as written) give
     optional: bool = False  # an input the node works without (a model's `optional: true`)
     infrastructure: str = ""  # a built-in port of the client library: its group (system/infrastructure.py)
+    param: ParamSpec | None = None  # param_read: what the declaration says beyond the default
 
 
 @dataclass(frozen=True)
@@ -179,3 +196,6 @@ class NodeSummary:
     infrastructure: tuple[str, ...] = ()
     without: tuple[str, ...] = ()
     others: list[NodeSummary] = field(default_factory=list)  # further nodes the same process creates (rclpy)
+    # why the node may declare or read parameters under names not known statically (allow_undeclared_parameters,
+    # a read of every parameter under a prefix, dynamic_reconfigure) as "file:line: reason"; "" when it does not
+    params_dynamic: str = ""

@@ -12,6 +12,7 @@ from archlog.extract.summary import NodeSummary, Port, Site
 from archlog.facts.behavior import Sites, add_behavior
 from archlog.facts.followed_types import Following, add_followed
 from archlog.facts.namespaces import add_namespaces
+from archlog.facts.parameters import add_param_spec, add_parameters
 from archlog.facts.similarity import namespace_steps, near_names, too_long
 from archlog.facts.store import FactStore
 from archlog.system.link import System
@@ -70,6 +71,7 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
         _instance(store, node, summary, config, following)
     add_followed(store, following)
     _param_topics(store, system)
+    add_parameters(store, system)
     _private_names(store)
     _unknown_port_names(store, diagnostics)
     _unknown_patterns(store)
@@ -145,6 +147,8 @@ def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: 
             store.add("optional_port", pid)
         if port.infrastructure:
             store.add("infrastructure_port", pid, port.infrastructure)
+        if port.param is not None:
+            add_param_spec(store, pid, port.param)
         sites.setdefault(Site(port.file, port.line), []).append((port.kind, pid))
         for policy, value in port.qos:
             store.add("qos", pid, policy, value)

@@ -103,6 +103,19 @@ RELATIONS: tuple[Relation, ...] = (
          _PORT, _NODE, ("param", "name", "resolved parameter name"), ("default", "str", "default value, or unknown")),
     _rel("ports", "param_write", "A node instance sets (or deletes) a parameter.",
          _PORT, _NODE, ("param", "name", "resolved parameter name"), ("value", "str", "value set, or 'delete'")),
+    _rel("ports", "param_type", "The type a ROS 2 declaration gives a parameter (of its default, its template "
+         "argument or a ParameterType); a value of another type makes the node throw at start-up.",
+         _PORT, ("type", "str", "bool, integer, double, string, byte_array, bool_array, integer_array, "
+                 "double_array or string_array")),
+    _rel("ports", "param_required", "A parameter declared (ROS 2) or read (rospy.get_param, outside a try block) "
+         "without any default: the node fails, or holds no value, unless the configuration sets it.", _PORT),
+    _rel("ports", "param_read_only", "A parameter its declaration makes read-only (ParameterDescriptor read_only).",
+         _PORT),
+    _rel("ports", "param_bound", "A bound its declaration puts on a parameter's value (a ParameterDescriptor's "
+         "floating_point_range or integer_range); ROS 2 rejects a value outside it at start-up.",
+         _PORT, ("op", "str", ">=, <=, > or <"), ("value", "str", "the bound, a number as written")),
+    _rel("ports", "param_choice", "A value a parameter's declaration accepts, when its validator lists them (the "
+         "parameter takes one of the listed values).", _PORT, ("value", "str", "an accepted value as text")),
     _rel("ports", "timer", "A periodic trigger in a node: a timer or a loop rate (for behavioral rules).",
          _PORT, _NODE, ("period", "str", "period in seconds as written or folded, or unknown")),
     _rel("ports", "queue_size", "The message queue of a ROS 1 publisher or subscriber.",
@@ -137,6 +150,27 @@ RELATIONS: tuple[Relation, ...] = (
          "a topic: its last segment ends in `topic`, or some port takes its name from a parameter of that last "
          "segment, and its value is a graph name.", ("param", "name", "resolved parameter name"), _NODE,
          ("topic", "name", "the value resolved as the node would resolve a topic name")),
+    _rel("configuration", "param_of", "The node instance a parameter the configuration sets is for (the innermost "
+         "node whose private namespace holds it; in ROS 2 every parameter given to a node), and the name the node "
+         "knows it by.", ("param", "name", "resolved parameter name"), _NODE,
+         ("local", "str", "the name relative to the node: dotted in ROS 2 (`controller.max_vel`), a relative name "
+          "in ROS 1")),
+    _rel("configuration", "param_value_type", "The type of the value the configuration sets (as the node receives "
+         "it: a YAML or launch value typed as rcl and launch type them).", ("param", "name", "resolved parameter "
+         "name"), ("type", "str", "bool, integer, double, string, or bool_array ... string_array; no row for a "
+                   "mapping, an empty or mixed list, or an unknown value")),
+    _rel("configuration", "params_dynamic", "A node instance that may declare or read parameters under names not "
+         "known statically (allow_undeclared_parameters, automatically_declare_parameters_from_overrides, a read "
+         "of every parameter under a prefix, a dynamic_reconfigure server, a pluginlib class): parameter rules "
+         "treat its parameters as partly unknown.", _NODE, ("reason", "str", "file:line: why")),
+    _rel("configuration", "param_set_unknown", "Where the configuration sets parameters archlog cannot know (a "
+         "parameter file or a parameter name not known statically, a <param> or <rosparam> skipped): any "
+         "parameter may be set there.", ("elem", "id", "the element"), ("reason", "str", "why")),
+    _rel("derived", "param_near", "A parameter the configuration sets for a node that neither declares nor reads it "
+         "(nor a namespace above it), and a parameter name that node does declare or read whose segment distance "
+         "is below the near-miss threshold; computed only for nodes whose parameter names are all known.",
+         ("param", "name", "the parameter set"), ("candidate", "name", "a parameter its node declares or reads"),
+         ("distance", "int", "segment-aware Damerau-Levenshtein distance, in thousandths")),
     _rel("ports", "private_name", "A name some port uses that lies in a node instance's private namespace "
          "(/robot/amcl/particlecloud for /robot/amcl).", ("name", "name", "the name"), _NODE),
     _rel("behavior", "publish_call", "A call that publishes on a publisher port (`location` gives its file:line).",
@@ -213,6 +247,8 @@ _PRELUDE = "prelude.lp"
 _AL601 = "AL601_required_input_unreachable.lp"
 _AL401 = "AL401_unused_remap.lp"
 _AL701 = "AL701_transform_never_available.lp"
+_AL403 = "AL403_parameter_never_declared.lp"
+_AL405 = "AL405_parameter_out_of_range.lp"
 _SUB = ("sub", "id", "the subscriber port")
 
 # Relations the shipped rules derive that Python code reads from the grounded program (reports,
@@ -245,6 +281,18 @@ DERIVED: tuple[Relation, ...] = (
     _derived(_PRELUDE, "maybe_heard", "A topic some publisher uses that a subscriber of unknown name might hear "
              "(as maybe_fed, the other way).", ("topic", "name", "the topic"),
              ("type", "type", "the publisher's message type")),
+    _derived(_PRELUDE, "params_unknown", "A node instance whose parameter names archlog does not know completely: "
+             "opaque, a node model, a parameter read under an unknown name, or params_dynamic.", _NODE),
+    _derived(_PRELUDE, "param_candidate", "For a configured parameter its node never declares or reads (AL403), the "
+             "nearest parameter name the node does declare or read (param_near; ties: the first by name).",
+             ("param", "name", "the parameter set"), ("candidate", "name", "the nearest declared one")),
+    _derived(_AL403, "param_candidate_local", "An AL403 candidate's name relative to its node (the finding's "
+             "`candidate` list).", ("param", "name", "the parameter set"), ("local", "str", "the candidate's name")),
+    _derived(_AL403, "param_kept", "What a node keeps because a parameter was misnamed: the candidate's default, and "
+             "the topic a port named from it then uses (AL403's `kept` list).", ("param", "name", "the parameter set"),
+             ("text", "str", "`scan_topic = 'scan' and subscribes /scan, which nothing publishes`")),
+    _derived(_AL405, "param_choices_of", "The values a configured parameter's declaration accepts (AL405's `choices` "
+             "list).", ("param", "name", "the parameter set"), ("value", "str", "an accepted value")),
     _derived(_PRELUDE, "opaque_node", "A node instance whose ports are not (all) known: no source or model, or "
              "incomplete extraction.", _NODE),
     _derived(_PRELUDE, "system_opaque", "Some node instance of the configuration is opaque."),

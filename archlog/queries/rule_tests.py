@@ -21,6 +21,7 @@ from rich.markup import escape
 from archlog.analysis import analyse
 from archlog.facts.compose import add_near_names
 from archlog.facts.namespaces import ADDED, add_namespaces
+from archlog.facts.parameters import add_param_near
 from archlog.facts.patterns import add_name_fits
 from archlog.facts.schema import BY_NAME
 from archlog.facts.store import Cell, FactStore
@@ -123,6 +124,8 @@ def load_facts(path: Path) -> FactStore:
         add_namespaces(store)
     if "near_name" not in data:
         add_near_names(store, 0.5)
+    if "param_near" not in data:
+        add_param_near(store, 0.5)
     if "may_name" not in data:
         add_name_fits(store)
     return store

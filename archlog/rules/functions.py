@@ -45,7 +45,8 @@ def _segments(name: str) -> list[str]:
 class Functions:
     """`@parent("/a/b/c")` is "/a/b"; `@basename("/a/b/c")` is "c"; `@segments("/a/b/c")` is 3;
     `@prefix("/a/b/c", 2)` is "/a/b"; `@suffix("/a/b/c", 2)` is "b/c"; `@starts_with(S, P)` and
-    `@ends_with(S, P)` are 1 or 0; `@lower(S)` is S in lower case."""
+    `@ends_with(S, P)` are 1 or 0; `@lower(S)` is S in lower case; `@concat(A, B, ...)` joins strings;
+    `@less(A, B)` compares numbers (numeric strings too), 1 or 0."""
 
     @_strings
     def parent(self, name: str) -> Result:
@@ -85,6 +86,20 @@ class Functions:
     @_strings
     def lower(self, text: str) -> Result:
         return clingo.String(text.lower())
+
+    @_strings
+    def concat(self, *parts: str | int) -> Result:
+        """The parts (strings or numbers) joined into one string."""
+        return clingo.String("".join(map(str, parts)))
+
+    @_strings
+    def less(self, a: str | int, b: str | int) -> Result:
+        """1 when number a is below number b (either may be a numeric string such as "0.5"), else 0;
+        none when either is not a number."""
+        try:
+            return clingo.Number(int(float(a) < float(b)))
+        except ValueError:
+            return []
 
 
 FUNCTIONS = Functions()

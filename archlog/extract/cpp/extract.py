@@ -596,12 +596,18 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
              or graph.ports.get((p.file, p.line, p.column), "") in running | {""}]
     summary.ports += [p for p in ports if p not in summary.ports]  # a header's code is read with each file
     summary.loads += [n for n in result.loads if n not in summary.loads]
+    if result.default_name is not None and summary.default_name is not None and \
+            result.default_name != summary.default_name:
+        summary.params_dynamic = summary.params_dynamic or f"{result.name_file}:{result.name_line}: the executable " \
+            f"creates several nodes ({summary.default_name}, {result.default_name}), read as one: which parameters " \
+            "each declares is not known"
     if result.default_name is not None and summary.default_name is None:
         summary.default_name, summary.anonymous = result.default_name, result.anonymous
         summary.name_file, summary.name_line = result.name_file, result.name_line
         summary.namespace = result.namespace
     summary.infrastructure = tuple(dict.fromkeys([*summary.infrastructure, *result.infrastructure]))
     summary.incomplete = summary.incomplete or result.incomplete
+    summary.params_dynamic = summary.params_dynamic or result.params_dynamic
     diagnostics.extend(result.diagnostics)
 
 

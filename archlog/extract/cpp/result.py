@@ -24,6 +24,7 @@ class FileResult:
     namespace: Value = ""
     infrastructure: tuple[str, ...] = ()  # built-in port groups its node asks for (a lifecycle node)
     incomplete: str | None = None
+    params_dynamic: str = ""  # why its parameters are not all known (see NodeSummary.params_dynamic)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     fallback_lines: list[int] = field(default_factory=list)
     depends: list[tuple[str, int]] = field(default_factory=list)

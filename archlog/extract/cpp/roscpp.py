@@ -54,7 +54,7 @@ from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp_fallback import roscpp_fallback
 from archlog.extract.cpp.scope import Scope
 from archlog.extract.cpp.string_edits import Edit, before, cut, edits, leading_cut, self_edit
-from archlog.extract.summary import Port
+from archlog.extract.summary import ParamSpec, Port
 from archlog.values import Alternatives, FullNodeName, Namespace, ParamRef, Unknown, Value, alternatives, concat
 
 PARAM_READS = {"param", "getParam", "getParamCached", "hasParam", "searchParam", "get", "getCached", "has", "search"}
@@ -109,6 +109,19 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     walker.result.behavior = read_behavior(walker, walker.kept, walker.port_calls, walker.named_callbacks,
                                            sandbox.read_bytes(source, "source") if incomplete_ast else None)
     return walker.result
+
+
+def _dynamic_params(owner: str, name: str, ref: ci.Cursor) -> str | None:
+    """Why a roscpp call reads parameters by names the code does not spell (a dynamic_reconfigure server reads
+    its config's, a pluginlib class its own, getParamNames lists them all), or None."""
+    if ref.kind == K.CONSTRUCTOR and owner == "dynamic_reconfigure::Server":
+        return "a dynamic_reconfigure server reads the parameters of its config"
+    if owner.startswith("pluginlib::ClassLoader") and name in ("createInstance", "createUniqueInstance",
+                                                                "createUnmanagedInstance"):
+        return "a pluginlib class it loads reads parameters of its own"
+    if owner in (NODE_HANDLE, "ros::param") and name in ("getParamNames", "searchParam", "search"):
+        return f"{name}() reads parameters by names the code does not spell"
+    return None
 
 
 def _default_handle(owner: str) -> Value:
@@ -388,6 +401,9 @@ class _Walker:
             self.param(call, args, self.handles.handle_of(next(call.get_children())), name)
         elif owner == "ros::param" and args and name in PARAM_READS | PARAM_WRITES | {"param"}:
             self.param(call, args, "", name)
+        elif (why := _dynamic_params(owner, name, ref)) is not None:
+            self.result.params_dynamic = self.result.params_dynamic or \
+                f"{self.shown(call)}:{call.location.line}: {why}"
         elif owner == NODE_HANDLE and name in TIMERS and args:
             self.add("timer", call, self.duration(args[0]), "", self.handles.handle_of(next(call.get_children())))
         elif owner == "ros::service" and name in ("call", "waitForService", "exists") and args:
@@ -499,10 +515,10 @@ class _Walker:
 
     def add(self, kind: str, call: ci.Cursor, name: Value, type_: Value, handle: Value,
             default: Value | None = None, queue: Value | None = None, qos: tuple[tuple[str, str], ...] = (),
-            info_of: Value | None = None) -> None:
+            info_of: Value | None = None, *, param: ParamSpec | None = None) -> None:
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
-                self.add(kind, call, option, type_, handle, default, queue, qos)
+                self.add(kind, call, option, type_, handle, default, queue, qos, param=param)
             return
         loc, file = call.location, self.shown(call)
         self.port_calls.setdefault(call, []).append(kind)
@@ -515,7 +531,7 @@ class _Walker:
         conditions = self.param_conditions(call)
         self.result.ports.append(Port(kind, name, type_, file, loc.line, loc.column, handle, default, qos, queue,
                                       conditions[0] if conditions else None, info_of=info_of,
-                                      also=tuple(conditions[1:])))
+                                      also=tuple(conditions[1:]), param=param))
         if self.result.graph is not None and (function := self.functions.around(call)) is not None:
             self.result.graph.ports[(file, loc.line, loc.column)] = function
 

@@ -69,6 +69,9 @@ class LaunchConfig:
 
     nodes: list[LaunchNode] = field(default_factory=list)
     params: dict[str, tuple[object, Element]] = field(default_factory=dict)
+    # where the configuration sets parameters archlog cannot know (a parameter file or name not known
+    # statically, an element skipped), and why
+    params_unknown: list[tuple[Element, str]] = field(default_factory=list)
     scope_remaps: list[tuple[Element, str, str]] = field(default_factory=list)
 
 

@@ -228,6 +228,8 @@ class Ros1Loader:
 
     def _report(self, path: Path, el: etree._Element, exc: SubstitutionError | LaunchError) -> None:
         """The diagnostic for an element roslaunch would reject (or that depends on this machine)."""
+        if el.tag in ("param", "rosparam"):
+            self.config.params_unknown.append((self._element(path, el), f"<{el.tag}> skipped: {exc}"))
         if isinstance(exc, RefusedRead):
             self._diag(path, el, exc.code, f"<{el.tag}> skipped: {exc}", "warning")
         elif isinstance(exc, Unresolved):

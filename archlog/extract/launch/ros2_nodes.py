@@ -171,6 +171,7 @@ class Ros2Nodes:
                 except Unresolved as exc:
                     self.diag(replace(where, line=item.line), unresolved_code(exc, "launch-unknown"),
                               f"parameter skipped: {exc}")
+                    self.config.params_unknown.append((elem, f"parameter skipped: {exc}"))
                     continue
                 found.append(("", name, self._value(item.value, ctx, elem), elem))
         return found
@@ -201,11 +202,13 @@ class Ros2Nodes:
         except Unresolved as exc:
             self.diag(replace(where, line=source.line), unresolved_code(exc, "launch-unknown"), f"parameter file not "
                       f"known statically ({exc}); its parameters are not part of this configuration")
+            self.config.params_unknown.append((self.element(where.file, source.line), f"parameter file: {exc}"))
             return []
         if (refused := unreadable(path, "params")) is not None:
             missing = refused.code == "missing"
             self.diag(replace(where, line=source.line), "param-file" if missing else refused.code,
                       f"parameter file not found: {path}" if missing else f"parameter file skipped: {refused}")
+            self.config.params_unknown.append((self.element(where.file, source.line), f"parameter file {path}"))
             return []
         substitute = source.allow_substs if isinstance(source.allow_substs, bool) else \
             typed_bool(perform(source.allow_substs, ctx))

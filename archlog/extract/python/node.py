@@ -24,10 +24,11 @@ from archlog.extract.python.behavior.triggers import recover_behavior
 from archlog.extract.python.fold import Element, ValueFolder
 from archlog.extract.python.imports import Module, imported_calls, package_modules
 from archlog.extract.python.index import Function, arg
+from archlog.extract.python.parameters import ParamReader, declared_pair
 from archlog.extract.python.qos_profile import QosReader
 from archlog.extract.python.repair import REPAIR_LINES, NestedTooDeeply, parse_tolerant
 from archlog.extract.python.several import OUTSIDE, Nodes
-from archlog.extract.summary import NodeSummary, Port
+from archlog.extract.summary import NodeSummary, ParamSpec, Port
 from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Unknown, Value, concat
 
 # rospy-style constructors: qualified name -> (kind, keyword of the name, keyword of the type)
@@ -202,6 +203,7 @@ class NodeReader(ValueFolder):
         self.profiles = QosReader(self)
         self.notes: list[tuple[int, str, str, str]] = []  # diagnostics: line, code, message, severity
         self.seen: set[Port] = set()
+        self.params = ParamReader(tree, self.qualified, self.value)
 
     def run(self, only: set[str] | None = None) -> None:
         """Read the ROS calls of every scope (or only of the module's classes and functions named),
@@ -338,6 +340,8 @@ class NodeReader(ValueFolder):
         """One call: a rospy, rclpy, tf or actionlib API call adds its port or names the node."""
         func = self.qualified(call.func)
         method = call.func.attr if isinstance(call.func, ast.Attribute) else None
+        if not self.summary.params_dynamic and (why := self.params.dynamic(call, func, method, self.uses_rclpy())):
+            self.summary.params_dynamic = f"{self.file}:{call.lineno}: {why}"
         if func == "rospy.init_node":
             self.summary.ros = 1
             self.set_name(call, self.value(arg(call, 0, "name")))
@@ -356,7 +360,8 @@ class NodeReader(ValueFolder):
         elif func in _PARAM_READS and call.args:
             default = arg(call, 1, "default") if _PARAM_READS[func] else None
             self.add("param_read", call, self.value(call.args[0]), "",
-                     self.value(default) if default is not None else None)
+                     self.value(default) if default is not None else None,
+                     param=self.params.rospy_read(call) if func == "rospy.get_param" else None)
         elif func in _PARAM_WRITES and call.args:
             value = self.value(arg(call, 1, "param_value")) if func == "rospy.set_param" else "delete"
             self.add("param_write", call, self.value(call.args[0]), "", value)
@@ -394,9 +399,11 @@ class NodeReader(ValueFolder):
         if isinstance(target, ast.Name) and target.id == "self" and self.scope is not None and \
                 self.is_rclpy_node_class(self.scope.cls):
             return True
-        method = func.attr
-        uses_rclpy = any(v == "rclpy" or v.startswith("rclpy.") for v in self.aliases.values())
-        return uses_rclpy and method in _RCLPY_ONLY
+        return self.uses_rclpy() and func.attr in _RCLPY_ONLY
+
+    def uses_rclpy(self) -> bool:
+        """The module imports rclpy (or something of it)."""
+        return any(v == "rclpy" or v.startswith("rclpy.") for v in self.aliases.values())
 
     def rclpy_call(self, call: ast.Call, method: str) -> None:
         """An rclpy Node method: publishers, subscriptions, services, parameters, timers."""
@@ -412,17 +419,21 @@ class NodeReader(ValueFolder):
             name = self.value(call.args[0])
             default = arg(call, 1, "value") if method == "declare_parameter" else \
                 arg(call, 1, "alternative_value") if method == "get_parameter_or" else None
+            spec = self.params.declaration(call, default, arg(call, 2, "descriptor")) \
+                if method == "declare_parameter" else None
             if default is None and isinstance(name, str):
                 default = self.declared.get(name)
-            self.add("param_read", call, name, "", self.value(default) if default is not None else None, handle="~")
+            self.add("param_read", call, name, "", self.value(default) if default is not None else None, handle="~",
+                     param=spec)
         elif method == "declare_parameters":
             prefix = self.value(arg(call, 0, "namespace"))
             params = arg(call, 1, "parameters")
             for item in params.elts if isinstance(params, (ast.List, ast.Tuple)) else []:
-                pair = item.elts if isinstance(item, ast.Tuple) else [item]
-                name = self.value(pair[0])
+                name_expr, value, descriptor = declared_pair(item)
+                name = self.value(name_expr)
                 full = concat(prefix, ".", name) if prefix else name
-                self.add("param_read", call, full, "", self.value(pair[1]) if len(pair) > 1 else None, handle="~")
+                self.add("param_read", call, full, "", self.value(value) if value is not None else None, handle="~",
+                         param=self.params.declaration(call, value, descriptor))
         elif method == "create_timer":
             self.add("timer", call, self.value(arg(call, 0, "timer_period_sec")), "")
 
@@ -469,16 +480,18 @@ class NodeReader(ValueFolder):
         self.summary.name_file, self.summary.name_line = self.file, call.lineno
 
     def add(self, kind: str, call: ast.Call, name: Value, type_: Value, default: Value | None = None,
-            qos: tuple[tuple[str, str], ...] = (), queue: Value | None = None, handle: str = "") -> None:
+            qos: tuple[tuple[str, str], ...] = (), queue: Value | None = None, handle: str = "",
+            param: ParamSpec | None = None) -> None:
         """One port (once, however many times a loop walks its call); `handle` "~" for ROS 2
         parameters (node-private). Only a name may hold a list parameter's element, once."""
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
-                self.add(kind, call, option, type_, default, qos, queue, handle)
+                self.add(kind, call, option, type_, default, qos, queue, handle, param)
             return
         name, type_ = (name if _expandable(name) else _unlisted(name, call)), _unlisted(type_, call)
         default, queue = (_unlisted(v, call) if v is not None else None for v in (default, queue))
-        port = Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, handle, default, qos, queue)
+        port = Port(kind, name, type_, self.file, call.lineno, call.col_offset + 1, handle, default, qos, queue,
+                    param=param)
         if port not in self.seen:
             self.seen.add(port)
             self.summary.ports.append(port)

@@ -8,6 +8,7 @@ import clang.cindex as ci
 
 from archlog.extract.cpp.clang_ast import CursorKey
 from archlog.extract.cpp.result import FileResult
+from archlog.extract.summary import ParamSpec
 from archlog.values import Unknown, Value
 
 
@@ -28,4 +29,5 @@ class WalkContext(Protocol):
     def value(self, expr: ci.Cursor, depth: int = 0) -> Value: ...
     def unknown(self, cursor: ci.Cursor, why: str = "") -> Unknown: ...
     def add(self, kind: str, call: ci.Cursor, name: Value, type_: Value, handle: Value, default: Value | None = None,
-            queue: Value | None = None, qos: tuple[tuple[str, str], ...] = ()) -> None: ...
+            queue: Value | None = None, qos: tuple[tuple[str, str], ...] = (), *, param: ParamSpec | None = None
+            ) -> None: ...

@@ -55,6 +55,9 @@ class Nodes:
             self.ctx.result.diagnostics.append(Diagnostic(
                 self.ctx.shown(call), call.location.line, "cpp-several-nodes", f"this file creates several nodes "
                 f"({self.node_names[0]}, {value}); archlog reads them as one node named after the first", "note"))
+            self.ctx.result.params_dynamic = self.ctx.result.params_dynamic or \
+                f"{self.ctx.shown(call)}:{call.location.line}: the file creates several nodes, read as one: which " \
+                "parameters each declares is not known"
         self.node_names.append(value)
         if self.ctx.result.default_name is None:
             self.ctx.result.default_name = value

@@ -8,7 +8,32 @@ import clang.cindex as ci
 from archlog.extract.cpp.clang_ast import K, qualified, written_args
 from archlog.extract.cpp.rclcpp.api import NODE_CLASSES, PARAMETER_READS, object_of, parameter_helper
 from archlog.extract.cpp.rclcpp.context import WalkContext
+from archlog.extract.summary import ParamSpec
 from archlog.values import ParamRef, Value
+
+_INTEGERS = {"int", "long", "long long", "short", "unsigned int", "unsigned long", "unsigned long long",
+             "unsigned short", "signed char", "unsigned char"}
+_ARRAYS = {"bool": "bool_array", "integer": "integer_array", "double": "double_array", "string": "string_array"}
+# NodeOptions settings that make a node accept parameters it never declares, and reads of parameters by prefix
+_DYNAMIC_OPTIONS = ("allow_undeclared_parameters", "automatically_declare_parameters_from_overrides")
+_DYNAMIC_READS = ("get_parameters_by_prefix", "list_parameters")
+
+
+def cpp_param_type(spelling: str) -> str:
+    """The ROS 2 parameter type a C++ value type (canonical spelling) declares; "" when none does."""
+    bare = spelling.replace("const ", "").replace("&", "").strip()
+    if bare == "bool":
+        return "bool"
+    if bare in _INTEGERS:
+        return "integer"
+    if bare in ("double", "float"):
+        return "double"
+    if "basic_string<char" in bare or bare.startswith("char *") or bare.startswith("char["):
+        return "string"
+    if bare.startswith("std::vector<") and not bare.startswith("std::vector<std::vector"):
+        element = bare[len("std::vector<"):].split(",", 1)[0].rstrip(">").strip()
+        return "byte_array" if element == "unsigned char" else _ARRAYS.get(cpp_param_type(element), "")
+    return ""
 
 
 class Parameters:
@@ -44,6 +69,7 @@ class Parameters:
 
     def read(self, call: ci.Cursor, method: str, args: list[ci.Cursor]) -> None:
         name = self.ctx.value(args[0])
+        spec = self.declaration(call, args) if method == "declare_parameter" else None
         if method == "declare_parameter" and len(args) > 1 and "ParameterType" not in args[1].type.spelling:
             default: Value | None = self.ctx.value(args[1])
         elif method == "get_parameter_or" and len(args) > 1:
@@ -52,7 +78,7 @@ class Parameters:
             default = self.ctx.value(self.declared[name])
         else:
             default = None
-        self.ctx.add("param_read", call, name, "", "~", default)
+        self.ctx.add("param_read", call, name, "", "~", default, param=spec)
 
     def helper_read(self, call: ci.Cursor, helper: tuple[int, int | None], args: list[ci.Cursor]) -> None:
         """A parameter read through a wrapper of the API, with its default or the declaration's."""
@@ -60,7 +86,46 @@ class Parameters:
         given = args[default] if default is not None and default < len(args) else None
         pname = self.ctx.value(args[at])
         fallback = given if given is not None else self.declared.get(pname) if isinstance(pname, str) else None
-        self.ctx.add("param_read", call, pname, "", "~", self.ctx.value(fallback) if fallback is not None else None)
+        spec = ParamSpec(self._type_of(given), declared=True) if given is not None and \
+            call.referenced.spelling.startswith("declare") else None
+        self.ctx.add("param_read", call, pname, "", "~", self.ctx.value(fallback) if fallback is not None else None,
+                     param=spec)
+
+    def declaration(self, call: ci.Cursor, args: list[ci.Cursor]) -> ParamSpec:
+        """declare_parameter's type (of its default, its template argument or a ParameterType) and whether it
+        has a default at all."""
+        second = args[1].type.spelling if len(args) > 1 else ""
+        if "ParameterType" in second:
+            kind = next((t.spelling for t in args[1].get_tokens() if t.spelling.startswith("PARAMETER_")), "")
+            return ParamSpec(kind[len("PARAMETER_"):].lower() if kind != "PARAMETER_NOT_SET" else "", required=True,
+                             declared=True)
+        returned = cpp_param_type(call.type.get_canonical().spelling)
+        if len(args) < 2 or "ParameterDescriptor" in second:
+            return ParamSpec(returned, required=True, declared=True)
+        return ParamSpec(returned or self._type_of(args[1]), declared=True)
+
+    def _type_of(self, value: ci.Cursor) -> str:
+        """The parameter type of a default: its own type, or the one a ParameterValue is built from."""
+        spelling = value.type.get_canonical().spelling
+        if "ParameterValue" in spelling:
+            inner = [c for c in value.walk_preorder() if c.kind in (K.CALL_EXPR, K.CXX_FUNCTIONAL_CAST_EXPR)
+                     and "ParameterValue" in c.type.spelling and len(written_args(c)) == 1]
+            return cpp_param_type(written_args(inner[0])[0].type.get_canonical().spelling) if inner else ""
+        return cpp_param_type(spelling)
+
+    def dynamic(self, call: ci.Cursor, owner: str, name: str, args: list[ci.Cursor]) -> bool:
+        """NodeOptions().allow_undeclared_parameters(true) and the like, and reads of parameters by prefix:
+        the node's parameters are not all known; True when the call was one."""
+        if owner == "rclcpp::NodeOptions" and name in _DYNAMIC_OPTIONS and args and \
+                self.ctx.value(args[0]) not in ("false", "0"):
+            why = f"NodeOptions::{name}: the node accepts parameters it does not declare"
+        elif owner in NODE_CLASSES and (name in _DYNAMIC_READS or (name == "get_parameters" and len(args) == 2)):
+            why = f"{name}() reads parameters by names the code does not spell"
+        else:
+            return False
+        self.ctx.result.params_dynamic = self.ctx.result.params_dynamic or \
+            f"{self.ctx.shown(call)}:{call.location.line}: {why}"
+        return True
 
     def write(self, call: ci.Cursor, args: list[ci.Cursor]) -> None:
         """set_parameter(rclcpp::Parameter("name", value)) and set_parameters({...})."""

@@ -133,6 +133,8 @@ class RclcppWalker:
             self.constructed_ros2(call, owner, args, ref.semantic_parent)
         elif owner in NODE_CLASSES and name in PARAMETER_READS and args:
             self.parameters.read(call, name, args)
+        elif self.parameters.dynamic(call, owner, name, args):
+            pass
         elif (helper := parameter_helper(ref)) is not None and helper[0] < len(args):
             self.parameters.helper_read(call, helper, args)
         elif owner in NODE_CLASSES and name in PARAMETER_WRITES and args:
