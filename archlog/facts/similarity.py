@@ -164,7 +164,14 @@ class _Words:
             found.sort()
 
     def _compare(self, words: list[str], rows: list[int], columns: list[int], cutoff: int) -> None:
-        """Record the words of `columns` within `cutoff` of each word of `rows`."""
+        """Record the words of `columns` within `cutoff` of each word of `rows` (a few at a time
+        directly, many in blocks)."""
+        if len(rows) * len(columns) < 256:
+            for a in rows:
+                for b in columns:
+                    if a != b and (found := DamerauLevenshtein.distance(words[a], words[b], score_cutoff=cutoff)) <= cutoff:
+                        self.near[a].append((b, float(found)))
+            return
         targets = [words[b] for b in columns]
         for start in range(0, len(rows), 1024):
             block = process.cdist([words[a] for a in rows[start:start + 1024]], targets,
