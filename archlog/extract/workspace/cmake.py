@@ -79,7 +79,8 @@ class _Tokenizer:
     after it; one never closed is read as an unquoted argument (a comment: to the end of the line).
     The search for a closer is remembered per number of `=` (and paid for in characters), and a
     quote that finds no end means no later quote does, so hostile text with many openers that never
-    close is read in linear time."""
+    close is read in linear time. A search the budget cannot pay for is refused without spending,
+    so that the commands before it still run."""
 
     def __init__(self, text: str) -> None:
         self.text = text
@@ -126,7 +127,7 @@ class _Tokenizer:
         searched, found = self.closers.get(eq, (len(self.text) + 1, -1))
         if not searched <= pos <= (found if found >= 0 else len(self.text)):
             found = self.text.find(f"]{eq}]", pos)
-            budget.spend("characters", (found if found >= 0 else len(self.text)) - pos)
+            budget.charge("characters", (found if found >= 0 else len(self.text)) - pos)
             self.closers[eq] = (pos, found)
         return found + len(eq) + 2 if found >= 0 else -1
 
