@@ -111,9 +111,12 @@ class _Tokenizer:
         head, start = m.group(0), m.start()
         if m.group("eq") is not None:
             end = self._closer(m.group("eq"), m.end())
-            return end if end >= 0 else (_COMMENT if head[0] == "#" else _UNQUOTED).match(self.text, start).end()
+            if end >= 0:
+                return end
+            rest = (_COMMENT if head[0] == "#" else _UNQUOTED).match(self.text, start)
+            return rest.end() if rest else m.end()  # both match wherever an opener does
         if head == "#":
-            return _COMMENT.match(self.text, start).end()
+            return m.end() + len(self.text[m.end():].partition("\n")[0])
         if head == '"':
             quoted = _QUOTED.match(self.text, start) if start < self.quotes_from else None
             if quoted is None:
