@@ -1,4 +1,4 @@
-"""One budget for everything that expands: launch elements and includes, characters of expanded
+"""One budget for everything that expands: launch elements and includes, node instances, characters of expanded
 strings, evaluation steps, alternatives of a value. Each unit of input (a launch configuration, a
 source file, a parameter file, a robot description) spends from a fresh `scope()`; crossing a limit
 raises `BudgetExceeded`, which the reader turns into a `budget-exceeded` diagnostic at the place
@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 LIMITS = {
     "elements": 200_000,      # launch/xacro/YAML elements produced by one unit (after includes, macros)
+    "nodes": 25_000,          # node instances one launch configuration starts
     "characters": 20_000_000, # characters of strings built by expansion in one unit
     "steps": 2_000_000,       # evaluation steps ($(eval), xacro ${}, Python launch files, C++ walks)
     "alternatives": 4_096,    # alternative values one expression may stand for

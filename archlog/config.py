@@ -17,7 +17,7 @@
     ROBOT_NAME = "r2"                 # --env NAME=VALUE adds or overrides; no other variable of the
                                       # machine is read but ROS_DISTRO, ROS_VERSION, ROS_PYTHON_VERSION
     [budget]                          # expansion limits per unit of input (archlog.budget.LIMITS)
-    elements = 500000                 # keys: elements, characters, steps, alternatives, depth
+    elements = 500000                 # keys: elements, nodes, characters, steps, alternatives, depth
     operators = ["rviz2", "teleop2"]  # operator tools outside the launch files that feed topics
                                       # (archlog/models/operators/; docs/models.md)
     [systems.nav]                     # `archlog check --system nav`: a named system configuration

@@ -33,6 +33,9 @@ CODES: dict[str, Code] = {
                               "Remove or ignore (CATKIN_IGNORE) the copy."),
         "plugin-xml": ("warning", "A plugin description file named in package.xml cannot be read.",
                        "Check the export's plugin= path."),
+        "cmake-subdirectory": ("warning", "An add_subdirectory() names a folder whose CMakeLists.txt is being read (its "
+                               "own folder or a parent); CMake refuses it, and it is skipped.",
+                               "Remove the add_subdirectory()."),
         "setup-cfg": ("warning", "setup.cfg does not parse; its entry points are unknown.", "Fix its syntax."),
         "setup-py": ("warning", "setup.py does not parse; its entry points are unknown.",
                      "Fix its syntax (it is read, never run)."),

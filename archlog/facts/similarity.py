@@ -149,16 +149,37 @@ class _Words:
         self.budget = min(budget, _MAX_WORD_EDITS + 1)
         self.number = [word.isdigit() for word in words]
         self.near: dict[int, list[tuple[int, float]]] = defaultdict(list)
-        numbers = [_NUMBER.findall(word) for word in words]
         cutoff = max(0, math.ceil(self.budget) - 1)
-        for start in range(0, len(words) if cutoff else 0, 1024):
-            block = process.cdist(words[start:start + 1024], words, scorer=DamerauLevenshtein.distance,
-                                  score_cutoff=cutoff, dtype=np.int32, workers=-1)
+        groups: dict[tuple[str, ...], list[int]] = defaultdict(list)
+        for k, word in enumerate(words):
+            if cutoff and not self.number[k]:
+                groups[tuple(_NUMBER.findall(word))].append(k)
+        plain = groups.pop((), [])
+        # only words of the same numbers, or without any, are compared: with many numbered words
+        # (one per instance) this is linear where comparing all of them is quadratic
+        for members in groups.values():
+            self._compare(words, members, members + plain, cutoff)
+        self._compare(words, plain, sorted(k for members in (plain, *groups.values()) for k in members), cutoff)
+        for found in self.near.values():
+            found.sort()
+
+    def _compare(self, words: list[str], rows: list[int], columns: list[int], cutoff: int) -> None:
+        """Record the words of `columns` within `cutoff` of each word of `rows` (a few at a time
+        directly, many in blocks)."""
+        if len(rows) * len(columns) < 256:
+            for a in rows:
+                for b in columns:
+                    if a != b and (found := DamerauLevenshtein.distance(words[a], words[b], score_cutoff=cutoff)) <= cutoff:
+                        self.near[a].append((b, float(found)))
+            return
+        targets = [words[b] for b in columns]
+        for start in range(0, len(rows), 1024):
+            block = process.cdist([words[a] for a in rows[start:start + 1024]], targets,
+                                  scorer=DamerauLevenshtein.distance, score_cutoff=cutoff, dtype=np.int32,
+                                  workers=-1)
             for a, b in zip(*np.nonzero(block <= cutoff)):
-                mine, theirs = numbers[start + a], numbers[b]
-                if start + a != b and not (mine and theirs and mine != theirs) and not (
-                        self.number[start + a] or self.number[b]):
-                    self.near[int(start + a)].append((int(b), float(block[a, b])))
+                if rows[start + a] != columns[b]:
+                    self.near[rows[start + a]].append((columns[b], float(block[a, b])))
 
 
 def _candidates(measure: _Measure, members: list[int], asked: list[int], budgets: dict[int, tuple[float, float]],

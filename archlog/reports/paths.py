@@ -47,6 +47,7 @@ class Rebase:
     def __init__(self, roots: list[Path], root: Path) -> None:
         self.bases = [r if r.is_dir() else r.parent for r in roots]
         self.root = root
+        self.rebased: dict[str, str] = {}  # a report names few files, many times
 
     def absolute(self, file: str) -> Path:
         if not file or os.path.isabs(file):
@@ -60,8 +61,11 @@ class Rebase:
     def __call__(self, file: str) -> str:
         if not file:
             return file
-        path = self.absolute(file)
-        return path.relative_to(self.root).as_posix() if path.is_relative_to(self.root) else path.as_posix()
+        if file not in self.rebased:
+            path = self.absolute(file)
+            self.rebased[file] = path.relative_to(self.root).as_posix() if path.is_relative_to(self.root) \
+                else path.as_posix()
+        return self.rebased[file]
 
     def location(self, loc: Location) -> Location:
         return replace(loc, file=self(loc.file))

@@ -22,7 +22,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from archlog import names
+from archlog import budget, names
 from archlog.extract.files import unreadable
 from archlog.extract.launch.model import Element, LaunchError, LaunchNode, SubstitutionError, UnknownArg, include_cycle
 from archlog.extract.launch.ros1_params import Ros1Params
@@ -152,6 +152,7 @@ class LaunchInterpreter(Ros1Params):
                                f"<include>: unused arg '{name}': {target.name} does not declare it")
 
     def _tag_node(self, path: Path, el: etree._Element, scope: _Scope, is_test: bool = False) -> None:
+        budget.spend("nodes")
         for attr in el.attrib:
             if attr not in NODE_ATTRS and not (is_test and attr in TEST_ONLY_ATTRS):
                 self._diag(path, el, "launch-attr", f"unknown <{el.tag}> attribute '{attr}'", "warning")

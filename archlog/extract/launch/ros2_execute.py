@@ -322,6 +322,7 @@ class Ros2Launch(Ros2Nodes):
 
     # -- nodes and components -------------------------------------------------------------
     def _node(self, action: Node, ctx: Context) -> None:
+        budget.spend("nodes")
         pkg = perform(action.pkg, ctx) if action.pkg is not None else ""
         exe = perform(action.exe, ctx)
         elem = self.element(action.where.file, action.where.line)

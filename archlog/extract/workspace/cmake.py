@@ -13,10 +13,12 @@ from dataclasses import dataclass
 
 from archlog import budget
 
-_TOKEN = re.compile(
-    r'#\[(?P<eq>=*)\[.*?\](?P=eq)\]|#[^\n]*|"(?:\\.|[^"\\])*"|\[(?P<beq>=*)\[.*?\](?P=beq)\]|[()]|[^\s()#"]+',
-    re.S,
-)
+# where a token starts: a bracket argument or comment opener, a comment, a quote, a parenthesis or an
+# unquoted argument; bracket and quoted tokens are ended by `_Tokenizer` so that reading stays linear
+_START = re.compile(r'#?\[(?P<eq>=*)\[|#|"|[()]|[^\s()#"]+')
+_COMMENT = re.compile(r"#[^\n]*")
+_UNQUOTED = re.compile(r'[^\s()#"]+')
+_QUOTED = re.compile(r'"(?:\\.|[^"\\])*"', re.S)
 _VAR = re.compile(r"\$\{(\w+)\}")
 
 
@@ -61,7 +63,10 @@ def commands(text: str, variables: dict[str, str] | None = None,
     result: list[Command] = []
     try:
         with budget.scope():
-            _run(_parse(text), variables, result, {}, None)
+            raws, stopped = _parse(text)
+            _run(raws, variables, result, {}, None)
+            if stopped is not None:
+                raise stopped
     except _Stopped as stop:
         if on_budget is None:
             raise stop.exceeded from None
@@ -69,20 +74,70 @@ def commands(text: str, variables: dict[str, str] | None = None,
     return result
 
 
-def _tokens(text: str) -> list[tuple[str, int]]:
-    """(token, line) of every token but comments; lines are counted from the previous token, so
-    reading is linear in the text."""
-    tokens, line, counted = [], 1, 0
-    for m in _TOKEN.finditer(text):
-        line += text.count("\n", counted, m.start())
-        counted = m.start()
-        if not m.group(0).startswith("#"):
-            tokens.append((m.group(0), line))
-    return tokens
+class _Tokenizer:
+    """The tokens of a CMake text. A bracket `[==[` (or comment `#[==[`) ends at the first `]==]`
+    after it; one never closed is read as an unquoted argument (a comment: to the end of the line).
+    The search for a closer is remembered per number of `=` (and paid for in characters), and a
+    quote that finds no end means no later quote does, so hostile text with many openers that never
+    close is read in linear time. A search the budget cannot pay for is refused without spending,
+    so that the commands before it still run."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.closers: dict[str, tuple[int, int]] = {}  # '=' run: (searched from, found at or -1)
+        self.quotes_from = len(text) + 1  # from here on, no quote closes
+
+    def tokens(self) -> tuple[list[tuple[str, int]], _Stopped | None]:
+        """(token, line) of every token but comments; lines are counted from the previous token.
+        When the budget runs out, the tokens before and where it stopped."""
+        text, tokens, line, counted, pos = self.text, list[tuple[str, int]](), 1, 0, 0
+        try:
+            while (m := _START.search(text, pos)) is not None:
+                line += text.count("\n", counted, m.start())
+                counted = m.start()
+                end = self._end(m)
+                if end is None:
+                    pos = m.start() + 1  # a quote never closed: skipped
+                    continue
+                if text[m.start()] != "#":
+                    tokens.append((text[m.start():end], line))
+                pos = end
+        except budget.BudgetExceeded as exc:
+            return tokens, _Stopped(line, exc)
+        return tokens, None
+
+    def _end(self, m: re.Match[str]) -> int | None:
+        """Where the token starting at `m` ends (None: a quote that does not close)."""
+        head, start = m.group(0), m.start()
+        if m.group("eq") is not None:
+            end = self._closer(m.group("eq"), m.end())
+            if end >= 0:
+                return end
+            rest = (_COMMENT if head[0] == "#" else _UNQUOTED).match(self.text, start)
+            return rest.end() if rest else m.end()  # both match wherever an opener does
+        if head == "#":
+            return m.end() + len(self.text[m.end():].partition("\n")[0])
+        if head == '"':
+            quoted = _QUOTED.match(self.text, start) if start < self.quotes_from else None
+            if quoted is None:
+                self.quotes_from = min(self.quotes_from, start)
+                return None
+            return quoted.end()
+        return m.end()
+
+    def _closer(self, eq: str, pos: int) -> int:
+        """The end of the first `]eq]` at or after `pos`, or -1."""
+        searched, found = self.closers.get(eq, (len(self.text) + 1, -1))
+        if not searched <= pos <= (found if found >= 0 else len(self.text)):
+            found = self.text.find(f"]{eq}]", pos)
+            budget.charge("characters", (found if found >= 0 else len(self.text)) - pos)
+            self.closers[eq] = (pos, found)
+        return found + len(eq) + 2 if found >= 0 else -1
 
 
-def _parse(text: str) -> list[_Raw]:
-    tokens = _tokens(text)
+def _parse(text: str) -> tuple[list[_Raw], _Stopped | None]:
+    """The commands of a text, and where the budget stopped reading it (None: it did not)."""
+    tokens, stopped = _Tokenizer(text).tokens()
     raws, i = [], 0
     while i < len(tokens):
         name, line = tokens[i]
@@ -100,7 +155,7 @@ def _parse(text: str) -> list[_Raw]:
             i = j
         else:
             i += 1
-    return raws
+    return raws, stopped
 
 
 def _run(raws: Sequence[_Raw], variables: dict[str, str], out: list[Command],

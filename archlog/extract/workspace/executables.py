@@ -58,7 +58,7 @@ class ExecutableFinder:
         self._components(package)
 
     def _cmake_executables(self, package: Package) -> None:
-        self._cmake_dir(package, package.path, {"CMAKE_CURRENT_SOURCE_DIR": str(package.path)}, depth=0)
+        self._cmake_dir(package, package.path, {"CMAKE_CURRENT_SOURCE_DIR": str(package.path)}, {}, depth=0)
         self._linked_sources(package)
 
     def _linked_sources(self, package: Package) -> None:
@@ -91,12 +91,31 @@ linked ones count only where the executable's own code reaches them (extract/cpp
                 named_words |= words.with_headers(named)
             exe.sources += exe.linked
 
-    def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], depth: int,
+    def _cmake_dir(self, package: Package, folder: Path, variables: dict[str, str], read: dict[Path, bool], depth: int,
                    asker: tuple[Path, int] | None = None) -> None:
         """Read one CMakeLists.txt (named at `asker`: an add_subdirectory() line); its
-        add_subdirectory() folders inherit a copy of the variables."""
+        add_subdirectory() folders inherit a copy of the variables. A folder is read once per
+        package (`read`, folders whose reading is under way map to True): reading it again would
+        multiply the work with every repetition; one that adds itself, directly or through its
+        subfolders, is reported (CMake refuses it)."""
         cmake = folder / "CMakeLists.txt"
-        if not cmake.is_file() or depth > 8 or (text := self.read(cmake, "build", asker)) is None:
+        if not cmake.is_file() or depth > 8:
+            return
+        real = folder.resolve()
+        if real in read:
+            if read[real] and asker is not None:
+                self.diagnostics.add(self.display(asker[0]), asker[1], "cmake-subdirectory",
+                                     f"add_subdirectory() of {self.display(folder)}, a folder being read; skipped",
+                                     "warning")
+            return
+        read[real] = True
+        self._cmake_file(package, folder, cmake, variables, read, depth, asker)
+        read[real] = False
+
+    def _cmake_file(self, package: Package, folder: Path, cmake: Path, variables: dict[str, str],
+                    read: dict[Path, bool], depth: int, asker: tuple[Path, int] | None) -> None:
+        """Read the CMakeLists.txt of `folder`: its targets, sources, links and subfolders."""
+        if (text := self.read(cmake, "build", asker)) is None:
             return
         variables = {**variables, "CMAKE_CURRENT_SOURCE_DIR": str(folder)}
         cmds = commands(text, variables, lambda line, message: self.diagnostics.add(
@@ -130,7 +149,7 @@ linked ones count only where the executable's own code reaches them (extract/cpp
                 package.include_dirs += [_under(folder, a) for a in c.args if a not in ("SYSTEM", "BEFORE", "AFTER")
                                          and "$" not in a]
             elif c.name == "add_subdirectory" and c.args:
-                self._cmake_dir(package, _under(folder, c.args[0]), variables, depth + 1, (cmake, c.line))
+                self._cmake_dir(package, _under(folder, c.args[0]), variables, read, depth + 1, (cmake, c.line))
             elif c.name in ("catkin_install_python", "install") and "PROGRAMS" in c.args:
                 for arg in c.args[c.args.index("PROGRAMS") + 1:]:
                     if arg == "DESTINATION":

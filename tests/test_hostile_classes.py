@@ -1,0 +1,99 @@
+"""Hostile inputs that grow with a size (tests/support/hostile_classes.py): each class is read in
+time that grows no faster than the input, or grows until the budget stops it with a
+`budget-exceeded` diagnostic at the file:line that crossed it, the rest still read."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+from support import hostile_classes as hostile
+
+from archlog import budget
+from archlog.diagnostics import DiagnosticSink
+from archlog.extract.launch.ros1 import LaunchInterpreter
+from archlog.extract.workspace.cmake import commands
+from archlog.extract.workspace.index import Workspace
+from archlog.facts.similarity import near_names
+
+
+def _cmake(files: hostile.Files) -> str:
+    return files["demo/CMakeLists.txt"]
+
+
+@pytest.mark.parametrize("generate", [hostile.cmake_brackets, hostile.cmake_bracket_comments])
+def test_brackets_that_never_close_are_read_in_linear_time(generate: Callable[[int], hostile.Files]) -> None:
+    seconds = {}
+    for count in (2_000, 20_000, 100_000):
+        begin = time.process_time()
+        found = commands(_cmake(generate(count)))
+        seconds[count] = time.process_time() - begin
+        assert [c.name for c in found].count("set") == count  # each opener read as CMake's reader would
+    assert seconds[100_000] < 5.0 and seconds[100_000] < 200 * max(seconds[2_000], 0.01), seconds
+
+
+def test_bracket_levels_that_never_close_stop_at_the_character_budget() -> None:
+    """Openers of ever more `=`, none closed: each level is searched for once, and the searches are
+    paid for; more levels than the budget pays for stop at the line of the opener that crossed it."""
+    crossed: list[int] = []
+    for levels in (10, 100, 1_000):
+        text = "project(demo)\n" + "".join(f"set(A{k} [{'=' * k}[x)\n" for k in range(1, levels + 1))
+        with budget.active({"characters": 1_000_000}):
+            found = commands(text, on_budget=lambda line, _message: crossed.append(line))
+        if crossed:
+            break
+        assert len(found) == levels + 1
+    assert levels == 1_000 and crossed and 2 <= crossed[0] <= levels + 1 and len(found) < levels + 1
+
+
+def test_a_folder_adding_itself_is_read_once(tmp_path: Path) -> None:
+    hostile.write(tmp_path, hostile.cmake_self_subdirectory(10))
+    sink = DiagnosticSink()
+    begin = time.process_time()
+    workspace = Workspace([tmp_path], sink)
+    assert time.process_time() - begin < 2.0
+    assert workspace.executable("demo", "node") is not None
+    lines = {d.line for d in sink.items if d.code == "cmake-subdirectory"}
+    assert lines == set(range(5, 15)), lines  # every add_subdirectory(.) of the file, each skipped
+
+
+def _launch(root: Path, files: hostile.Files, limits: dict[str, int]) -> tuple[int, list[tuple[str, int]]]:
+    """The node count and the budget-exceeded diagnostics of the workspace's launch file."""
+    hostile.write(root, files)
+    sink = DiagnosticSink()
+    with budget.active(limits):
+        config = LaunchInterpreter(Workspace([root], sink), sink).load([root / hostile.launch_of(files)], {})
+    return len(config.nodes), [(Path(d.file).name, d.line) for d in sink.items if d.code == "budget-exceeded"]
+
+
+def test_a_python_dag_of_actions_grows_until_the_node_budget_stops_it(tmp_path: Path) -> None:
+    for levels in range(2, 41, 3):
+        count, crossed = _launch(tmp_path / str(levels), hostile.python_dag(levels), {"nodes": 1_000})
+        if 2 ** levels <= 1_000:
+            assert (count, crossed) == (2 ** levels, [])
+        else:
+            assert count == 1_000 and crossed == [("demo.launch.py", 7)]  # the Node action that crossed
+            break
+    assert levels == 11
+
+
+def test_remapped_nodes_grow_until_the_node_budget_stops_them(tmp_path: Path) -> None:
+    for nodes in (100, 400, 1_600):
+        count, crossed = _launch(tmp_path / str(nodes), hostile.ros1_remapped(nodes), {"nodes": 1_000})
+        if nodes <= 1_000:
+            assert (count, crossed) == (nodes, [])
+    assert count == 1_000 and crossed == [("demo.launch", 2 + 4 * 1_000)]  # the first node past the limit
+
+
+def test_near_names_of_many_numbered_instances_take_linear_time() -> None:
+    """Names of one node per namespace (two numbered segments each, all distinct): words of different
+    numbers are never near, so they are never compared."""
+    seconds = {}
+    for count in (500, 5_000):
+        names = [f"/s{i}/n{i}/chatter" for i in range(count)] + [f"/out/c{i}" for i in range(count)]
+        begin = time.process_time()
+        assert near_names(names, names) == []
+        seconds[count] = time.process_time() - begin
+    assert seconds[5_000] < 5.0, seconds
