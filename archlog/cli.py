@@ -131,7 +131,8 @@ def main() -> None:
 @click.option("--write-baseline", type=click.Path(dir_okay=False, path_type=Path),
               help="Record the current findings as the baseline.")
 @click.option("--fail-on-incomplete", is_flag=True,
-              help="Also exit 1 when a node is only partially recovered or opaque (no model or source).")
+              help="Also exit 1 when a node is only partially recovered or opaque (no model or source), or a "
+                   "part of the launch configuration was not read (an include skipped, an action not interpreted).")
 @click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
           source_root_dir, output, fail_on, baseline, write_baseline, fail_on_incomplete, quiet) -> None:
@@ -142,7 +143,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     from archlog.reports.codequality import to_codequality
     from archlog.reports.json_report import to_json
     from archlog.reports.paths import Rebase, source_root
-    from archlog.reports.report import Report, coverage
+    from archlog.reports.report import Report, coverage, holes
     from archlog.reports.sarif import to_sarif
     from archlog.reports.suppress import apply_suppressions, read_baseline
     from archlog.reports.suppress import write_baseline as write_baseline_file
@@ -164,7 +165,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     if write_baseline:
         write_baseline_file(findings, write_baseline)
     report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused), config.adjust(ruleset.rules),
-                    root, Report.node_origins(analysis.store), coverage(analysis.store))
+                    root, Report.node_origins(analysis.store), coverage(analysis.store), holes(analysis.store))
     report = Rebase(analysis.workspace.roots, source_root(root, source_root_dir)).report(report)
     if fmt == "concise":
         with output.open("w", encoding="utf-8") if output else nullcontext(sys.stdout) as stream:

@@ -82,4 +82,5 @@ class Rebase:
                        diagnostics=[self.diagnostic(d) for d in report.diagnostics],
                        origins={node: [(self.location(loc), text) for loc, text in chain]
                                 for node, chain in report.origins.items()},
-                       coverage=[self.coverage(c) for c in report.coverage])
+                       coverage=[self.coverage(c) for c in report.coverage],
+                       holes=[(why, self(file), line) for why, file, line in report.holes])

@@ -70,6 +70,7 @@ class LaunchConfig:
     nodes: list[LaunchNode] = field(default_factory=list)
     params: dict[str, tuple[object, Element]] = field(default_factory=dict)
     scope_remaps: list[tuple[Element, str, str]] = field(default_factory=list)
+    holes: list[tuple[str, int, str]] = field(default_factory=list)  # (file, line, why): parts not read
 
 
 class SubstitutionError(Exception):
