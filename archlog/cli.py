@@ -162,7 +162,8 @@ def main() -> None:
 @click.option("--base", "base_ref", default="HEAD", show_default=True, metavar="REF",
               help="With --new-only: the git revision the change is compared with.")
 @click.option("--fail-on-incomplete", is_flag=True,
-              help="Also exit 1 when a node is only partially recovered or opaque (no model or source).")
+              help="Also exit 1 when a node is only partially recovered or opaque (no model or source), or a "
+                   "part of the launch configuration was not read (an include skipped, an action not interpreted).")
 @click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
 @click.option("--fix", "fix", is_flag=True, help="Apply the safe fixes (remaps in launch files) and report what remains.")
 @click.option("--unsafe-fixes", is_flag=True, help="With --fix or --diff: the fixes that may change the meaning too.")
@@ -180,7 +181,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     from archlog.reports.json_report import to_json
     from archlog.reports.paths import Rebase, source_root
     from archlog.reports.relocate import relocate, shipped
-    from archlog.reports.report import Report, coverage
+    from archlog.reports.report import Report, coverage, holes
     from archlog.reports.sarif import to_sarif
     from archlog.reports.suppress import apply_suppressions, read_baseline, stale_baseline
     from archlog.reports.suppress import write_baseline as write_baseline_file
@@ -218,7 +219,8 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
         written = write_baseline_file(findings, write_baseline)
         click.echo(f"archlog: wrote {written} finding{'s' if written != 1 else ''} to {write_baseline}", err=True)
     report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused), config.adjust(ruleset.rules),
-                    root, Report.node_origins(analysis.store), coverage(analysis.store), labels, hidden)
+                    root, Report.node_origins(analysis.store), coverage(analysis.store), labels, hidden,
+                    holes(analysis.store))
     report = rebase.report(report)
     if fmt == "concise":
         with output.open("w", encoding="utf-8") if output else nullcontext(sys.stdout) as stream:

@@ -112,3 +112,41 @@ def test_a_macro_that_drops_its_argument_does_not_stop_the_nesting_check() -> No
     text = "#define DROP(x) 0\n#define F(x) x x\nint a = DROP(F(1)) + F(2);\nint b = " + "F(" * 40 + "1" + ")" * 40 + ";\n"
     assert nested_calls([(path, text[: text.index("int b")])], defines(path, text)) is None
     assert nested_calls([(path, text)], defines(path, text)) == (path, 4, "F")
+
+
+def test_a_launch_part_not_read_makes_the_report_partial(tmp_path: Path) -> None:
+    # a while loop, an include of a missing file, and an action whose value is not known: each one
+    # is counted in the recovery summary at its file:line, and --fail-on-incomplete fails on them
+    pkg = tmp_path / "src" / "bringup"
+    (pkg / "launch").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package format='3'><name>bringup</name><version>1.0.0</version>"
+                                     "<description>d</description><maintainer email='a@example.com'>a</maintainer>"
+                                     "<license>MIT</license><buildtool_depend>ament_cmake</buildtool_depend>"
+                                     "</package>\n")
+    (pkg / "launch" / "holes.launch.py").write_text(
+        "import os\n"
+        "from launch import LaunchDescription\n"
+        "from launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        "def generate_launch_description():\n"
+        "    actions = []\n"
+        "    while len(actions) < 2:\n"
+        "        actions.append(None)\n"
+        "    return LaunchDescription([\n"
+        "        IncludeLaunchDescription(PythonLaunchDescriptionSource('/nowhere/missing.launch.py')),\n"
+        "    ])\n")
+    launch = "src/bringup/launch/holes.launch.py"
+    run = lambda *args: subprocess.run([sys.executable, "-m", "archlog", "check", str(tmp_path), "--launch",  # noqa: E731
+                                        "bringup/launch/holes.launch.py",
+                                        "--source-root", str(tmp_path), *args],
+                                       capture_output=True, text=True, cwd=ROOT, timeout=300)
+    document = json.loads(run("--format", "json").stdout)
+    jsonschema.validate(document, JSON_SCHEMA)
+    holes = document["coverage"]["holes"]
+    assert [(h["file"], h["line"]) for h in holes] == [(launch, 7), (launch, 10)]
+    assert "while loop" in holes[0]["message"] and "missing.launch.py" in holes[1]["message"]
+    text = run().stdout
+    assert "2 parts of the configuration not read" in text
+    assert f"not read: {holes[0]['message']} ({launch}:7)" in text
+    assert run("--fail-on", "never").returncode == 0
+    assert run("--fail-on", "never", "--fail-on-incomplete").returncode == 1

@@ -69,6 +69,11 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
         if summary.incomplete:
             store.add("node_incomplete", node.name, summary.incomplete)
         _instance(store, node, summary, config, following)
+    for index, (file, line, why) in enumerate(config.holes, 1):
+        store.add("launch_hole", f"h{index}", why)
+        store.locate(f"h{index}", file, line)
+    for port in system.outside:
+        store.add("outside_port", port.kind, port.name, port.type, port.provider)
     add_followed(store, following)
     _param_topics(store, system)
     add_parameters(store, system)

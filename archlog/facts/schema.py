@@ -57,6 +57,14 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("configuration", "standalone", "A node instance of the configuration without a launch file (every executable "
          "once, each started by itself): which of them run together is not known.",
          ("elem", "id", "the node's element")),
+    _rel("configuration", "launch_hole", "A part of the configuration archlog could not read (an include skipped, a "
+         "launch action not interpreted or skipped): the nodes it starts are not known; the report is partial.",
+         ("hole", "id", "its id; `location` gives the launch file and line"), ("reason", "str", "why")),
+    _rel("configuration", "outside_port", "A name a modelled executable the configuration does not run would provide "
+         "(system/outside.py): a package the configuration runs depends on it, or, without a launch file, any.",
+         ("kind", "str", "publisher, service_server or action_server"), ("name", "name", "resolved under its default "
+         "node name in the root namespace"), ("type", "str", "its type, in each ROS version's spelling"),
+         ("provider", "str", "package/executable")),
     _rel("configuration", "node_name_unknown", "A node instance whose name is not known statically (neither the "
          "launch file nor the code gives one archlog can read): the executable's name stands in for it.",
          ("elem", "id", "the node's element")),
@@ -313,6 +321,9 @@ DERIVED: tuple[Relation, ...] = (
              ("count", "int", "the number of opaque nodes")),
     _derived(_PRELUDE, "uncertain_port", "The port (and its node) of a finding of AL103, AL104, AL201, AL203 or AL601, "
              "whose message names the opaque nodes it still depends on.", _PORT, _NODE),
+    _derived(_PRELUDE, "outside_by", "A subscriber or client whose counterpart only a modelled node outside the "
+             "configuration would provide (outside_port), and that node (AL106's `providers` list).",
+             _PORT, ("provider", "str", "package/executable")),
     _derived(_PRELUDE, "unfed", "A subscriber whose topic nothing publishes, nor might publish (no publisher with an "
              "unknown name of a compatible type, no opaque node that might use the topic).", _SUB, _NODE,
              ("topic", "name", "the topic")),

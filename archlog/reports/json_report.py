@@ -54,6 +54,7 @@ def to_json(report: Report) -> str:
                  "reasons": [{"message": why, "file": file, "line": line} for why, file, line in c.reasons]}
                 for c in report.coverage
             ],
+            "holes": [{"message": why, "file": file, "line": line} for why, file, line in report.holes],
         },
     }
     return json.dumps(document, indent=2) + "\n"

@@ -88,4 +88,5 @@ class Rebase:
                                 for node, chain in report.origins.items()},
                        coverage=[self.coverage(c) for c in report.coverage],
                        labels={(self(file), line, column): text
-                               for (file, line, column), text in report.labels.items()})
+                               for (file, line, column), text in report.labels.items()},
+                       holes=[(why, self(file), line) for why, file, line in report.holes])

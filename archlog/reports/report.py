@@ -62,6 +62,15 @@ def coverage(store) -> list[NodeCoverage]:
     return result
 
 
+def holes(store) -> list[tuple[str, str, int]]:
+    """The parts of the configuration not read (launch_hole), as (why, file, line)."""
+    found = []
+    for hole, why in store.rows("launch_hole"):
+        file, line, _column = store.location(str(hole)) or ("", 0, 0)
+        found.append((str(why), file, line))
+    return sorted(found, key=lambda h: (h[1], h[2], h[0]))
+
+
 @dataclass
 class Report:
     findings: list[Finding]
@@ -76,6 +85,7 @@ class Report:
     def label(self, loc: Location, default: str = "the other side") -> str:
         """What a related location of a finding is: the model a finding was moved from, else `default`."""
         return self.labels.get((loc.file, loc.line, loc.column), default)
+    holes: list[tuple[str, str, int]] = field(default_factory=list)  # (why, file, line): launch parts not read
 
     @staticmethod
     def node_origins(store) -> dict[str, list[tuple[Location, str]]]:
@@ -101,7 +111,7 @@ class Report:
 
     @property
     def incomplete(self) -> bool:
-        return any(c.status != "recovered" for c in self.coverage)
+        return bool(self.holes) or any(c.status != "recovered" for c in self.coverage)
 
     @property
     def suppressed(self) -> int:

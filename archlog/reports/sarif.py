@@ -103,6 +103,10 @@ def to_sarif(report: Report) -> str:
             if file:
                 notification["locations"] = [{"physicalLocation": _physical(Location(file, line, 0), report.root)}]
             notifications.append(notification)
+    notifications += [{"level": "note", "message": {"text": f"part of the configuration not read: {why}"},
+                       "descriptor": {"id": "recovery-hole"},
+                       "locations": [{"physicalLocation": _physical(Location(file, line, 0), report.root)}]}
+                      for why, file, line in report.holes]
     run = {
         "tool": {"driver": {"name": "archlog", "version": __version__, "semanticVersion": __version__,
                             "informationUri": INFO_URI, "rules": driver_rules}},

@@ -74,12 +74,16 @@ def summary_line(report: Report, recovery: bool = True) -> str:
 
 def print_coverage(report: Report, console: Console) -> None:
     """The recovery summary: nodes fully recovered, partial (each reason with file:line), opaque."""
-    if not report.coverage:
+    if not report.coverage and not report.holes:
         return
     n = report.coverage_counts()
+    unread = f"; {len(report.holes)} part{'s' if len(report.holes) != 1 else ''} of the configuration not read" \
+        if report.holes else ""
     console.print(f"[bold]recovery[/]: {n['recovered']} of {len(report.coverage)} node"
                   f"{'s' if len(report.coverage) != 1 else ''} fully recovered, {n['partial']} partial, "
-                  f"{n['opaque']} opaque (no model or source)")
+                  f"{n['opaque']} opaque (no model or source){unread}")
+    for why, file, line in report.holes:
+        console.print(f"  not read: {escape(why)} ({escape(file)}:{line})", highlight=False)
     for c in report.coverage:
         if c.status == "recovered":
             continue

@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from archlog import names
@@ -20,6 +20,7 @@ from archlog.system.infrastructure import infrastructure_ports
 from archlog.system.instances import complete_instances
 from archlog.system.node_models import NodeModels, argv_ports
 from archlog.system.nodelets import in_process, is_manager, loaded_ports, loader_ports, manager_summary
+from archlog.system.outside import OutsidePort, outside_ports
 from archlog.system.param_files import file_ports, listed
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
@@ -43,6 +44,7 @@ class System:
     config: LaunchConfig
     instances: list[Instance]
     messages: dict[str, tuple[str, Path]]  # type name -> (msg, srv or action; definition file)
+    outside: list[OutsidePort] = field(default_factory=list)  # what modelled nodes it does not run would provide
 
 
 def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, extracted: Summaries,
@@ -72,7 +74,9 @@ def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, 
             config.nodes.append(co_node)
             instances.append(Instance(co_node, _summary(co_node, {node.kind: co_summary}, models, config, workspace,
                                                         diagnostics, missing)))
-    return System(workspace, config, instances, message_files(workspace))
+    user = {kind: [summary] for kind, summary in models.user.items()}
+    outside = outside_ports(workspace, config, {**models.builtin, **user})
+    return System(workspace, config, instances, message_files(workspace), outside)
 
 
 def _co_nodes(node: LaunchNode, summary: NodeSummary | None) -> list[tuple[LaunchNode, NodeSummary]]:

@@ -73,6 +73,7 @@ class LaunchConfig:
     # statically, an element skipped), and why
     params_unknown: list[tuple[Element, str]] = field(default_factory=list)
     scope_remaps: list[tuple[Element, str, str]] = field(default_factory=list)
+    holes: list[tuple[str, int, str]] = field(default_factory=list)  # (file, line, why): parts not read
 
 
 class SubstitutionError(Exception):

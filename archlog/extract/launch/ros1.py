@@ -133,12 +133,12 @@ class LaunchInterpreter(Ros1Params):
             return
         if (refused := unreadable(target, "launch")) is not None:
             absent = refused.code == "missing"
-            self._diag(path, el, "launch-include" if absent else refused.code,
+            self._hole(path, el, "launch-include" if absent else refused.code,
                        f"included file not found: {target}" if absent else f"<include> skipped: {refused}")
             return
         cycle = include_cycle(self.display, target, path, scope.chain)
         if cycle is not None:
-            self._diag(path, el, "launch-include-cycle", f"<include>: {target.name} is being loaded already "
+            self._hole(path, el, "launch-include-cycle", f"<include>: {target.name} is being loaded already "
                        f"({cycle}); roslaunch would fail")
             return
         # roslaunch hands the ~param list on to the included file, unless it is still empty

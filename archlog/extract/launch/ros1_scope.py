@@ -128,6 +128,12 @@ class Ros1Loader:
         line = el.sourceline if el is not None and el.sourceline else 1
         self.diagnostics.add(self.display(file), line, code, message, severity)
 
+    def _hole(self, file: Path, el: etree._Element, code: str, message: str) -> None:
+        """An error diagnostic for a part of the configuration not read (an include skipped): the
+        recovery summary counts it."""
+        self._diag(file, el, code, message)
+        self.config.holes.append((self.display(file), el.sourceline or 1, message))
+
     @staticmethod
     def _attr(scope: _Scope, el: etree._Element, key: str) -> str | None:
         raw = el.get(key)

@@ -153,7 +153,7 @@ class Ros2Launch(Ros2Nodes):
         try:
             execute(action, here, state is not True)
         except Unresolved as exc:
-            self.diag(action.where, unresolved_code(exc, "launch-unknown"), f"{_label(action)} skipped: {exc}")
+            self.hole(action.where, unresolved_code(exc, "launch-unknown"), f"{_label(action)} skipped: {exc}")
         except (SubstitutionError, LaunchError) as exc:
             self.diag(action.where, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",
                       f"{_label(action)}: {exc}", "error")
@@ -291,16 +291,18 @@ class Ros2Launch(Ros2Nodes):
             ctx.configs[perform(key, ctx)] = value_or_unknown(value, ctx)
         if (refused := unreadable(target, "launch")) is not None:
             missing = refused.code == "missing"
-            self.diag(action.where, "launch-include" if missing else refused.code,
+            self.hole(action.where, "launch-include" if missing else refused.code,
                       f"included file not found: {target}" if missing else f"include skipped: {refused}", "error")
             return
         cycle = include_cycle(self.host.display, target, ctx.file, ctx.chain)
         if cycle is not None:
-            self.diag(action.where, "launch-include-cycle", f"include: {target.name} is being launched already "
+            self.hole(action.where, "launch-include-cycle", f"include: {target.name} is being launched already "
                       f"({cycle}); launch would recurse until it fails", "error")
             return
         description = self.describe(target, action.dialect)
         if description is None:
+            self.config.holes.append((self.host.display(action.where.file), action.where.line,
+                                      f"included file {self.host.display(target)} cannot be read"))
             return
         elem = self.element(action.where.file, action.where.line)
         self.run(description, replace(ctx, file=target, chain=(*ctx.chain, elem)))
@@ -315,7 +317,7 @@ class Ros2Launch(Ros2Nodes):
 
     def _opaque(self, action: Opaque, ctx: Context) -> None:
         if action.run is None:
-            self.diag(action.where, "launch-unknown", f"{action.reason}: not interpreted; the nodes it may start "
+            self.hole(action.where, "launch-unknown", f"{action.reason}: not interpreted; the nodes it may start "
                       "are not part of this configuration")
             return
         self.run(action.run(ctx), ctx)

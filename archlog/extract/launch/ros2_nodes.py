@@ -67,6 +67,12 @@ class Ros2Nodes:
     def diag(self, where: Where, code: str, message: str, severity: str = "warning") -> None:
         self.diagnostics.add(self.host.display(where.file), where.line, code, message, severity)
 
+    def hole(self, where: Where, code: str, message: str, severity: str = "warning") -> None:
+        """A diagnostic for a part of the configuration not read (what it starts is unknown): the
+        recovery summary counts it."""
+        self.diag(where, code, message, severity)
+        self.config.holes.append((self.host.display(where.file), where.line, message))
+
     def element(self, file: Path, line: int) -> Element:
         return self.host.element_at(file, line)
 

@@ -150,7 +150,7 @@ class _Interpreter(Values):
         elif isinstance(stmt, ast.ClassDef):
             self.assign_name(stmt.name, Unread(f"class {stmt.name} defined in the launch file", stmt.lineno))
         elif isinstance(stmt, ast.While):
-            self.launcher.diag(Where(self.path, stmt.lineno), "launch-unknown", "a while loop is not read "
+            self.launcher.hole(Where(self.path, stmt.lineno), "launch-unknown", "a while loop is not read "
                                "statically; what it launches is not part of this configuration")
 
     def imports(self, stmt: ast.Import | ast.ImportFrom) -> None:
@@ -185,7 +185,7 @@ class _Interpreter(Values):
     def loop(self, stmt: ast.For | ast.AsyncFor) -> None:
         items = self.iterable(self.value(stmt.iter))
         if isinstance(items, Unread):
-            self.launcher.diag(Where(self.path, stmt.lineno), "launch-unknown", f"loop over a value not known "
+            self.launcher.hole(Where(self.path, stmt.lineno), "launch-unknown", f"loop over a value not known "
                                f"statically ({items.reason}); what it launches is not part of this configuration")
             return
         for item in items:

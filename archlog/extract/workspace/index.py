@@ -72,18 +72,20 @@ class Workspace:
             plugin_xml = [e.attributes["plugin"] for e in parsed.exports if "plugin" in e.attributes]
             ament = any(d.name.startswith("ament_") for d in parsed.buildtool_depends) or any(
                 e.tagname == "build_type" and (e.content or "").startswith("ament_") for e in parsed.exports)
+            depends = frozenset(d.name for d in [*parsed.build_depends, *parsed.exec_depends, *parsed.run_depends])
         except (InvalidPackage, Exception) as exc:  # catkin_pkg raises several error types
             match = re.search(r"<name>\s*([^<\s]+)\s*</name>", text)
             self.diagnostics.add(self.display(manifest), 1, "package-xml", f"invalid package.xml: {_first_line(exc)}")
             if not match:
                 return
-            name, plugin_xml, ament = match.group(1), [], False
+            name, plugin_xml, ament, depends = match.group(1), [], False, frozenset()
         if name in self.packages:
             other = self.display(self.packages[name].path)
             self.diagnostics.add(self.display(manifest), 1, "duplicate-package",
                                  f"package {name} also found at {other}; using the first")
             return
-        package = Package(name, folder, plugin_xml=plugin_xml, ament=ament, version=_version(text) or "")
+        package = Package(name, folder, plugin_xml=plugin_xml, ament=ament, version=_version(text) or "",
+                          depends=depends)
         self.packages[name] = package
         self._finder.find(package)
 

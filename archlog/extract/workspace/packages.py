@@ -49,6 +49,7 @@ class Package:
     ament: bool = False  # a ROS 2 package (built with ament_cmake or ament_python)
     links: dict[str, list[str]] = field(default_factory=dict)  # CMake target -> libraries it links
     version: str = ""  # package.xml's <version>
+    depends: frozenset[str] = frozenset()  # the packages its package.xml depends on (build, exec, run)
 
 
 def share_dirs() -> list[Path]:
