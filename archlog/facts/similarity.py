@@ -78,8 +78,8 @@ def near_pairs(names: Iterable[str], threshold: float = 0.5) -> list[tuple[str, 
 
 
 def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 0.5) -> list[tuple[str, str, float]]:
-    """Every unordered pair (a, b), a < b, of a name of `queries` and another name of `queries` or
-    `names` whose distance is below `threshold`, sorted; names that are `too_long()` are left out.
+    """Every unordered pair (a, b), a < b, of a name of `queries` and another name of `names` whose
+    distance is below `threshold`, sorted; names that are `too_long()` are left out.
 
     Candidates meet on keys. An alignment of a query q with a name n substitutes, deletes and
     transposes segments of q and inserts segments of n; its cost is below the budget B that the
@@ -92,7 +92,10 @@ def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 
     A query also meets the same name under more or fewer namespaces, whatever their numbers.
     """
     asked = {q for q in queries if too_long(q) is None}
-    measure = _Measure(sorted(asked | {n for n in names if too_long(n) is None}))
+    given = {n for n in names if too_long(n) is None}
+    if len(asked) > len(given):  # a pair is the same from either side: the smaller one enumerates variants
+        asked, given = given, asked
+    measure = _Measure(sorted(asked | given))
     groups: dict[tuple[str, ...], list[int]] = defaultdict(list)
     for index, name in enumerate(measure.names):
         groups[tuple(_NUMBER.findall(name))].append(index)
@@ -103,9 +106,10 @@ def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 
     pairs: set[tuple[int, int]] = set()
     for members in groups.values():
         found = [i for i in members if measure.names[i] in asked]
-        if found:
-            pairs |= _candidates(measure, members, found, budgets, variants, threshold)
-    pairs |= _namespaced(measure, asked)
+        targets = [j for j in members if measure.names[j] in given]
+        if found and targets:
+            pairs |= _candidates(measure, targets, found, budgets, variants, threshold)
+    pairs |= _namespaced(measure, asked, given)
     if not pairs:
         return []
     i, j = (np.array(column) for column in zip(*sorted(pairs)))
@@ -120,17 +124,17 @@ def _tails(name: str) -> set[str]:
     return {"/" + "/".join(parts[k:]) for k in range(2, len(parts))} if name.startswith("/") else set()
 
 
-def _namespaced(measure: _Measure, asked: set[str]) -> set[tuple[int, int]]:
-    """Pairs (i < j) of a name of `asked` and the same name under more or fewer namespaces."""
+def _namespaced(measure: _Measure, asked: set[str], given: set[str]) -> set[tuple[int, int]]:
+    """Pairs (i < j) of a name of `asked` and the same name of `given` under more or fewer namespaces."""
     position = {name: index for index, name in enumerate(measure.names)}
     under: dict[str, list[int]] = defaultdict(list)
-    for index, name in enumerate(measure.names):
+    for name in given:
         for tail in _tails(name):
-            under[tail].append(index)
+            under[tail].append(position[name])
     pairs = set()
     for name in asked:
         i = position[name]
-        for j in [*under.get(name, ()), *(position[t] for t in _tails(name) if t in position)]:
+        for j in [*under.get(name, ()), *(position[t] for t in _tails(name) if t in given)]:
             pairs.add((min(i, j), max(i, j)))
     return pairs
 
