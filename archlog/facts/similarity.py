@@ -22,6 +22,7 @@ compared: `too_long()` says which, and why.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections import defaultdict
@@ -100,8 +101,9 @@ def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 
     for index, name in enumerate(measure.names):
         groups[tuple(_NUMBER.findall(name))].append(index)
     budgets = {length: _budgets(length, threshold) for length in set(measure.lengths.tolist())}
-    words = _Words(measure.words, max((budgets[int(measure.lengths[i])][0] for i in range(len(measure.names))
-                                       if measure.names[i] in asked), default=0.0))
+    rows = [i for i, name in enumerate(measure.names) if name in asked]
+    words = _Words(measure.words, np.unique(measure.codes[rows]).tolist(),
+                   max((budgets[int(measure.lengths[i])][0] for i in rows), default=0.0))
     variants = _Variants(words)
     pairs: set[tuple[int, int]] = set()
     for members in groups.values():
@@ -128,9 +130,11 @@ def _namespaced(measure: _Measure, asked: set[str], given: set[str]) -> set[tupl
     """Pairs (i < j) of a name of `asked` and the same name of `given` under more or fewer namespaces."""
     position = {name: index for index, name in enumerate(measure.names)}
     under: dict[str, list[int]] = defaultdict(list)
+    lasts = {name.rpartition("/")[2] for name in asked}
     for name in given:
-        for tail in _tails(name):
-            under[tail].append(position[name])
+        if name.rpartition("/")[2] in lasts:  # the same name under more namespaces ends as it does
+            for tail in _tails(name):
+                under[tail].append(position[name])
     pairs = set()
     for name in asked:
         i = position[name]
@@ -144,25 +148,26 @@ class _Wide(Exception):
 
 
 class _Words:
-    """The words (segments) within a character distance below `budget` of each word. Two words
-    with different numbers in both (3 and 7, robot3 and robot7) are not near: swapping one number
-    for another changes the name's numbers, and names whose numbers differ are never near. A
-    number is near no word (substituting it costs as much as deleting it and inserting the other)."""
+    """The words (segments) within a character distance below `budget` of each of the words `rows`
+    (codes: the queries' words). Two words with different numbers in both (3 and 7, robot3 and
+    robot7) are not near: swapping one number for another changes the name's numbers, and names
+    whose numbers differ are never near. A number is near no word (substituting it costs as much as
+    deleting it and inserting the other)."""
 
-    def __init__(self, words: list[str], budget: float) -> None:
+    def __init__(self, words: list[str], rows: list[int], budget: float) -> None:
         self.budget = min(budget, _MAX_WORD_EDITS + 1)
         self.number = [word.isdigit() for word in words]
         self.near: dict[int, list[tuple[int, float]]] = defaultdict(list)
         numbers = [_NUMBER.findall(word) for word in words]
         cutoff = max(0, math.ceil(self.budget) - 1)
-        for start in range(0, len(words) if cutoff else 0, 1024):
-            block = process.cdist(words[start:start + 1024], words, scorer=DamerauLevenshtein.distance,
-                                  score_cutoff=cutoff, dtype=np.int32, workers=-1)
+        for start in range(0, len(rows) if cutoff else 0, 1024):
+            block = process.cdist([words[row] for row in rows[start:start + 1024]], words,
+                                  scorer=DamerauLevenshtein.distance, score_cutoff=cutoff, dtype=np.int32, workers=-1)
             for a, b in zip(*np.nonzero(block <= cutoff)):
-                mine, theirs = numbers[start + a], numbers[b]
-                if start + a != b and not (mine and theirs and mine != theirs) and not (
-                        self.number[start + a] or self.number[b]):
-                    self.near[int(start + a)].append((int(b), float(block[a, b])))
+                row = rows[start + a]
+                mine, theirs = numbers[row], numbers[b]
+                if row != b and not (mine and theirs and mine != theirs) and not (self.number[row] or self.number[b]):
+                    self.near[row].append((int(b), float(block[a, b])))
 
 
 def _candidates(measure: _Measure, members: list[int], asked: list[int], budgets: dict[int, tuple[float, float]],
@@ -183,8 +188,8 @@ def _candidates(measure: _Measure, members: list[int], asked: list[int], budgets
     for entries in index.values():
         entries.sort(key=lambda entry: entry[1])
     longest = max(lengths[i] for i in asked)
-    for j in members:
-        keys = _deletions(measure.encoded[j], budgets[int(measure.lengths[j])][1])
+    for j in _within_reach(measure, members, index, budgets):
+        keys = _deletions(measure.encoded(j), budgets[int(measure.lengths[j])][1])
         if keys is None:
             pairs |= {(min(i, j), max(i, j)) for i in asked if i != j}
             continue
@@ -259,14 +264,37 @@ def _char(code: int) -> str:
     return chr(0x100 + code) if code >= 0 else chr(-code)
 
 
+def _within_reach(measure: _Measure, members: list[int], index: dict[str, list[tuple[int, float]]],
+                  budgets: dict[int, tuple[float, float]]) -> list[int]:
+    """The members that can meet a query's variant in `index`: a member's deletion key keeps all
+    but `_most_deleted` of its segments, and each segment a key keeps is a word of some variant
+    (members with too many deletion keys to index are kept)."""
+    words = np.array(sorted({ord(ch) - 0x100 for key in index for ch in key}), dtype=np.int64)
+    rows = np.array(members, dtype=np.int64)
+    lengths = measure.lengths[rows]
+    need = np.zeros(int(lengths.max()) + 1, dtype=np.int64)
+    for length in set(lengths.tolist()):
+        most = _most_deleted(length, budgets[length][1])
+        need[length] = 0 if most is None else length - most
+    shared = np.isin(measure.codes[rows], words).sum(axis=1)
+    return rows[shared >= need[lengths]].tolist()
+
+
+def _most_deleted(length: int, budget: float) -> int | None:
+    """How many segments a name of `length` segments may lose to deletions (1.5 each) below
+    `budget`; None when its deletion keys would be too many to be worth indexing."""
+    most = min(max(0, math.ceil(budget / INDEL) - 1), length)
+    return None if sum(math.comb(length, r) for r in range(most + 1)) > _MAX_KEYS else most
+
+
 def _deletions(encoded: str, budget: float) -> dict[str, float] | None:
     """The name (one character per segment) with segments deleted at 1.5 each, below `budget`,
     each with its cost; None when that set would be too large to be worth indexing."""
-    most = max(0, math.ceil(budget / INDEL) - 1)
-    if sum(math.comb(len(encoded), r) for r in range(min(most, len(encoded)) + 1)) > _MAX_KEYS:
+    most = _most_deleted(len(encoded), budget)
+    if most is None:
         return None
     level, keys = {encoded}, {encoded: 0.0}
-    for count in range(1, min(most, len(encoded)) + 1):
+    for count in range(1, most + 1):
         level = {key[:p] + key[p + 1:] for key in level for p in range(len(key))}
         for key in level:
             keys.setdefault(key, count * INDEL)
@@ -295,15 +323,18 @@ class _Measure:
 
     def __init__(self, names: list[str]) -> None:
         self.names = names
-        vocabulary: dict[str, int] = {}
-        codes = [[vocabulary.setdefault(seg, len(vocabulary)) for seg in segments(n)] for n in names]
-        self.words = list(vocabulary)
-        self.encoded = ["".join(chr(0x100 + c) for c in row) for row in codes]
-        self.lengths = np.array([len(row) for row in codes], dtype=np.int64)
-        width = max((len(row) for row in codes), default=0)
-        self.codes = np.full((len(codes), width), -1, dtype=np.int64)
-        for k, row in enumerate(codes):
-            self.codes[k, : len(row)] = row
+        split = [segments(n) for n in names]
+        self.words = list(dict.fromkeys(itertools.chain.from_iterable(split)))
+        vocabulary = {word: code for code, word in enumerate(self.words)}
+        flat = np.fromiter((vocabulary[seg] for row in split for seg in row), dtype=np.int64)
+        self.lengths = np.fromiter(map(len, split), dtype=np.int64, count=len(split))
+        self.codes = np.full((len(names), int(self.lengths.max(initial=0))), -1, dtype=np.int64)
+        starts = np.repeat(np.cumsum(self.lengths) - self.lengths, self.lengths)
+        self.codes[np.repeat(np.arange(len(names)), self.lengths), np.arange(len(flat)) - starts] = flat
+
+    def encoded(self, index: int) -> str:
+        """A name as one character per segment."""
+        return "".join(chr(0x100 + code) for code in self.codes[index, : self.lengths[index]].tolist())
 
     def distances(self, first: np.ndarray, second: np.ndarray, limit: float | None = None) -> np.ndarray:
         """Normalised segment distances of the pairs (first[k], second[k]); with `limit`, values
