@@ -321,13 +321,14 @@ def main() -> None:
                 with tempfile.TemporaryDirectory(dir=opts.keep) as tmp:
                     root = Path(tmp) / f"{shape}_{naming}_{size}"
                     planted = generate(root, size, naming, incomplete=opts.incomplete_share, shape=shape)
-                    row = run(root, shape, opts)
-                    if row is not None:
-                        cpu.setdefault((shape, naming), {})[size] = row[0]
-                        print(f"| {shape} | {naming} | {size:,} | {row[1]} | "
+                    seconds, cells = run(root, shape, opts)
+                    if cells is not None:
+                        cpu.setdefault((shape, naming), {})[size] = seconds
+                        print(f"| {shape} | {naming} | {size:,} | {cells} | "
                               f"{' '.join(f'{k}:{v}' for k, v in sorted(planted.items()))} |", flush=True)
                     else:
-                        print(f"| {shape} | {naming} | {size:,} | failed (limit {opts.limit_mb} MB) |", flush=True)
+                        print(f"| {shape} | {naming} | {size:,} | - | failed after {seconds:.1f} s cpu "
+                              f"(limit {opts.limit_mb} MB) | | | | | | |", flush=True)
     for (shape, naming), series in cpu.items():
         sizes = sorted(series)
         for first, last in sorted({(sizes[0], 10000), (sizes[0], sizes[-1])}):
@@ -336,12 +337,12 @@ def main() -> None:
                 print(f"growth exponent ({shape}, {naming}, cpu, {first:,} -> {last:,}): {exponent:.2f}")
 
 
-def run(root: Path, shape: str, opts: argparse.Namespace) -> tuple[float, str] | None:
+def run(root: Path, shape: str, opts: argparse.Namespace) -> tuple[float, str | None]:
     """The median cpu seconds of `archlog check` on one workspace, and its table cells up to the
-    findings (None when the check failed, e.g. past the memory limit)."""
+    findings (None when the check failed, e.g. past the memory limit: then the first run's seconds)."""
     runs = [measure(root, shape, opts.limit_mb) for _ in range(opts.repeat)]
     if runs[0][2] is None:
-        return None
+        return runs[0][0], None
     seconds = statistics.median(r[0] for r in runs)
     peak = statistics.median(r[1] for r in runs)
     rules = Counter(f["rule"] for f in runs[0][2]["findings"])
