@@ -23,7 +23,8 @@ from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.packages import Executable, share_dirs
-from archlog.facts.compose import add_near_names, compose
+from archlog.facts.compose import compose
+from archlog.facts.near_misses import add_near_names
 from archlog.facts.parameters import add_param_near
 from archlog.facts.patterns import add_name_fits
 from archlog.facts.store import FactStore

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from archlog.facts.compose import add_near_names
+from archlog.facts.near_misses import add_near_names
 from archlog.facts.store import FactStore
 from archlog.queries.rule_tests import load_facts
 from archlog.rules.engine import Engine

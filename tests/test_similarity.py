@@ -63,3 +63,12 @@ def test_near_names_of_queries_are_the_pairs_brute_force_finds(names: list[str],
     brute = sorted((a, b) for a, b in itertools.combinations(sorted(names), 2)
                    if (a in queries or b in queries) and distance(a, b) < threshold)
     assert [(a, b) for a, b, _ in near_names(queries, names, threshold)] == brute
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(name, min_size=1, max_size=25, unique=True), st.lists(name, min_size=1, max_size=25, unique=True),
+       st.sampled_from([0.3, 0.5, 0.8]))
+def test_near_names_pairs_a_query_only_with_a_name_of_the_other_set(queries: list[str], names: list[str],
+                                                                     threshold: float) -> None:
+    brute = sorted({tuple(sorted((a, b))) for a in queries for b in names if a != b and distance(a, b) < threshold})
+    assert [(a, b) for a, b, _ in near_names(queries, names, threshold)] == brute

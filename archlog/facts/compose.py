@@ -13,7 +13,6 @@ from archlog.facts.behavior import Sites, add_behavior
 from archlog.facts.followed_types import Following, add_followed
 from archlog.facts.namespaces import add_namespaces
 from archlog.facts.parameters import add_param_spec, add_parameters
-from archlog.facts.similarity import namespace_steps, near_names, too_long
 from archlog.facts.store import FactStore
 from archlog.system.link import System
 from archlog.system.node_models import UNSET
@@ -26,7 +25,7 @@ NAMED_PORTS = ("publisher", "subscriber", "service_server", "service_client", "a
 
 def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
     """Build the fact store of one linked system configuration (near-miss names are added by
-    `add_near_names`, once the ports are known)."""
+    `near_misses.add_near_names`, once the ports are known)."""
     store = FactStore()
     workspace, config = system.workspace, system.config
     following: list[Following] = []
@@ -105,32 +104,6 @@ def _unknown_patterns(store: FactStore) -> None:
             name = row[1] if rel == "port_source_name" else row[2]
             if isinstance(name, Unknown) and (name.prefix or name.suffix):
                 store.add("unknown_pattern", name, name.prefix, name.suffix)
-
-
-def add_near_names(store: FactStore, threshold: float, diagnostics: DiagnosticSink | None = None) -> None:
-    """near_name facts (both directions) for the names that only one side uses (published and not
-    subscribed, served and not called, or the reverse): the ends a near miss may explain, each with
-    every name the ports use (the client library's built-in ports are left out). A name too long to
-    compare is noted (once, at its first port) when `diagnostics` is given."""
-    first_port: dict[str, str] = {}
-    sides: dict[str, set[str]] = {rel: set() for rel in NAMED_PORTS}
-    builtin = {row[0] for row in store.rows("infrastructure_port")}
-    for rel in NAMED_PORTS:
-        for row in store.rows(rel):
-            if isinstance(row[2], str) and row[0] not in builtin:
-                first_port.setdefault(row[2], str(row[0]))
-                sides[rel].add(row[2])
-    for name, port in first_port.items():
-        if diagnostics is not None and (why := too_long(name)) is not None:
-            file, line, _column = store.location(port) or ("", 0, 0)
-            diagnostics.add(file, line, "name-too-long", f"name {name[:60]}... has {why}; no near miss is looked for",
-                            "note")
-    one_sided = set().union(*(sides[a] ^ sides[b] for a, b in zip(NAMED_PORTS[::2], NAMED_PORTS[1::2])))
-    for a, b, score in near_names(one_sided, first_port, threshold):
-        store.add("near_name", a, b, round(score * 1000))
-        store.add("near_name", b, a, round(score * 1000))
-        store.add("near_scope", a, b, namespace_steps(a, b))
-        store.add("near_scope", b, a, namespace_steps(b, a))
 
 
 def _instance(store: FactStore, node: LaunchNode, summary: NodeSummary, config: LaunchConfig,

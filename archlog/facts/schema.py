@@ -233,8 +233,11 @@ RELATIONS: tuple[Relation, ...] = (
          "uses that fits them: the unknown name might be it.", ("value", "id", "the unknown name"),
          ("name", "name", "the name it might be")),
     _rel("derived", "near_name",
-         "Two names used in the system, one of them used by one side only (published and not subscribed, served "
-         "and not called, or the reverse), whose segment distance is below the near-miss threshold.",
+         "Two names whose segment distance is below the near-miss threshold, where one may be a broken link: a "
+         "name someone waits on that nothing provides (subscribed and not published, called and not served, an "
+         "action used and not served) with a name of that kind's providers; or a topic published to nobody with a "
+         "connected topic (published and subscribed) that a subscriber of a compatible type uses. Names nobody "
+         "waits on (a server nobody calls, two unheard publishers) are not paired.",
          ("a", "name", "a name"), ("b", "name", "another name"),
          ("distance", "int", "segment-aware Damerau-Levenshtein distance, in thousandths")),
     _rel("derived", "near_scope",

@@ -22,6 +22,7 @@ compared: `too_long()` says which, and why.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections import defaultdict
@@ -78,8 +79,8 @@ def near_pairs(names: Iterable[str], threshold: float = 0.5) -> list[tuple[str, 
 
 
 def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 0.5) -> list[tuple[str, str, float]]:
-    """Every unordered pair (a, b), a < b, of a name of `queries` and another name of `queries` or
-    `names` whose distance is below `threshold`, sorted; names that are `too_long()` are left out.
+    """Every unordered pair (a, b), a < b, of a name of `queries` and another name of `names` whose
+    distance is below `threshold`, sorted; names that are `too_long()` are left out.
 
     Candidates meet on keys. An alignment of a query q with a name n substitutes, deletes and
     transposes segments of q and inserts segments of n; its cost is below the budget B that the
@@ -92,20 +93,25 @@ def near_names(queries: Iterable[str], names: Iterable[str], threshold: float = 
     A query also meets the same name under more or fewer namespaces, whatever their numbers.
     """
     asked = {q for q in queries if too_long(q) is None}
-    measure = _Measure(sorted(asked | {n for n in names if too_long(n) is None}))
+    given = {n for n in names if too_long(n) is None}
+    if len(asked) > len(given):  # a pair is the same from either side: the smaller one enumerates variants
+        asked, given = given, asked
+    measure = _Measure(sorted(asked | given))
     groups: dict[tuple[str, ...], list[int]] = defaultdict(list)
     for index, name in enumerate(measure.names):
         groups[tuple(_NUMBER.findall(name))].append(index)
     budgets = {length: _budgets(length, threshold) for length in set(measure.lengths.tolist())}
-    words = _Words(measure.words, max((budgets[int(measure.lengths[i])][0] for i in range(len(measure.names))
-                                       if measure.names[i] in asked), default=0.0))
+    rows = [i for i, name in enumerate(measure.names) if name in asked]
+    words = _Words(measure.words, np.unique(measure.codes[rows]).tolist(),
+                   max((budgets[int(measure.lengths[i])][0] for i in rows), default=0.0))
     variants = _Variants(words)
     pairs: set[tuple[int, int]] = set()
     for members in groups.values():
         found = [i for i in members if measure.names[i] in asked]
-        if found:
-            pairs |= _candidates(measure, members, found, budgets, variants, threshold)
-    pairs |= _namespaced(measure, asked)
+        targets = [j for j in members if measure.names[j] in given]
+        if found and targets:
+            pairs |= _candidates(measure, targets, found, budgets, variants, threshold)
+    pairs |= _namespaced(measure, asked, given)
     if not pairs:
         return []
     i, j = (np.array(column) for column in zip(*sorted(pairs)))
@@ -120,17 +126,19 @@ def _tails(name: str) -> set[str]:
     return {"/" + "/".join(parts[k:]) for k in range(2, len(parts))} if name.startswith("/") else set()
 
 
-def _namespaced(measure: _Measure, asked: set[str]) -> set[tuple[int, int]]:
-    """Pairs (i < j) of a name of `asked` and the same name under more or fewer namespaces."""
+def _namespaced(measure: _Measure, asked: set[str], given: set[str]) -> set[tuple[int, int]]:
+    """Pairs (i < j) of a name of `asked` and the same name of `given` under more or fewer namespaces."""
     position = {name: index for index, name in enumerate(measure.names)}
     under: dict[str, list[int]] = defaultdict(list)
-    for index, name in enumerate(measure.names):
-        for tail in _tails(name):
-            under[tail].append(index)
+    lasts = {name.rpartition("/")[2] for name in asked}
+    for name in given:
+        if name.rpartition("/")[2] in lasts:  # the same name under more namespaces ends as it does
+            for tail in _tails(name):
+                under[tail].append(position[name])
     pairs = set()
     for name in asked:
         i = position[name]
-        for j in [*under.get(name, ()), *(position[t] for t in _tails(name) if t in position)]:
+        for j in [*under.get(name, ()), *(position[t] for t in _tails(name) if t in given)]:
             pairs.add((min(i, j), max(i, j)))
     return pairs
 
@@ -140,26 +148,33 @@ class _Wide(Exception):
 
 
 class _Words:
-    """The words (segments) within a character distance below `budget` of each word. Two words
-    with different numbers in both (3 and 7, robot3 and robot7) are not near: swapping one number
-    for another changes the name's numbers, and names whose numbers differ are never near. A
-    number is near no word (substituting it costs as much as deleting it and inserting the other)."""
+    """The words (segments) within a character distance below `budget` of each of the words `rows`
+    (codes: the queries' words). Two words with different numbers in both (3 and 7, robot3 and
+    robot7) are not near: swapping one number for another changes the name's numbers, and names
+    whose numbers differ are never near. A number is near no word (substituting it costs as much as
+    deleting it and inserting the other)."""
 
-    def __init__(self, words: list[str], budget: float) -> None:
+    def __init__(self, words: list[str], rows: list[int], budget: float) -> None:
         self.budget = min(budget, _MAX_WORD_EDITS + 1)
         self.number = [word.isdigit() for word in words]
         self.near: dict[int, list[tuple[int, float]]] = defaultdict(list)
         cutoff = max(0, math.ceil(self.budget) - 1)
-        groups: dict[tuple[str, ...], list[int]] = defaultdict(list)
-        for k, word in enumerate(words):
-            if cutoff and not self.number[k]:
-                groups[tuple(_NUMBER.findall(word))].append(k)
-        plain = groups.pop((), [])
-        # only words of the same numbers, or without any, are compared: with many numbered words
-        # (one per instance) this is linear where comparing all of them is quadratic
-        for members in groups.values():
-            self._compare(words, members, members + plain, cutoff)
-        self._compare(words, plain, sorted(k for members in (plain, *groups.values()) for k in members), cutoff)
+        numbers = [tuple(_NUMBER.findall(word)) for word in words]
+        columns: dict[tuple[str, ...], list[int]] = defaultdict(list)  # words by their numbers (none: ())
+        for k in range(len(words)):
+            if not self.number[k]:
+                columns[numbers[k]].append(k)
+        plain = columns.get((), [])
+        every = sorted(k for members in columns.values() for k in members)
+        asked: dict[tuple[str, ...], list[int]] = defaultdict(list)
+        for row in rows:
+            if cutoff and not self.number[row]:
+                asked[numbers[row]].append(row)
+        # a query is compared with the words of its numbers and those without any (a word without
+        # numbers with every word): with many numbered words (one per instance) this is linear
+        # where comparing all of them is quadratic
+        for key, members in asked.items():
+            self._compare(words, members, every if key == () else sorted(columns[key] + plain), cutoff)
         for found in self.near.values():
             found.sort()
 
@@ -200,8 +215,8 @@ def _candidates(measure: _Measure, members: list[int], asked: list[int], budgets
     for entries in index.values():
         entries.sort(key=lambda entry: entry[1])
     longest = max(lengths[i] for i in asked)
-    for j in members:
-        keys = _deletions(measure.encoded[j], budgets[int(measure.lengths[j])][1])
+    for j in _within_reach(measure, members, index, budgets):
+        keys = _deletions(measure.encoded(j), budgets[int(measure.lengths[j])][1])
         if keys is None:
             pairs |= {(min(i, j), max(i, j)) for i in asked if i != j}
             continue
@@ -276,14 +291,37 @@ def _char(code: int) -> str:
     return chr(0x100 + code) if code >= 0 else chr(-code)
 
 
+def _within_reach(measure: _Measure, members: list[int], index: dict[str, list[tuple[int, float]]],
+                  budgets: dict[int, tuple[float, float]]) -> list[int]:
+    """The members that can meet a query's variant in `index`: a member's deletion key keeps all
+    but `_most_deleted` of its segments, and each segment a key keeps is a word of some variant
+    (members with too many deletion keys to index are kept)."""
+    words = np.array(sorted({ord(ch) - 0x100 for key in index for ch in key}), dtype=np.int64)
+    rows = np.array(members, dtype=np.int64)
+    lengths = measure.lengths[rows]
+    need = np.zeros(int(lengths.max()) + 1, dtype=np.int64)
+    for length in set(lengths.tolist()):
+        most = _most_deleted(length, budgets[length][1])
+        need[length] = 0 if most is None else length - most
+    shared = np.isin(measure.codes[rows], words).sum(axis=1)
+    return rows[shared >= need[lengths]].tolist()
+
+
+def _most_deleted(length: int, budget: float) -> int | None:
+    """How many segments a name of `length` segments may lose to deletions (1.5 each) below
+    `budget`; None when its deletion keys would be too many to be worth indexing."""
+    most = min(max(0, math.ceil(budget / INDEL) - 1), length)
+    return None if sum(math.comb(length, r) for r in range(most + 1)) > _MAX_KEYS else most
+
+
 def _deletions(encoded: str, budget: float) -> dict[str, float] | None:
     """The name (one character per segment) with segments deleted at 1.5 each, below `budget`,
     each with its cost; None when that set would be too large to be worth indexing."""
-    most = max(0, math.ceil(budget / INDEL) - 1)
-    if sum(math.comb(len(encoded), r) for r in range(min(most, len(encoded)) + 1)) > _MAX_KEYS:
+    most = _most_deleted(len(encoded), budget)
+    if most is None:
         return None
     level, keys = {encoded}, {encoded: 0.0}
-    for count in range(1, min(most, len(encoded)) + 1):
+    for count in range(1, most + 1):
         level = {key[:p] + key[p + 1:] for key in level for p in range(len(key))}
         for key in level:
             keys.setdefault(key, count * INDEL)
@@ -312,15 +350,18 @@ class _Measure:
 
     def __init__(self, names: list[str]) -> None:
         self.names = names
-        vocabulary: dict[str, int] = {}
-        codes = [[vocabulary.setdefault(seg, len(vocabulary)) for seg in segments(n)] for n in names]
-        self.words = list(vocabulary)
-        self.encoded = ["".join(chr(0x100 + c) for c in row) for row in codes]
-        self.lengths = np.array([len(row) for row in codes], dtype=np.int64)
-        width = max((len(row) for row in codes), default=0)
-        self.codes = np.full((len(codes), width), -1, dtype=np.int64)
-        for k, row in enumerate(codes):
-            self.codes[k, : len(row)] = row
+        split = [segments(n) for n in names]
+        self.words = list(dict.fromkeys(itertools.chain.from_iterable(split)))
+        vocabulary = {word: code for code, word in enumerate(self.words)}
+        flat = np.fromiter((vocabulary[seg] for row in split for seg in row), dtype=np.int64)
+        self.lengths = np.fromiter(map(len, split), dtype=np.int64, count=len(split))
+        self.codes = np.full((len(names), int(self.lengths.max(initial=0))), -1, dtype=np.int64)
+        starts = np.repeat(np.cumsum(self.lengths) - self.lengths, self.lengths)
+        self.codes[np.repeat(np.arange(len(names)), self.lengths), np.arange(len(flat)) - starts] = flat
+
+    def encoded(self, index: int) -> str:
+        """A name as one character per segment."""
+        return "".join(chr(0x100 + code) for code in self.codes[index, : self.lengths[index]].tolist())
 
     def distances(self, first: np.ndarray, second: np.ndarray, limit: float | None = None) -> np.ndarray:
         """Normalised segment distances of the pairs (first[k], second[k]); with `limit`, values

@@ -19,8 +19,8 @@ from rich.console import Console
 from rich.markup import escape
 
 from archlog.analysis import analyse
-from archlog.facts.compose import add_near_names
 from archlog.facts.namespaces import ADDED, add_namespaces
+from archlog.facts.near_misses import add_near_names
 from archlog.facts.parameters import add_param_near
 from archlog.facts.patterns import add_name_fits
 from archlog.facts.schema import BY_NAME
