@@ -163,7 +163,7 @@ def _suppress(entries: object, path: Path | None) -> list[dict]:
     at least one of rule, node, topic or service (an entry of none would hide every finding)."""
     if not isinstance(entries, list) or not all(isinstance(e, dict) for e in entries):
         raise ConfigError(f"{path}: suppress must be a list of [[suppress]] tables")
-    text = path.read_text(encoding="utf-8").splitlines() if path is not None else []
+    text = sandbox.read_text(path, "config").splitlines() if path is not None and entries else []
     headers = [n for n, line in enumerate(text, 1) if re.match(r"\s*\[\[\s*(tool\.archlog\.)?suppress\s*\]\]", line)]
     result = []
     for index, entry in enumerate(entries):

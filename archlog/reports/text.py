@@ -37,18 +37,18 @@ def print_text(report: Report, console: Console, quiet: bool = False) -> None:
             console.print()
     if report.diagnostics and not quiet:
         console.print("[bold]diagnostics[/] (problems reading the input)")
-        shown: dict[str, int] = {}
+        shown: dict[tuple[str, str], int] = {}
         for d in report.diagnostics:
-            if d.severity == "note":  # repeated notes of one cause: the first few, then a count
-                shown[d.code] = shown.get(d.code, 0) + 1
-                if shown[d.code] > NOTES_SHOWN:
+            if d.severity == "note":  # repeated notes of one cause in one file: the first few, then a count
+                shown[d.code, d.file] = shown.get((d.code, d.file), 0) + 1
+                if shown[d.code, d.file] > NOTES_SHOWN:
                     continue
             console.print(f"  {escape(d.file)}:{d.line}: [{STYLE[d.severity]}]{d.severity}[/] "
                           f"{escape(d.message)} [dim]{d.code}[/]")
-        for code, n in shown.items():
+        for (code, file), n in shown.items():
             if n > NOTES_SHOWN:
-                console.print(f"  ... and {n - NOTES_SHOWN} more {code} notes like these (--format json lists "
-                              "each)", highlight=False)
+                console.print(f"  ... and {n - NOTES_SHOWN} more {code} notes like these in {escape(file)} "
+                              "(--format json lists each)", highlight=False)
         console.print()
     console.print(escape(summary_line(report, recovery=False)), highlight=False)
     print_coverage(report, console)
