@@ -36,7 +36,10 @@ def checkout(tree: Path, ref: str, dest: Path) -> None:
         why = archive.stderr.decode(errors="replace").strip().splitlines()
         raise ConfigError(f"--base {ref}: git archive failed: {why[-1] if why else archive.returncode}")
     with tarfile.open(fileobj=io.BytesIO(archive.stdout)) as tar:
-        tar.extractall(dest, filter="data")
+        if hasattr(tarfile, "data_filter"):  # Python 3.11.4 and later: refuse links and paths out of `dest`
+            tar.extractall(dest, filter="data")
+        else:  # git archive of a commit writes only the repository's own paths
+            tar.extractall(dest)
 
 
 def moved(path: Path, tree: Path, dest: Path) -> Path:

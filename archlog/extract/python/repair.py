@@ -51,6 +51,14 @@ def _python2_indent(line: str) -> str:
     return line[: len(line) - len(body)].expandtabs(8) + body
 
 
+def _parse(text: str) -> ast.Module:
+    """ast.parse; a NUL byte is a SyntaxError on every Python 3.11 (a ValueError before 3.11.4)."""
+    try:
+        return ast.parse(text)
+    except ValueError as exc:
+        raise SyntaxError(str(exc)) from None
+
+
 def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]]:
     """Parse with ast; on failure repair the lines parso (error recovery) or ast points at:
     first with Python 2 rewrites (tabs in indentation expanded as Python 2 does), then by
@@ -65,7 +73,7 @@ def parse_tolerant(source: str) -> tuple[ast.Module | None, list[int], list[int]
     budget = max(10, len(lines) // 4)  # past this many repairs the file is not Python 2 either
     for _round in range(_REPAIR_ROUNDS + 1):
         try:
-            return ast.parse("\n".join(lines) + "\n"), list(repaired), dropped
+            return _parse("\n".join(lines) + "\n"), list(repaired), dropped
         except (RecursionError, MemoryError):
             raise NestedTooDeeply(1) from None
         except SyntaxError as exc:
