@@ -193,3 +193,20 @@ def test_a_rule_defined_in_a_session_names_a_located_column() -> None:
     with pytest.raises(QueryError, match=r"location column 'node' holds a name, .*\(line 6\)"):
         session.define(header.format("node") + "reads(N, P) :- param_read(P, N, _, _).\n")
     assert session.define(header.format("port").replace("MY2", "MY3") + "reads(N, P) :- param_read(P, N, _, _).\n")
+
+
+def test_test_rules_checks_every_rule_even_without_cases(tmp_path: Path) -> None:
+    """`test-rules` loads and checks the folder's rules as `check --rules` does: a rule reading an
+    unknown relation fails at its line even with no case; a good rule without cases is "nothing
+    tested", never "all passed" (issue 31)."""
+    header = '%! id: MY2\n%! name: mine\n%! severity: note\n%! summary: s\n%! finding: lonely(topic, pub)\n' \
+             '%! location: pub\n%! message: "{topic}"\n'
+    (tmp_path / "mine.lp").write_text(header + "lonely(T, P) :- publishr(P, _, T, _).\n")
+    broken = archlog("test-rules", tmp_path)
+    assert broken.returncode == 1 and "internal error" not in broken.stderr
+    assert f"{tmp_path / 'mine.lp'}:8:" in broken.stdout and "publishr" in broken.stdout
+    assert "all passed" not in broken.stdout
+    (tmp_path / "mine.lp").write_text(header + "lonely(T, P) :- publisher(P, _, T, _).\n")
+    empty = archlog("test-rules", tmp_path)
+    assert empty.returncode == 0
+    assert "1 rule, 0 cases, nothing tested" in empty.stdout

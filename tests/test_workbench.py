@@ -59,7 +59,7 @@ def test_profiles_select_ignore_and_severity(tmp_path: Path) -> None:
                     '[profiles.strict]\nnear-miss-threshold = 0.3\n')
     config = load_config(toml, None)
     kept = {r.id: r.severity for r in config.adjust(list(rules.values()))}
-    assert set(kept) == {"AL101", "AL102", "AL104", "AL105", "AL501", "AL502", "AL503", "AL504", "AL505", "AL601"}
+    assert set(kept) == {"AL101", "AL102", "AL104", "AL105", "AL106", "AL501", "AL502", "AL503", "AL504", "AL505", "AL601"}
     assert kept["AL102"] == "note"
     assert load_config(toml, "strict").near_miss_threshold == 0.3
     toml.write_text("colour = 1\n")

@@ -27,8 +27,8 @@ from archlog.facts.schema import BY_NAME
 from archlog.facts.store import Cell, FactStore
 from archlog.queries.session import Session
 from archlog.queries.table import plural
-from archlog.rules.engine import Finding, render
-from archlog.rules.ruleset import BUILTIN, RuleSet, load_rules
+from archlog.rules.engine import Engine, Finding, render
+from archlog.rules.ruleset import BUILTIN, RuleError, RuleSet, load_rules
 from archlog.values import Unknown
 
 EXPECTED = "findings.expected"
@@ -42,12 +42,20 @@ class FixtureError(Exception):
 
 
 def run_rule_tests(folders: list[Path], update: bool, console: Console, only: bool = False) -> bool:
-    """True when every case matches its expected findings. With `only`, the findings of the shipped
-    rules are left out when testing other folders (their relations stay usable)."""
-    ok, count, written = True, 0, 0
+    """True when every rule of the folders loads and checks (as `check --rules` does) and every case
+    matches its expected findings. With `only`, the findings of the shipped rules are left out when
+    testing other folders (their relations stay usable)."""
+    ok, count, written, rules = True, 0, 0, 0
     for folder in folders:
         own = folder.resolve() == BUILTIN
-        ruleset = load_rules([] if own else [folder])
+        try:
+            ruleset = load_rules([] if own else [folder])
+            Engine(ruleset)  # unknown relations, unsafe variables, findings no rule derives...
+        except RuleError as exc:
+            ok = False
+            console.print(f"[red]FAIL[/] {escape(str(exc))}", highlight=False)
+            continue
+        rules += sum(own or Path(r.file).resolve().parent != BUILTIN for r in ruleset.rules)
         keep = {r.id for r in ruleset.rules if not only or own or Path(r.file).resolve().parent != BUILTIN}
         for case in sorted(p for p in (folder / "tests").glob("*") if p.is_dir()):
             count += 1
@@ -73,7 +81,8 @@ def run_rule_tests(folders: list[Path], update: bool, console: Console, only: bo
             for line in difflib.unified_diff(expected.splitlines(), got.splitlines(), "expected", "got", lineterm=""):
                 console.print(f"  {escape(line)}", highlight=False)
     updated = f"; {plural(written, 'file')} written" if update else ""
-    console.print(f"{plural(count, 'case')}, {'all passed' if ok else 'some failed'}{updated}")
+    verdict = "some failed" if not ok else "all passed" if count else "nothing tested"
+    console.print(f"{plural(rules, 'rule')}, {plural(count, 'case')}, {verdict}{updated}")
     return ok
 
 
