@@ -209,7 +209,7 @@ BAD_CONFIGS = {
     "[budget]\nelements = 0\n": "[budget] elements must be a positive whole number, not 0",
     "[budget]\nsteps = true\n": "[budget] steps must be a positive whole number, not True",
     "[budget]\ndepth = 1.5\n": "[budget] depth must be a positive whole number, not 1.5",
-    "[budget]\nbytes = 10\n": "[budget] bytes is not a limit (known: elements, characters, steps, alternatives, depth)",
+    "[budget]\nbytes = 10\n": "[budget] bytes is not a limit (known: elements, nodes, characters, steps, alternatives, depth)",
     'budget = "big"\n': "[budget] must be a table",
 }
 
