@@ -32,7 +32,6 @@ import hashlib
 import json
 import os
 import pty
-import signal
 import subprocess
 import sys
 import tempfile
@@ -43,6 +42,7 @@ from pathlib import Path
 
 from archlog.analysis import analyse
 from archlog.extract.builtin_ports import builtin
+from archlog.testgen.processes import stop
 
 KINDS = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 _ACTION_SERVICES = ("send_goal", "cancel_goal", "get_result")
@@ -173,7 +173,7 @@ def observe(program: Program, domain: int) -> Ports:
                 time.sleep(0.4)
             _poll(observer, before, seen)
         finally:
-            _stop(process)
+            stop(process, 5.0)
             os.close(primary)
             os.close(secondary)
         return seen
@@ -237,17 +237,6 @@ def _activate(observer, seen: Ports) -> None:
                 future = client.call_async(request)
                 rclpy.spin_until_future_complete(observer, future, timeout_sec=3.0)
         observer.destroy_client(client)
-
-
-def _stop(process: subprocess.Popen) -> None:
-    """SIGINT the program's process group, then SIGKILL what is left."""
-    if process.poll() is None:
-        os.killpg(process.pid, signal.SIGINT)
-        try:
-            process.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)
-            process.wait(timeout=5)
 
 
 # -- recovery -------------------------------------------------------------------------------------

@@ -16,7 +16,6 @@ import importlib.util
 import itertools
 import json
 import os
-import signal
 import subprocess
 import sys
 import tempfile
@@ -27,6 +26,7 @@ from pathlib import Path
 
 from archlog.analysis import Analysis
 from archlog.observe_ros2 import Port, Ros2Graph
+from archlog.testgen import processes
 
 _counter = itertools.count()
 
@@ -102,14 +102,8 @@ def running_nodes(runs: list[NodeRun], domain: int) -> Iterator[list[subprocess.
 
 
 def stop(proc: subprocess.Popen) -> None:
-    """Stop a process started in a session of its own: SIGINT, then SIGKILL to its group."""
-    if proc.poll() is None:
-        os.killpg(proc.pid, signal.SIGINT)
-        try:
-            proc.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait(timeout=5)
+    """Stop a process started in a session of its own (SIGINT, then SIGKILL to its group) and close its pipe."""
+    processes.stop(proc, 5.0)
     if proc.stderr is not None:
         proc.stderr.close()
 
