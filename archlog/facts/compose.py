@@ -273,13 +273,15 @@ def _handle_namespace(handle_ns: Value, node: LaunchNode, config: LaunchConfig) 
 def _private_names(store: FactStore) -> None:
     """private_name facts: the names ports use that lie in a node instance's private namespace."""
     nodes = {str(row[0]) for row in store.rows("node")}
-    used = {str(row[2]) for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str)}
+    depth = max((node.count("/") for node in nodes), default=0)  # a node name is at most this many segments deep
+    used = {row[2] for rel in NAMED_PORTS for row in store.rows(rel) if isinstance(row[2], str) and row[2].startswith("/")}
     for name in sorted(used):
-        parent = names.namespace_of(name)
-        while parent != "/":
+        # the name's namespaces no deeper than a node name, deepest first (linear in the name's length)
+        segments = names.canonical(name).split("/")[1:-1][:depth]
+        parents = ["/" + "/".join(segments[:k]) for k in range(len(segments), 0, -1)]
+        for parent in parents:
             if parent in nodes:
                 store.add("private_name", name, parent)
-            parent = names.namespace_of(parent)
 
 
 def _param_topics(store: FactStore, system: System) -> None:
