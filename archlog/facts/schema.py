@@ -194,6 +194,10 @@ RELATIONS: tuple[Relation, ...] = (
          ("write", "id", "the assignment, for its location"), _NODE, ("var", "str", "the state variable"),
          ("value", "str", "the value it gets: true, false, set, unset, empty, nonempty, a constant, or ? when unknown"),
          ("source", "id", "the subscriber or service port whose callback writes it; `none` at start-up")),
+    _rel("behavior", "decided", "A publish call or state write that its trigger and guards alone decide: every "
+         "condition on every path to it is one of its guards (or, for a write, there is none), all paths to a call "
+         "have the same guards. Only Python's walk tells; a call or write without it may depend on more.",
+         ("id", "id", "the publish call or the state write")),
     _rel("behavior", "loop_period", "The period of the loop a periodic publish call sits in.",
          ("call", "id", "the publish call"), ("period", "str", "seconds, or unknown")),
     _rel("transforms", "tf_broadcast", "A transform a node instance broadcasts on tf (its model's `tf_broadcasts`, "

@@ -20,9 +20,9 @@ Do not edit: regenerating overwrites this file. Write properties in {properties}
 (fields, parameters, switches) go in the settings file given to `archlog testgen --settings`.
 Run with pytest; ARCHLOG_TESTGEN_EXAMPLES sets the number of examples (default {examples}),
 ARCHLOG_TESTGEN_STEPS the steps per example, ARCHLOG_TESTGEN_SHRINK_SECONDS the time spent shrinking
-a failure (default 300). Each example starts the nodes under test afresh on a private {private}
+a failure (default 60). Each example starts the nodes under test afresh on a private {private}
 (about 1-3 s an example) unless reuse is set.
-"""
+{undecided}"""
 
 import os
 from pathlib import Path
@@ -118,7 +118,8 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     text = HEADER.format(what=what, properties=properties, model=pformat(model, width=110),
                          settings=pformat(settings.to_dict(), width=110), cls=cls, name=name,
                          examples=examples, imports=imports, base="Ros2Machine" if ros2 else "ArchitectureMachine",
-                         classes=classes, private="DDS domain" if ros2 else "master")
+                         classes=classes, private="DDS domain" if ros2 else "master",
+                         undecided=_undecided(model))
     for topic, type_ in model["inputs"].items():
         if not model["specs"].get(type_, {}).get("missing"):
             text += RULE.format(type=type_, ident=hook_name(topic).removeprefix("on_"), topic=topic)
@@ -131,3 +132,12 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
         user.write_text(PROPERTIES.format(what=what, name=name, hooks=hooks), encoding="utf-8")
         written.append(user)
     return written
+
+
+def _undecided(model: dict[str, Any]) -> str:
+    """The header's note of the properties not generated because the model cannot decide them."""
+    notes = [f"- {topic}: {why}" for topic, why in sorted(model.get("undecided", {}).items())]
+    if not notes:
+        return ""
+    return ("\nNot generated (undecided): that these outputs follow their required inputs; only that they stay\n"
+            "silent until those inputs came is checked.\n" + "\n".join(notes) + "\n")

@@ -1,6 +1,6 @@
 """What a generated test needs to know of the recovered configuration, as plain JSON-able data:
 the nodes under test, their open inputs and outputs with types, the recovered interface, the
-periodic outputs and the inputs each output requires, the parameters the nodes read, and the
+periodic outputs, the inputs each output requires and those it must follow (liveness.py), the parameters the nodes read, and the
 message definitions of the inputs' types (outputs are recorded by the bridge with the installed
 message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
 also holds how to start each node under test (package, executable, remaps, the configuration's
@@ -17,6 +17,7 @@ from archlog.analysis import Analysis, resolve_launch
 from archlog.facts.store import FactStore
 from archlog.observe import Architecture, from_facts
 from archlog.reports.behavior import behavior_model
+from archlog.testgen.liveness import Output, follows, seconds
 from archlog.testgen.msgspec import message_specs
 from archlog.values import Unknown
 
@@ -52,7 +53,7 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
             where.setdefault(str(ty), (store.location(pid) or ("", 0, 0))[:2])
     part = from_facts(store).restricted(set(chosen))
     interface = Architecture(frozenset(chosen), part.publishers, part.subscribers, part.services)
-    periodic, requires = _behavior(analysis, ctl, chosen, outputs, inputs)
+    periodic, requires, follow, undecided = _behavior(analysis, ctl, chosen, outputs, inputs)
     params = {str(name): (None if isinstance(default, Unknown) else str(default))
               for _p, n, name, default in store.rows("param_read") if str(n) in chosen and not isinstance(name, Unknown)}
     ros = 2 if any("/msg/" in ty for ty in (*inputs.values(), *outputs.values())) else 1
@@ -69,6 +70,8 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
         "interface": interface.to_json(),
         "periodic": periodic,
         "requires": requires,
+        "follows": follow,
+        "undecided": undecided,
         "params": dict(sorted(params.items())),
         "specs": message_specs(analysis.workspace, where, analysis.diagnostics),
     }
@@ -89,11 +92,16 @@ def _commands(store: FactStore, chosen: list[str]) -> list[dict[str, Any]]:
 
 
 def _behavior(analysis: Analysis, ctl: clingo.Control, chosen: list[str], outputs: dict[str, str],
-              inputs: dict[str, str]) -> tuple[dict[str, float], dict[str, list[str]]]:
+              inputs: dict[str, str]) -> tuple[dict[str, float], dict[str, list[str]], dict[str, float], dict[str, str]]:
     """Watched outputs published only by timers or loops of known period, with no guard and no
-    required input (topic -> the slowest period); and the open inputs each watched output requires."""
+    required input (topic -> the slowest period); the open inputs each watched output requires; the
+    outputs that must follow them (topic -> within which period, see liveness.py); and why the others
+    need not (topic -> reason)."""
     periodic: dict[str, float] = {}
     requires: dict[str, list[str]] = {}
+    follow: dict[str, float] = {}
+    undecided: dict[str, str] = {}
+    ports = {(str(n), str(t)): str(p) for p, n, t, _ty in analysis.store.rows("publisher")}
     for node in behavior_model(analysis.store, ctl):
         if node["node"] not in chosen:
             continue
@@ -104,25 +112,23 @@ def _behavior(analysis: Analysis, ctl: clingo.Control, chosen: list[str], output
             required = [t for t in output["requires"] if t in inputs]
             if required:
                 requires[topic] = required
+                within = follows(analysis.store, Output(node["node"], ports.get((node["node"], topic), ""), topic, required))
+                if isinstance(within, str) or set(output["requires"]) - set(required):
+                    undecided[topic] = within if isinstance(within, str) else \
+                        f"{topic} also requires inputs of nodes not under test"
+                else:
+                    follow[topic] = within
             periods = [_trigger_period(t) for call in output["calls"] for t in call["triggers"]]
             if periods and None not in periods and not output["requires"] \
                     and not any(call["guards"] for call in output["calls"]):
                 periodic[topic] = max(p for p in periods if p is not None)
-    return periodic, requires
+    return periodic, requires, follow, undecided
 
 
 def _trigger_period(trigger: dict) -> float | None:
     """A loop's period, or a timer's (its port is named "PERIOD s" in the behavior model)."""
     if trigger["kind"] == "loop":
-        return _seconds(trigger.get("period"))
+        return seconds(trigger.get("period"))
     if trigger["kind"] == "timer":
-        return _seconds(str(trigger.get("by", "")).removesuffix(" s"))
+        return seconds(str(trigger.get("by", "")).removesuffix(" s"))
     return None
-
-
-def _seconds(value: object) -> float | None:
-    try:
-        seconds = float(str(value))
-    except ValueError:
-        return None
-    return seconds if seconds > 0 else None
