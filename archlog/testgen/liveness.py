@@ -24,7 +24,7 @@ class Output:
     inputs: list[str]
 
 
-def follows(store: FactStore, output: Output) -> float | None | str:
+def follows(store: FactStore, output: Output) -> float | str:
     """The period within which `output` must follow once its inputs were sent (0.0: at once, from the
     input's callback), or why that is not decided (a string)."""
     decided = {str(r[0]) for r in store.rows("decided")}
