@@ -71,6 +71,12 @@ def _run_the_system():
     close_sessions()
 '''
 
+UNSTARTABLE = '''
+
+if unstartable(MODEL):
+    pytest.skip(unstartable(MODEL), allow_module_level=True)
+'''
+
 PROPERTIES = '''"""Properties of {what} that the generated test_{name}.py checks (archlog testgen writes this
 file once and never overwrites it). Each hook is called with every message received on its topic
 (an Event: topic, time, msg as a dict); `invariant` after every step. self.history holds every
@@ -90,9 +96,11 @@ from archlog.testgen.runtime import ArchitectureMachine"""
 ROS2_IMPORTS = """
 rclpy = pytest.importorskip("rclpy", reason="a ROS 2 test: source ROS 2's setup first")
 import rclpy.context  # noqa: E402
+import rclpy.duration  # noqa: E402
 import rclpy.executors  # noqa: E402
+import rclpy.qos  # noqa: E402
 {modules}
-from archlog.testgen.ros2 import Ros2Machine"""
+from archlog.testgen.ros2 import Ros2Machine, unstartable"""
 
 HOOK = '''    def {hook}(self, event: Event) -> None:
         """{topic} ({type})"""
@@ -111,9 +119,11 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     ros2 = model.get("ros") == 2
     types = sorted({*model["inputs"].values(), *model["outputs"].values()})
     modules = sorted({t.split("/")[0] for t in types})
-    imports = ROS2_IMPORTS.format(modules="\n".join(f"import {m}.msg  # noqa: E402" for m in modules)) if ros2 \
+    imports = ROS2_IMPORTS.format(modules="\n".join(
+        f'{m}_msg = pytest.importorskip("{m}.msg", reason="the message package {m} is not installed")'
+        for m in modules)) if ros2 \
         else ROS1_IMPORTS
-    classes = ", ".join(f'"{t}": {t.replace("/", ".")}' for t in types)
+    classes = ", ".join(f'"{t}": {t.split("/")[0]}_msg.{t.split("/")[-1]}' for t in types)
     classes = f"\n    rclpy = rclpy\n    classes = {{{classes}}}" if ros2 else ""
     text = HEADER.format(what=what, properties=properties, model=pformat(model, width=110),
                          settings=pformat(settings.to_dict(), width=110), cls=cls, name=name,
@@ -124,6 +134,8 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
         if not model["specs"].get(type_, {}).get("missing"):
             text += RULE.format(type=type_, ident=hook_name(topic).removeprefix("on_"), topic=topic)
     text += FOOTER.format(cls=cls, examples=examples)
+    if ros2:
+        text += UNSTARTABLE
     written = [output / f"test_{name}.py"]
     written[0].write_text(text, encoding="utf-8")
     user = output / properties

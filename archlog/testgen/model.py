@@ -4,7 +4,8 @@ periodic outputs, the inputs each output requires and those it must follow (live
 message definitions of the inputs' types (outputs are recorded by the bridge with the installed
 message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
 also holds how to start each node under test (package, executable, remaps, the configuration's
-parameters), as a ROS 2 test starts them with `ros2 run`."""
+parameters, its Python script or entry point), as a ROS 2 test starts them itself, and the QoS its
+publishers must offer."""
 
 from __future__ import annotations
 
@@ -59,7 +60,8 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     ros = 2 if any("/msg/" in ty for ty in (*inputs.values(), *outputs.values())) else 1
     return {
         "ros": ros,
-        "commands": _commands(store, chosen) if ros == 2 else [],
+        "commands": _commands(analysis, chosen) if ros == 2 else [],
+        "qos": _qos(store, chosen, inputs) if ros == 2 else {},
         "paths": [str(p.resolve()) for p in paths],
         "launch": [str(resolve_launch(spec, analysis.workspace).resolve()) for spec in launches],
         "args": dict(args),
@@ -77,18 +79,51 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     }
 
 
-def _commands(store: FactStore, chosen: list[str]) -> list[dict[str, Any]]:
-    """How to start each node under test: package, executable, remaps and the configuration's
-    parameters of the node (resolved names; those with unknown parts left out)."""
-    known = (str, int, float)
+def _commands(analysis: Analysis, chosen: list[str]) -> list[dict[str, Any]]:
+    """How to start each node under test: package, executable, remaps, the configuration's parameters
+    of the node with their types (resolved names; those with unknown parts left out), and for a Python
+    executable of the workspace its script or console_scripts entry point (run without ros2cli)."""
+    store, known = analysis.store, (str, int, float)
     remaps: dict[str, list[list[str]]] = {}
     for _e, node, source, target in store.rows("remap"):
         if isinstance(source, str) and isinstance(target, str):
             remaps.setdefault(str(node), []).append([source, target])
     params = [(name, value) for name, value, _e in store.rows("param") if isinstance(name, str) and isinstance(value, known)]
     return [{"name": str(node), "pkg": str(pkg), "exe": str(exe), "remaps": remaps.get(str(node), []),
-             "params": {name: str(value) for name, value in params if name.startswith(f"{node}/")}}
+             "params": {name: value for name, value in params if name.startswith(f"{node}/")},
+             **_python_start(analysis, str(pkg), str(exe))}
             for node, pkg, exe, _e in store.rows("node") if str(node) in chosen]
+
+
+def _python_start(analysis: Analysis, pkg: str, exe: str) -> dict[str, str]:
+    """{"script": path} or {"entry": "module:function", "root": the folder it imports from}, or {}."""
+    executable = analysis.workspace.executable(pkg, exe)
+    if executable is None or executable.lang != "python" or not executable.sources:
+        return {}
+    source = executable.sources[0].resolve()
+    if not executable.entry:
+        return {"script": str(source)}
+    depth = len(executable.entry.partition(":")[0].split(".")) + (source.name == "__init__.py")
+    return {"entry": executable.entry, "root": str(source.parents[depth - 1])}
+
+
+def _qos(store: FactStore, chosen: list[str], inputs: dict[str, str]) -> dict[str, dict[str, Any]]:
+    """For each open input, the QoS the test's publisher must offer to match every subscriber of the
+    nodes under test: transient_local and a manual liveliness when one asks for it, the shortest
+    deadline and liveliness lease asked for (seconds)."""
+    subscribers = {str(pid): str(topic) for pid, node, topic, _ty in store.rows("subscriber")
+                   if str(node) in chosen and str(topic) in inputs}
+    offered: dict[str, dict[str, Any]] = {}
+    for pid, policy, value in store.rows("qos"):
+        topic = subscribers.get(str(pid))
+        if topic is not None and (policy, value) in (("durability", "transient_local"), ("liveliness", "manual_by_topic")):
+            offered.setdefault(topic, {})[str(policy)] = str(value)
+    for pid, policy, microseconds in store.rows("qos_duration"):
+        topic = subscribers.get(str(pid))
+        if topic is not None and policy in ("deadline", "liveliness_lease_duration") and isinstance(microseconds, int):
+            wanted = offered.setdefault(topic, {})
+            wanted[str(policy)] = min(wanted.get(str(policy), microseconds / 1e6), microseconds / 1e6)
+    return dict(sorted(offered.items()))
 
 
 def _behavior(analysis: Analysis, ctl: clingo.Control, chosen: list[str], outputs: dict[str, str],
