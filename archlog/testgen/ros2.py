@@ -101,8 +101,14 @@ def run_command(node: dict[str, Any], params: dict[str, Any]) -> list[str] | Non
         command += ["-r", f"{source}:={target}"]
     for name, value in {**node["params"], **params}.items():
         if name.startswith(node["name"] + "/"):
-            command += ["-p", f"{name[len(node['name']) + 1:].replace('/', '.')}:={json.dumps(value)}"]
+            command += ["-p", f"{name[len(node['name']) + 1:].replace('/', '.')}:={_typed(value)}"]
     return command
+
+
+def _typed(value: Any) -> str:
+    """A parameter value for `-p`, which reads it as YAML: a number or boolean as itself; a text as
+    written, so that the node reads it typed as launch_ros would (`false` a boolean, `0.8` a double)."""
+    return value if isinstance(value, str) and value.strip() else json.dumps(value)
 
 
 def unstartable(model: dict[str, Any]) -> str | None:
