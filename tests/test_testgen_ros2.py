@@ -9,6 +9,7 @@ import json
 import os
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -32,15 +33,23 @@ def _generate(system: str, nodes: list[str], out: Path) -> None:
     subprocess.run(command, check=True, capture_output=True, text=True, timeout=120)
 
 
+def run_case(system: str, nodes: list[str], tmp: Path, examples: int) -> tuple[subprocess.CompletedProcess, float]:
+    """Generate the test of a clean twin into `tmp` and run it for `examples` examples on a private
+    domain; the pytest run and its seconds."""
+    _generate(system, nodes, tmp)
+    domain = min(private_domain(), 232)  # Fast DDS computes no ports above 232
+    env = dict(os.environ, ARCHLOG_TESTGEN_EXAMPLES=str(examples), ARCHLOG_TESTGEN_STEPS="4",
+               ARCHLOG_TESTGEN_SHRINK_SECONDS="5", ARCHLOG_TESTGEN_DOMAINS=f"{domain}-{domain}")
+    start = time.monotonic()
+    result = subprocess.run([sys.executable, "-m", "pytest", "-q", "-rs", "-p", "no:cacheprovider", "-p", "no:xdist",
+                             "--hypothesis-seed=0", str(tmp)], env=env, capture_output=True, text=True,
+                            timeout=60 + 20 * examples, cwd=tmp)
+    return result, time.monotonic() - start
+
+
 @pytest.mark.parametrize(("system", "nodes", "outcome"), CASES, ids=[c[0] for c in CASES])
 def test_generated_test_passes_a_correct_ros2_system(system: str, nodes: list[str], outcome: str, tmp_path: Path) -> None:
-    _generate(system, nodes, tmp_path)
-    domain = min(private_domain(), 232)  # Fast DDS computes no ports above 232
-    env = dict(os.environ, ARCHLOG_TESTGEN_EXAMPLES="3", ARCHLOG_TESTGEN_STEPS="4", ARCHLOG_TESTGEN_SHRINK_SECONDS="5",
-               ARCHLOG_TESTGEN_DOMAINS=f"{domain}-{domain}")
-    result = subprocess.run([sys.executable, "-m", "pytest", "-q", "-rs", "-p", "no:cacheprovider", "-p", "no:xdist",
-                             "--hypothesis-seed=0", str(tmp_path)], env=env, capture_output=True, text=True,
-                            timeout=240, cwd=tmp_path)
+    result, _seconds = run_case(system, nodes, tmp_path, 3)
     if outcome == "skipped":  # a C++ node: pytest ran nothing (exit 5), saying why
         assert result.returncode == 5 and "cannot start" in result.stdout, result.stdout
     else:
