@@ -119,9 +119,9 @@ def unstartable(model: dict[str, Any]) -> str | None:
 
 
 def private_domain() -> int:
-    """A DDS domain for this test process, in ARCHLOG_TESTGEN_DOMAINS (LOW-HIGH, default 1-100; at
+    """A DDS domain for this test process, in ARCHLOG_TESTGEN_DOMAINS (LOW-HIGH, default 1-99; at
     most 232, the highest whose ports the DDS port formula keeps in range)."""
-    low, high = (int(x) for x in os.environ.get("ARCHLOG_TESTGEN_DOMAINS", "1-100").split("-"))
+    low, high = (int(x) for x in os.environ.get("ARCHLOG_TESTGEN_DOMAINS", "1-99").split("-"))
     low, high = min(low, MAX_DOMAIN), min(high, MAX_DOMAIN)
     return low + os.getpid() % (high - low + 1)
 
