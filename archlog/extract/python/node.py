@@ -21,7 +21,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.builtin_ports import builtin
 from archlog.extract.cpp.cache import ResultCache, key
 from archlog.extract.python.behavior.triggers import recover_behavior
-from archlog.extract.python.fold import Element, ValueFolder
+from archlog.extract.python.fold import Element, ValueFolder, parameters
 from archlog.extract.python.imports import Module, imported_calls, package_modules
 from archlog.extract.python.index import Function, arg
 from archlog.extract.python.parameters import ParamReader, declared_pair
@@ -235,21 +235,13 @@ class NodeReader(ValueFolder):
     def _visit(self, node: ast.AST) -> None:
         """Visit a node in its function scope (methods in their class)."""
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            outer = self.scope
-            cls = outer.cls if outer else self.class_of.get(id(node))
-            self.scope = self.functions.get((cls, node.name)) or Function(node, cls)
-            for child in node.body:
-                self._visit(child)
-            self.scope = outer
+            cls = self.scope.cls if self.scope else self.class_of.get(id(node))
+            self._walk_function(self.functions.get((cls, node.name)) or Function(node, cls))
             return
         if isinstance(node, ast.ClassDef):
             for child in node.body:
                 if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                    outer = self.scope
-                    self.scope = self.functions.get((node.name, child.name)) or Function(child, node.name)
-                    for stmt in child.body:
-                        self._visit(stmt)
-                    self.scope = outer
+                    self._walk_function(self.functions.get((node.name, child.name)) or Function(child, node.name))
                 else:
                     self._visit(child)
             return
@@ -267,6 +259,61 @@ class NodeReader(ValueFolder):
             self._call(node)
         for sub in ast.iter_child_nodes(node):
             self._visit(sub)
+
+    def _walk_function(self, function: Function) -> None:
+        """Visit a function's body in its scope: once per call site of the file when they pass
+        different values (each call runs its own ports: a helper called with one name per call), its
+        parameters bound to that call's arguments; once, unbound, otherwise."""
+        outer, self.scope = self.scope, function
+        sites = self.per_call_site(function)
+        for site in sites or [{}]:
+            saved = dict(self.bound)
+            self.bound.update({self.key_of(name, function): item for name, item in site.items()})
+            for stmt in function.node.body:
+                self._visit(stmt)
+            self.bound = saved
+        self.scope = outer
+
+    def per_call_site(self, function: Function) -> list[dict[str, Element]]:
+        """The arguments of each call site of a function, by parameter, when call sites pass different
+        values, none of them in another branch of the same `if` as another (only one of those runs)
+        and the steps budget pays for the walks; else no call site."""
+        names = [name for name in parameters(function) if name not in function.assigns and
+                 not (function.cls and name in ("self", "cls"))]
+        passed = {name: self.arguments(function, name) for name in names}
+        sites = self.call_sites(function.cls, function.node.name)
+        if len(sites) < 2 or not any(len({self.value(e, 0, c) if e is not None else None for e, c in args}) > 1
+                                     for args in passed.values() if len(args) == len(sites)):
+            return []
+        if self.exclusive(sites):
+            return []
+        try:
+            budget.charge("steps", len(sites) * sum(1 for stmt in function.node.body for _ in ast.walk(stmt)))
+        except budget.BudgetExceeded:
+            return []
+        return [{name: Element(args[index][0], args[index][1]) if args[index][0] is not None else
+                 Element(None, None, self.unknown(function.node, f"{name} not passed"))
+                 for name, args in passed.items() if len(args) == len(sites)} for index in range(len(sites))]
+
+    def exclusive(self, nodes: list[ast.Call]) -> bool:
+        """Whether two of the nodes are in different branches of one `if` (or try/except)."""
+        branches: dict[int, set[int]] = {}
+        for node in nodes:
+            for statement, branch in self.branches_around(node):
+                branches.setdefault(statement, set()).add(branch)
+        return any(len(taken) > 1 for taken in branches.values())
+
+    def branches_around(self, target: ast.AST) -> list[tuple[int, int]]:
+        """The (if or try statement, branch index) pairs a node is inside."""
+        found: list[tuple[int, int]] = []
+        for node in ast.walk(self.tree):
+            if isinstance(node, (ast.If, ast.Try, ast.IfExp)):
+                parts = [[node.body], [node.orelse]] if isinstance(node, ast.IfExp) else \
+                    [node.body, node.orelse] if isinstance(node, ast.If) else [node.body, *[h.body for h in node.handlers]]
+                for index, part in enumerate(parts):
+                    if any(sub is target for stmt in part for sub in ast.walk(stmt)):
+                        found.append((id(node), index))
+        return found
 
     def _loop(self, walks: list[tuple[ast.expr, ast.expr]], body: list[ast.expr] | list[ast.stmt]) -> None:
         """Visit `body` once per element of the first (target, sequence) walk, its target bound to the
