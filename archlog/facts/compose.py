@@ -16,8 +16,7 @@ from archlog.facts.parameters import add_param_spec, add_parameters
 from archlog.facts.store import FactStore
 from archlog.system.link import System
 from archlog.system.node_models import UNSET
-from archlog.values import (Alternatives, Concat, Namespace, ParamList, ParamRef, Switch, Unknown, Value, concat,
-                            partly_known)
+from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Switch, Unknown, Value, concat, partly_known
 
 QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
 _MAX_INT = 2**31 - 1  # clingo's integers are 32-bit
