@@ -366,10 +366,10 @@ def _caught(tried: Value | None, caught: list[tuple[ast.ExceptHandler, Value | N
     parameter all assign one value reads with that value as its default."""
     if all(value == tried for _h, value in caught):
         return tried
-    values = {value for _h, value in caught}
-    if isinstance(tried, ParamRef) and isinstance(tried.default, Unknown) and len(values) == 1 and \
-            None not in values and all(_catches_missing(h) for h, _v in caught):
-        return replace(tried, default=next(iter(values)))
+    values = {value for _h, value in caught if value is not None}
+    if isinstance(tried, ParamRef) and isinstance(tried.default, Unknown) and len(values) == len(caught) == 1 and \
+            all(_catches_missing(h) for h, _v in caught):
+        return replace(tried, default=values.pop())
     raise _NotInOrder
 
 

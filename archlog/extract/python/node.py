@@ -204,6 +204,8 @@ class NodeReader(ValueFolder):
         self.notes: list[tuple[int, str, str, str]] = []  # diagnostics: line, code, message, severity
         self.seen: set[Port] = set()
         self.params = ParamReader(tree, self.qualified, self.value)
+        self.branch_of: dict[int, tuple[ast.AST, int]] | None = None  # see branches_around()
+        self.parent_of: dict[int, ast.AST] = {}
 
     def run(self, only: set[str] | None = None) -> None:
         """Read the ROS calls of every scope (or only of the module's classes and functions named),
@@ -292,7 +294,7 @@ class NodeReader(ValueFolder):
         except budget.BudgetExceeded:
             return []
         return [{name: Element(args[index][0], args[index][1]) if args[index][0] is not None else
-                 Element(None, None, self.unknown(function.node, f"{name} not passed"))
+                 Element(None, None, Unknown(f"{name} (not passed)", self.file, function.node.lineno))
                  for name, args in passed.items() if len(args) == len(sites)} for index in range(len(sites))]
 
     def exclusive(self, nodes: list[ast.Call]) -> bool:
@@ -305,14 +307,21 @@ class NodeReader(ValueFolder):
 
     def branches_around(self, target: ast.AST) -> list[tuple[int, int]]:
         """The (if or try statement, branch index) pairs a node is inside."""
+        if self.branch_of is None:  # each node's innermost enclosing branch, indexed at the first question
+            self.branch_of = {}
+            for node in ast.walk(self.tree):
+                for index, part in enumerate(_branches(node)):
+                    for stmt in part:
+                        self.branch_of[id(stmt)] = (node, index)
+                for child in ast.iter_child_nodes(node):
+                    self.parent_of.setdefault(id(child), node)
         found: list[tuple[int, int]] = []
-        for node in ast.walk(self.tree):
-            if isinstance(node, (ast.If, ast.Try, ast.IfExp)):
-                parts = [[node.body], [node.orelse]] if isinstance(node, ast.IfExp) else \
-                    [node.body, node.orelse] if isinstance(node, ast.If) else [node.body, *[h.body for h in node.handlers]]
-                for index, part in enumerate(parts):
-                    if any(sub is target for stmt in part for sub in ast.walk(stmt)):
-                        found.append((id(node), index))
+        at: ast.AST | None = target
+        while at is not None:
+            if id(at) in self.branch_of:
+                statement, index = self.branch_of[id(at)]
+                found.append((id(statement), index))
+            at = self.parent_of.get(id(at))
         return found
 
     def _loop(self, walks: list[tuple[ast.expr, ast.expr]], body: list[ast.expr] | list[ast.stmt]) -> None:
@@ -543,6 +552,17 @@ class NodeReader(ValueFolder):
             self.seen.add(port)
             self.summary.ports.append(port)
             self.nodes.owners.setdefault(port, self.owner())
+
+
+def _branches(node: ast.AST) -> list[list[ast.AST]]:
+    """The branches of an if (statement or expression) or a try (its body and each handler), of which one runs."""
+    if isinstance(node, ast.IfExp):
+        return [[node.body], [node.orelse]]
+    if isinstance(node, ast.If):
+        return [list[ast.AST](node.body), list[ast.AST](node.orelse)]
+    if isinstance(node, ast.Try):
+        return [list[ast.AST](node.body), *[list[ast.AST](h.body) for h in node.handlers]]
+    return []
 
 
 def _listed(value: Value) -> list[ParamList]:
