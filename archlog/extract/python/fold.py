@@ -2,6 +2,9 @@
 attributes, f-strings, `%` and `.format`, `+`, parameter reads, the node's namespace, and function or
 `__init__` parameters whose call sites in the file agree (a small function summary). Loop variables
 take the element a walk binds them to (`bound`) or, folded elsewhere, every element of the sequence.
+A variable one function assigns several times is followed through that function in order
+(`in_order`: a parameter read in try/except KeyError, an `if` on the value itself); a function's
+parameters are bound per call site when the walk visits it once per call (node.py).
 Anything else is an explicit Unknown with file:line.
 """
 
