@@ -222,6 +222,8 @@ class ValueFolder(FileIndex):
             return None
         if self.function_of(at) is owner and at.lineno <= max(getattr(e, "lineno", 0) for e in exprs):
             return None
+        if not _followable(owner.node.body, ast.unparse(at)):  # checked before anything is folded
+            return None
         try:
             return self._flow(owner.node.body, None, owner, ast.unparse(at), depth)
         except _NotInOrder:
@@ -347,6 +349,26 @@ def _assigns(node: ast.AST, text: str) -> bool:
     else:
         return False
     return any(ast.unparse(part) == text for target in targets for part in ast.walk(target))
+
+
+def _followable(stmts: list[ast.stmt], text: str) -> bool:
+    """Whether the statements assigning the variable spelt `text` are only ones in_order() follows:
+    plain assignments, try/except for a missing parameter, and `if` tests of the variable itself."""
+    for stmt in stmts:
+        if not any(_assigns(node, text) for node in ast.walk(stmt)):
+            continue
+        if isinstance(stmt, (ast.Assign, ast.AnnAssign)):
+            if stmt.value is None or not all(isinstance(t, (ast.Name, ast.Attribute)) for t in _targets(stmt)):
+                return False
+        elif isinstance(stmt, ast.Try):
+            if not (_followable(stmt.body, text) and _followable(stmt.orelse, text) and
+                    all(_catches_missing(h) and _followable(h.body, text) for h in stmt.handlers) and
+                    not any(_assigns(n, text) for s in stmt.finalbody for n in ast.walk(s))):
+                return False
+        elif not (isinstance(stmt, ast.If) and _equality(stmt.test, text) is not None and
+                  _followable(stmt.body, text) and _followable(stmt.orelse, text)):
+            return False
+    return True
 
 
 def _equality(test: ast.expr, text: str) -> tuple[str, bool] | None:

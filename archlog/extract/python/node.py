@@ -278,14 +278,15 @@ class NodeReader(ValueFolder):
 
     def per_call_site(self, function: Function) -> list[dict[str, Element]]:
         """The arguments of each call site of a function, by parameter, when call sites pass different
-        values, none of them in another branch of the same `if` as another (only one of those runs)
-        and the steps budget pays for the walks; else no call site."""
+        literals for a parameter (`self.listen("gripper")`, `self.listen("wrist")`), no two of them in
+        different branches of one `if` (only one of those runs), and the steps budget pays for the
+        walks; else no call site."""
         names = [name for name in parameters(function) if name not in function.assigns and
                  not (function.cls and name in ("self", "cls"))]
         passed = {name: self.arguments(function, name) for name in names}
         sites = self.call_sites(function.cls, function.node.name)
-        if len(sites) < 2 or not any(len({self.value(e, 0, c) if e is not None else None for e, c in args}) > 1
-                                     for args in passed.values() if len(args) == len(sites)):
+        if len(sites) < 2 or not any(_literals_differ([e for e, _c in args]) for args in passed.values()
+                                     if len(args) == len(sites)):
             return []
         if self.exclusive(sites):
             return []
@@ -552,6 +553,13 @@ class NodeReader(ValueFolder):
             self.seen.add(port)
             self.summary.ports.append(port)
             self.nodes.owners.setdefault(port, self.owner())
+
+
+def _literals_differ(passed: list[ast.expr | None]) -> bool:
+    """Call sites that all pass a literal for a parameter, not all the same one (told apart without
+    folding: folding each call site's argument through its callers' call sites grows exponentially)."""
+    return all(isinstance(e, ast.Constant) for e in passed) and \
+        len({e.value for e in passed if isinstance(e, ast.Constant)}) > 1
 
 
 def _branches(node: ast.AST) -> list[list[ast.AST]]:
