@@ -13,11 +13,14 @@ topic) and services (node, service); missed = observed ports not recovered, extr
 ports not observed, both over the observed ports of the part.
 
 The split is fixed and does not depend on results: a case is held out when the first byte of
-sha256(case name) is divisible by 3 (the rule of bench/rclpy_oracle.py); a corpus case's name is
-`corpus/NAME/VARIANT`, a Debian case's `debian/CASE`. Work on recovery looks at the tuned part only.
+sha256(key) is divisible by 3 (the rule of bench/rclpy_oracle.py); the key of a corpus system is
+`corpus/NAME` (both twins go together), of a Debian case `debian/CASE`. Work on recovery looks at
+the tuned part only.
 
     python bench/ros1_heldout.py [--debian bench/results/debian_nodes.json] [--only NAME,...]
-                                 [--output bench/results/ros1_heldout.json]
+                                 [--output bench/results/ros1_heldout.json] [--reuse EARLIER.json]
+
+`--reuse` scores the corpus systems of an earlier output again instead of launching them.
 """
 
 from __future__ import annotations
@@ -45,8 +48,10 @@ KINDS = ("publishers", "subscribers", "services")
 
 
 def held_out(name: str) -> bool:
-    """Whether a case belongs to the held-out part (fixed by its name alone)."""
-    return hashlib.sha256(name.encode()).digest()[0] % 3 == 0
+    """Whether a case belongs to the held-out part (fixed by its name alone; a corpus system's
+    buggy and clean twins go together, by the system's name)."""
+    key = name.rsplit("/", 1)[0] if name.startswith("corpus/") else name
+    return hashlib.sha256(key.encode()).digest()[0] % 3 == 0
 
 
 def corpus_case(variant: Path) -> dict:
@@ -87,12 +92,16 @@ def main() -> None:
     ap.add_argument("--debian", type=Path, default=ROOT / "bench" / "results" / "debian_nodes.json")
     ap.add_argument("--only", help="corpus systems to launch (NAME,...); default: every runtime system")
     ap.add_argument("--output", type=Path, default=ROOT / "bench" / "results" / "ros1_heldout.json")
+    ap.add_argument("--reuse", type=Path, help="an earlier output whose corpus results are scored again, not launched")
     opts = ap.parse_args()
     variants = sorted(v.parent for v in (ROOT / "corpus" / "ros1").glob("*/*/case.json")
                       if json.loads(v.read_text()).get("runtime"))
     if opts.only:
         variants = [v for v in variants if v.parent.name in opts.only.split(",")]
     results: dict[str, dict] = {}
+    if opts.reuse:
+        results = {n: r for n, r in json.loads(opts.reuse.read_text())["cases"].items() if n.startswith("corpus/")}
+        variants = []
     for variant in variants:
         name = f"corpus/{variant.parent.name}/{variant.name}"
         try:
