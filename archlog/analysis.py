@@ -47,13 +47,21 @@ Progress = registry.Progress
 
 def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models: list[Path],
             near_threshold: float = 0.5, progress: Progress | None = None,
-            env: dict[str, str] | None = None, limits: dict[str, int] | None = None) -> Analysis:
+            env: dict[str, str] | None = None, limits: dict[str, int] | None = None,
+            env_from_shell: bool = False) -> Analysis:
     """Recover the architecture of one system configuration into facts, reading only inside the
     analysed paths and package roots, seeing only the environment given in `env` (and the
-    allow-list), and expanding within `limits` (see archlog.sandbox and archlog.budget)."""
-    policy = sandbox.Sandbox(reading_roots(paths, launches, models), sandbox.machine_env(env))
+    allow-list; with `env_from_shell`, the variables the input asks for from this process's
+    environment too, each named in an env-from-shell note), and expanding within `limits` (see
+    archlog.sandbox and archlog.budget)."""
+    policy = sandbox.Sandbox(reading_roots(paths, launches, models), sandbox.machine_env(env), shell=env_from_shell)
     with sandbox.active(policy), budget.active(limits or {}):
-        return _analyse(paths, launches, args, models, near_threshold, progress)
+        analysis = _analyse(paths, launches, args, models, near_threshold, progress)
+    if policy.from_shell:
+        where = str(resolve_launch(launches[0], analysis.workspace)) if launches else str(paths[0]) if paths else ""
+        analysis.diagnostics.add(analysis.workspace.display(Path(where)) if where else "", 1, "env-from-shell",
+                                 "read from this shell (--env-from-shell): " + ", ".join(sorted(policy.from_shell)))
+    return analysis
 
 
 def reading_roots(paths: list[Path], launches: list[str], models: list[Path]) -> tuple[Path, ...]:

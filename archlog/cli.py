@@ -47,6 +47,12 @@ def _env_pairs(values: tuple[str, ...]) -> dict[str, str]:
     return pairs
 
 
+def _remember_shell_flag(ctx: click.Context, _param: click.Parameter, value: bool) -> bool:
+    """--env-from-shell, kept for _inputs (the commands do not take it as an argument)."""
+    ctx.meta["env_from_shell"] = value
+    return value
+
+
 def _system_options(func):
     options = [
         click.argument("paths", nargs=-1, type=click.Path(path_type=Path)),
@@ -56,6 +62,10 @@ def _system_options(func):
         click.option("--env", "env", multiple=True, metavar="NAME=VALUE",
                      help="Environment variable launch files may read (repeatable); no other is read from this "
                           "machine but ROS_DISTRO, ROS_VERSION and ROS_PYTHON_VERSION."),
+        click.option("--env-from-shell", is_flag=True, expose_value=False, callback=_remember_shell_flag,
+                     help="Also read, from this shell, each environment variable the launch files ask for and "
+                          "--env does not give (a local check; never set by a configuration file; names that "
+                          "look like secrets are not read). CI should pass --env."),
         click.option("--model", "models", multiple=True, type=click.Path(path_type=Path),
                      help="YAML node models for nodes without source, or external producers/consumers."),
         click.option("--rules", "rule_paths", multiple=True, type=click.Path(exists=True, path_type=Path),
@@ -83,6 +93,7 @@ class Inputs:
     args: dict[str, str]
     models: list[Path]
     env: dict[str, str]
+    env_from_shell: bool = False
 
 
 def _inputs(paths, launches, args, models, rule_paths, config_path, profile, threshold, env) -> Inputs:
@@ -101,7 +112,8 @@ def _inputs(paths, launches, args, models, rule_paths, config_path, profile, thr
     config = cli_choices.select(config, choices, ruleset.rules)
     paths, launches, args, models = cli_choices.inputs(config, choices, list(paths), list(launches),
                                                        _arg_pairs(args), list(models))
-    return Inputs(config, ruleset, paths, launches, args, models, {**config.env, **_env_pairs(env)})
+    shell = bool(click.get_current_context().meta.get("env_from_shell"))
+    return Inputs(config, ruleset, paths, launches, args, models, {**config.env, **_env_pairs(env)}, shell)
 
 
 def _analyse(given: Inputs, quiet: bool = False) -> Analysis:
@@ -115,7 +127,7 @@ def _analyse(given: Inputs, quiet: bool = False) -> Analysis:
     stderr = Console(stderr=True)
     if quiet or not stderr.is_terminal:
         return analyse(given.paths, given.launches, given.args, given.models, config.near_miss_threshold,
-                       env=given.env, limits=config.limits)
+                       env=given.env, limits=config.limits, env_from_shell=given.env_from_shell)
     with Progress(SpinnerColumn(), TextColumn("reading nodes"), BarColumn(), MofNCompleteColumn(),
                   TimeElapsedColumn(), console=stderr, transient=True) as bar:
         task = bar.add_task("nodes", total=None)
@@ -124,7 +136,7 @@ def _analyse(given: Inputs, quiet: bool = False) -> Analysis:
             bar.update(task, completed=done, total=total if total > 0 else None)
 
         return analyse(given.paths, given.launches, given.args, given.models, config.near_miss_threshold,
-                       advance, env=given.env, limits=config.limits)
+                       advance, env=given.env, limits=config.limits, env_from_shell=given.env_from_shell)
 
 
 def _load(paths, launches, args, models, rule_paths, config_path, profile, threshold, env,

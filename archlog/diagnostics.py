@@ -162,6 +162,10 @@ CODES: dict[str, Code] = {
         "env-not-given": ("note", "An environment variable was read that was not given (--env, [env] in "
                           "archlog.toml, or the allow-list); it reads as unset. Only its name is shown.",
                           "Pass it with --env NAME=VALUE if the system depends on it."),
+        "env-from-shell": ("note", "Environment variables the input asks for were read from the shell archlog runs "
+                           "in (--env-from-shell, for local checks); only their names are shown. A name that looks "
+                           "like a secret's is never read.", "In CI, pass each with --env NAME=VALUE instead, so "
+                           "the result does not depend on the machine."),
         "too-large": ("error", "A file is over the size cap for its kind; it is not read.",
                       "Raise the cap (docs/security.md) if the file is honest."),
         "budget-exceeded": ("warning", "An expansion (a robot description, an expression) went past a limit of "

@@ -6,7 +6,10 @@ pull request), so reading is confined and the environment is an explicit input.
   is followed only when its target stays inside those roots. Anything else raises `Refused`,
   whose message names the path and never its content.
 - Environment: only variables given with `--env NAME=VALUE`, set in `archlog.toml` (`[env]`), or
-  on `ENV_ALLOWED` are visible; any other reads as unset. A reader that meets one calls
+  on `ENV_ALLOWED` are visible; any other reads as unset. With `shell` (the command line's
+  `--env-from-shell`, for a user checking locally; never a configuration file's setting), a
+  variable the input asks for and was not given is read from this process's environment unless its
+  name looks like a secret's (`SECRET_LIKE`); the names so read are kept in `from_shell`. A reader that meets one calls
   `not_given(name)`; the reader of the file collects those names (`reads_not_given()`) and reports
   an `env-not-given` diagnostic at its place with `not_given_message` (the name, never a value).
 
@@ -17,6 +20,7 @@ Outside it (library use, unit tests) every path is inside, and the environment i
 from __future__ import annotations
 
 import os
+import re
 import stat
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
@@ -27,6 +31,9 @@ from pathlib import Path
 ENV_ALLOWED = ("ROS_DISTRO", "ROS_VERSION", "ROS_PYTHON_VERSION")
 """Environment variables read from the machine without being given: they name the ROS release,
 which launch files branch on, and hold no secret."""
+
+SECRET_LIKE = re.compile(r"TOKEN|SECRET|PASSW|KEY|CREDENTIAL|AUTH|COOKIE|SESSION|PRIVATE|CERT", re.IGNORECASE)
+"""Names of variables `--env-from-shell` never reads: they may hold a secret."""
 
 MiB = 1 << 20
 SIZE_CAPS = {"source": 8 * MiB, "launch": 4 * MiB, "params": 4 * MiB, "build": 4 * MiB,
@@ -51,6 +58,8 @@ class Sandbox:
     roots: tuple[Path, ...] | None = None
     env: Mapping[str, str] = field(default_factory=dict)
     caps: Mapping[str, int] = field(default_factory=lambda: dict(SIZE_CAPS))
+    shell: bool = False
+    from_shell: list[str] = field(default_factory=list)
 
     def inside(self, path: Path | str) -> bool:
         """Whether `path`, with every symlink resolved, lies under a root (a path with a NUL byte
@@ -97,7 +106,15 @@ class Sandbox:
 
     def getenv(self, name: str) -> str | None:
         """An environment variable archlog may see, or None (unset, or not given)."""
-        return self.env.get(name)
+        return self.env[name] if name in self.env else self.shell_value(name)
+
+    def shell_value(self, name: str) -> str | None:
+        """A variable of this shell under `--env-from-shell` (not a secret's name), else None."""
+        if not self.shell or SECRET_LIKE.search(name) or name not in os.environ:
+            return None
+        if name not in self.from_shell:
+            self.from_shell.append(name)
+        return os.environ[name]
 
 
 def machine_env(given: Mapping[str, str] | None = None) -> dict[str, str]:
@@ -109,7 +126,8 @@ def machine_env(given: Mapping[str, str] | None = None) -> dict[str, str]:
 
 def not_given_message(name: str) -> str:
     return (f"environment variable {name} is not given, so its value is unknown (archlog reads only the "
-            f"variables passed with --env {name}=... or set in [env] of archlog.toml)")
+            f"variables passed with --env {name}=... or set in [env] of archlog.toml, and with --env-from-shell "
+            f"those of this shell)")
 
 
 _current: ContextVar[Sandbox | None] = ContextVar("archlog_sandbox", default=None)
@@ -141,6 +159,11 @@ def read_bytes(path: Path | str, kind: str = "source") -> bytes:
 
 def getenv(name: str) -> str | None:
     return current().getenv(name)
+
+
+def shell_value(name: str) -> str | None:
+    """A variable a launch file's own environment lacks, read from the shell (--env-from-shell)."""
+    return current().shell_value(name)
 
 
 def not_given(name: str) -> None:

@@ -115,7 +115,19 @@ class Namespace:
     cut: int = 0
 
 
-Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives | Namespace
+@dataclass(frozen=True)
+class Switch:
+    """A value a test of another value chooses: `when_equal` where `subject` is `equals`, else
+    `otherwise` (Python's `if x != '': x = '/' + x` after `x` was read from a parameter: which one
+    holds is decided per node instance, when the parameter's value is known)."""
+
+    subject: Value
+    equals: str
+    when_equal: Value
+    otherwise: Value
+
+
+Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives | Namespace | Switch
 MAX_ALTERNATIVES = 16
 
 

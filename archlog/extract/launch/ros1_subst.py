@@ -53,6 +53,8 @@ class SubstContext:
     def getenv(self, name: str, default: str | None = None) -> str:
         if name in self.env:
             return self.env[name]
+        if (shell := sandbox.shell_value(name)) is not None:  # --env-from-shell
+            return shell
         sandbox.not_given(name)
         if default is None:
             raise Unresolved(f"environment variable {name} is not given")

@@ -432,6 +432,8 @@ def environment(interp: Interpreter, name: str, default: object, line: int) -> o
     """An environment variable as os.environ.get(name, default) reads it, from the variables the
     run was given; reading another is reported at `line`."""
     if name not in interp.env:
+        if (shell := sandbox.shell_value(name)) is not None:  # --env-from-shell
+            return shell
         interp.not_given(name, line)
         return default
     value = interp.env[name]
