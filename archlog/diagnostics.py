@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 SEVERITIES = ("error", "warning", "note")
+VERBOSE_ONLY = frozenset({"env-default"})  # codes a report lists only with --verbose: nothing to act on
 
 
 @dataclass(frozen=True)
@@ -162,6 +163,10 @@ CODES: dict[str, Code] = {
         "env-not-given": ("note", "An environment variable was read that was not given (--env, [env] in "
                           "archlog.toml, or the allow-list); it reads as unset. Only its name is shown.",
                           "Pass it with --env NAME=VALUE if the system depends on it."),
+        "env-default": ("note", "An environment variable that was not given was read with a default written next "
+                        "to it ($(optenv X default), EnvironmentVariable's default_value, os.environ.get's), "
+                        "which is used. Listed only with --verbose.",
+                        "Pass it with --env NAME=VALUE if the system runs with another value."),
         "too-large": ("error", "A file is over the size cap for its kind; it is not read.",
                       "Raise the cap (docs/security.md) if the file is honest."),
         "budget-exceeded": ("warning", "An expansion (a robot description, an expression) went past a limit of "

@@ -193,8 +193,8 @@ class Ros1Loader:
         with sandbox.reads_not_given() as unseen, self._crossing_at(path, el):
             budget.spend("elements")
             self._tag(path, el, scope)
-        for name in unseen:
-            self._diag(path, el, "env-not-given", sandbox.not_given_message(name), "note")
+        for read in unseen:
+            self._diag(path, el, *sandbox.env_note(read), "note")
 
     @contextmanager
     def _crossing_at(self, path: Path, el: etree._Element) -> Iterator[None]:
