@@ -150,3 +150,39 @@ def test_a_launch_part_not_read_makes_the_report_partial(tmp_path: Path) -> None
     assert f"not read: {holes[0]['message']} ({launch}:7)" in text
     assert run("--fail-on", "never").returncode == 0
     assert run("--fail-on", "never", "--fail-on-incomplete").returncode == 1
+
+
+def test_a_ros1_include_skipped_makes_the_report_partial(tmp_path: Path) -> None:
+    # an <include> of a package that is not in the workspace (roslaunch would fail on this machine
+    # too): the report is partial at the include's file:line, with a hint that can fix the cause;
+    # an include of a package that is here is read and leaves no hole
+    pkg = tmp_path / "src" / "sim"
+    (pkg / "launch").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package><name>sim</name><version>1.0.0</version><description>d</description>"
+                                     "<maintainer email='a@example.com'>a</maintainer><license>MIT</license>"
+                                     "<buildtool_depend>catkin</buildtool_depend></package>\n")
+    (pkg / "launch" / "inner.launch").write_text("<launch>\n  <param name='x' value='1'/>\n</launch>\n")
+    (pkg / "launch" / "world.launch").write_text(
+        "<launch>\n"
+        "  <include file=\"$(find sim)/launch/inner.launch\"/>\n"
+        "  <include file=\"$(find absent_world_pkg)/launch/empty.launch\">\n"
+        "    <arg name=\"paused\" value=\"true\"/>\n"
+        "  </include>\n"
+        "</launch>\n")
+    launch = "src/sim/launch/world.launch"
+    run = lambda *args: subprocess.run([sys.executable, "-m", "archlog", "check", str(tmp_path), "--launch",  # noqa: E731
+                                        "sim/launch/world.launch", "--source-root", str(tmp_path), *args],
+                                       capture_output=True, text=True, cwd=ROOT, timeout=300)
+    document = json.loads(run("--format", "json").stdout)
+    jsonschema.validate(document, JSON_SCHEMA)
+    holes = document["coverage"]["holes"]
+    assert [(h["file"], h["line"]) for h in holes] == [(launch, 3)]
+    assert "package 'absent_world_pkg' not found" in holes[0]["message"]
+    assert "add the folder of package absent_world_pkg to the analysed paths" in holes[0]["message"]
+    assert "--arg" not in holes[0]["message"]
+    assert "1 part of the configuration not read" in run().stdout
+    sarif = json.loads(run("--format", "sarif").stdout)
+    assert any("absent_world_pkg" in str(n) for n in sarif["runs"][0]["invocations"][0].get(
+        "toolExecutionNotifications", [])), sarif["runs"][0]["invocations"]
+    assert run("--fail-on", "never").returncode == 0
+    assert run("--fail-on", "never", "--fail-on-incomplete").returncode == 1
