@@ -342,9 +342,12 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
 @click.option("--depth", type=click.IntRange(0, 20), default=2, show_default=True,
               help="Edges around --focus (near-miss partners of what is kept are kept too).")
 @click.option("--parameters", is_flag=True, help="dot, svg: draw parameters too (the HTML page toggles them).")
+@click.option("--show", "groups", multiple=True, type=click.Choice(["tf", "dynamic_reconfigure", "rosout", "built-in",
+              "leaf topics", "all"]), help="dot, svg: draw this infrastructure too, hidden unless a finding names "
+              "it (repeatable; the HTML page toggles them).")
 @click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write here instead of stdout.")
 def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus,
-          depth, parameters, output) -> None:
+          depth, parameters, groups, output) -> None:
     """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
     from archlog.queries.session import Session
     from archlog.reports import graph as views
@@ -358,7 +361,9 @@ def graph(paths, launches, args, models, rule_paths, config_path, profile, near_
         except ValueError as exc:
             raise click.UsageError(str(exc)) from None
     try:
-        text = views.draw(drawn, fmt, f"archlog: {' '.join(map(str, analysis.workspace.roots))}", parameters)
+        asked = set(views.GROUPS) - {"parameters"} if "all" in groups else set(groups)
+        text = views.draw(drawn, fmt, f"archlog: {' '.join(map(str, analysis.workspace.roots))}",
+                          asked | ({"parameters"} if parameters else set()))
     except RuntimeError as exc:
         raise click.ClickException(str(exc)) from None
     if output:
