@@ -148,6 +148,9 @@ CODES: dict[str, Code] = {
                          "Write <xacro:NAME/>."),
         "rviz-config": ("warning", "An rviz configuration cannot be read; its displays' topics are unknown.",
                         "Check the -d path."),
+        "param-library": ("warning", "A generate_parameter_library definition (YAML) that a node links cannot be "
+                          "read or does not parse; the node's parameters are not all known, so AL403 does not judge "
+                          "it.", "Fix the file's YAML, or its path in generate_parameter_library()."),
         "ports-file": ("warning", "A YAML file that a node's parameter names, and whose entries are ports of "
                        "the node (yocs_cmd_vel_mux's yaml_cfg_file), cannot be read, or lacks an entry or has one "
                        "without a name; those ports are unknown.",
