@@ -101,3 +101,19 @@ def test_cmake_links_the_definition_to_the_executable(tmp_path: Path) -> None:
     workspace = Workspace([tmp_path], DiagnosticSink())
     assert workspace.executable("limiter", "limiter").parameter_files == [pkg / "src" / "limiter_parameters.yaml"]
     assert workspace.executable("limiter", "other").parameter_files == []
+
+
+def test_rclcpp_descriptor_ranges_and_read_only_are_read() -> None:
+    """ParameterDescriptor ranges (a range variable pushed back or braced in, bounds set by
+    assignment or by the set__ chain) and read_only, from the C++ corpus twin."""
+    from conftest import CORPUS_ROS2
+
+    from archlog.analysis import analyse
+
+    store = analyse([CORPUS_ROS2 / "param_descriptor_range_cpp" / "buggy"], ["arm_guard/launch/guard.launch.py"],
+                    {}, []).store
+    names = {str(port): str(name) for port, _node, name, _default in store.rows("param_read")}
+    bounds = sorted((names[str(port)], str(op), str(bound)) for port, op, bound in store.rows("param_bound"))
+    assert bounds == [("/arm_guard/joint_count", "<=", "7"), ("/arm_guard/joint_count", ">=", "1"),
+                      ("/arm_guard/max_effort", "<=", "40.0"), ("/arm_guard/max_effort", ">=", "0.0")]
+    assert [names[str(port)] for (port,) in store.rows("param_read_only")] == ["/arm_guard/joint_count"]
