@@ -326,6 +326,9 @@ DERIVED: tuple[Relation, ...] = (
     _derived(_PRELUDE, "opaque_many", "For a port of a finding that names the uncertainty left, how many nodes are "
              "opaque when there are more than five (they are then counted, not named).", _PORT,
              ("count", "int", "the number of opaque nodes")),
+    _derived(_PRELUDE, "unread_part", "For a port of a finding that names the uncertainty left, a part of the "
+             "configuration not read (launch_hole) that may start what it misses.", _PORT,
+             ("where", "str", "the part's file:line")),
     _derived(_PRELUDE, "uncertain_port", "The port (and its node) of a finding of AL103, AL104, AL201, AL203 or AL601, "
              "whose message names the opaque nodes it still depends on.", _PORT, _NODE),
     _derived(_PRELUDE, "outside_by", "A subscriber or client whose counterpart only a modelled node outside the "
