@@ -167,3 +167,20 @@ def test_infrastructure_is_hidden_unless_asked_for_or_named() -> None:
     assert "t:/tf" in views.shown(g, {"tf"}).graph and "t:/rosout" not in views.shown(g, {"tf"}).graph
     everything = views.shown(g, set(views.GROUPS)).graph
     assert set(everything) == set(g.graph)
+
+
+def test_show_draws_the_hidden_groups_of_a_ros2_system() -> None:
+    """Every rclpy node's built-in ports (parameter services, /parameter_events), /rosout and a
+    topic nothing subscribes are left out of the default drawing, and --show draws each group."""
+    case = ["graph", str(ROOT / "corpus" / "ros2" / "param_name_typo_py" / "clean"), "--launch",
+            "follow_me/launch/follow.launch.py", "--format", "dot"]
+    drawn = lambda *show: {line.split('"')[1] for line in archlog(*case, *show).stdout.splitlines()  # noqa: E731
+                           if "shape=" in line}
+    default = drawn()
+    assert {"n:/follower", "n:/scan_filter", "t:/scan_filtered"} <= default
+    assert not {"t:/rosout", "t:/parameter_events", "s:/follower/get_parameters", "t:/cmd_vel"} & default
+    assert drawn("--show", "rosout") == default | {"t:/rosout"}
+    assert drawn("--show", "leaf topics") == default | {"t:/cmd_vel"}
+    assert {"t:/parameter_events", "s:/follower/get_parameters", "s:/scan_filter/set_parameters"} <= \
+        drawn("--show", "built-in") - default
+    assert drawn("--show", "all") == drawn("--show", "rosout", "--show", "leaf topics", "--show", "built-in")
