@@ -7,15 +7,16 @@ import os
 import signal
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from archlog import budget, sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.errors import ConfigError
-from archlog.extract import registry
+from archlog.extract import parameter_library, registry
 from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
 from archlog.extract.cpp.msg_headers import generated_headers
+from archlog.extract.cpp.parameter_headers import parameter_headers
 from archlog.extract.files import files_under
 from archlog.extract.launch.model import LaunchConfig
 from archlog.extract.launch.ros1 import LaunchInterpreter
@@ -96,6 +97,11 @@ def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], model
     node_models = load_node_models(models, workspace, diagnostics)
     wanted = {n.kind for n in config.nodes} if config else None
     extracted = registry.extract(workspace, wanted, diagnostics, progress or (lambda _done, _total: None))
+    for key, summary in extracted.items():
+        exe = workspace.executable(*key)
+        if exe is not None and exe.parameter_files:  # a copy: a summary may be cached
+            extracted[key] = replace(summary, ports=list(summary.ports))
+            parameter_library.add_declarations(extracted[key], exe.parameter_files, workspace.display, diagnostics)
     timings["extract"] = _lap(clock)
 
     clock = time.perf_counter()
@@ -139,7 +145,8 @@ def _python(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Exec
 def _cpp(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Executable], _CppJob]:
     """C++ executables are parsed by libclang in worker processes, sharing one include environment."""
     env = CppEnvironment([d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
-                         generated_headers(workspace, diagnostics), workspace.roots)
+                         generated_headers(workspace, diagnostics), workspace.roots,
+                         parameter_headers=parameter_headers(workspace))
     return lambda exe: _CppJob(exe.sources, {s: workspace.display(s) for s in exe.sources}, exe.package, exe.name,
                                env, exe.cls, sandbox.current(), dict(budget.current().limits), exe.linked)
 

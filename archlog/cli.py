@@ -177,13 +177,15 @@ def main() -> None:
               help="Also exit 1 when a node is only partially recovered or opaque (no model or source), or a "
                    "part of the launch configuration was not read (an include skipped, an action not interpreted).")
 @click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
+@click.option("--verbose", "-v", is_flag=True, help="Also list the notes that need no action (an environment "
+              "variable not given whose default, written next to it, was used).")
 @click.option("--fix", "fix", is_flag=True, help="Apply the safe fixes (remaps in launch files) and report what remains.")
 @click.option("--unsafe-fixes", is_flag=True, help="With --fix or --diff: the fixes that may change the meaning too.")
 @click.option("--diff", "show_diff", is_flag=True,
               help="Print the fixes as a unified diff instead of applying them (exit 1 when there is one).")
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
-          source_root_dir, output, fail_on, baseline, write_baseline, new_only, base_ref, fail_on_incomplete, quiet, fix,
-          unsafe_fixes, show_diff) -> None:
+          source_root_dir, output, fail_on, baseline, write_baseline, new_only, base_ref, fail_on_incomplete, quiet, verbose,
+          fix, unsafe_fixes, show_diff) -> None:
     """Check a ROS system configuration and report findings."""
     from rich.console import Console
 
@@ -230,7 +232,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     if write_baseline:
         written = write_baseline_file(findings, write_baseline)
         click.echo(f"archlog: wrote {written} finding{'s' if written != 1 else ''} to {write_baseline}", err=True)
-    report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused), config.adjust(ruleset.rules),
+    report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused, verbose), config.adjust(ruleset.rules),
                     root, Report.node_origins(analysis.store), coverage(analysis.store), labels, hidden,
                     holes(analysis.store))
     report = rebase.report(report)
@@ -352,9 +354,12 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
 @click.option("--depth", type=click.IntRange(0, 20), default=2, show_default=True,
               help="Edges around --focus (near-miss partners of what is kept are kept too).")
 @click.option("--parameters", is_flag=True, help="dot, svg: draw parameters too (the HTML page toggles them).")
+@click.option("--show", "groups", multiple=True, type=click.Choice(["tf", "dynamic_reconfigure", "rosout", "built-in",
+              "leaf topics", "all"]), help="dot, svg: draw this infrastructure too, hidden unless a finding names "
+              "it (repeatable; the HTML page toggles them).")
 @click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write here instead of stdout.")
 def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus,
-          depth, parameters, output) -> None:
+          depth, parameters, groups, output) -> None:
     """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
     from archlog.queries.session import Session
     from archlog.reports import graph as views
@@ -368,7 +373,9 @@ def graph(paths, launches, args, models, rule_paths, config_path, profile, near_
         except ValueError as exc:
             raise click.UsageError(str(exc)) from None
     try:
-        text = views.draw(drawn, fmt, f"archlog: {' '.join(map(str, analysis.workspace.roots))}", parameters)
+        asked = set(views.GROUPS) - {"parameters"} if "all" in groups else set(groups)
+        text = views.draw(drawn, fmt, f"archlog: {' '.join(map(str, analysis.workspace.roots))}",
+                          asked | ({"parameters"} if parameters else set()))
     except RuntimeError as exc:
         raise click.ClickException(str(exc)) from None
     if output:

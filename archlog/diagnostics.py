@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 SEVERITIES = ("error", "warning", "note")
+VERBOSE_ONLY = frozenset({"env-default"})  # codes a report lists only with --verbose: nothing to act on
 
 
 @dataclass(frozen=True)
@@ -147,6 +148,9 @@ CODES: dict[str, Code] = {
                          "Write <xacro:NAME/>."),
         "rviz-config": ("warning", "An rviz configuration cannot be read; its displays' topics are unknown.",
                         "Check the -d path."),
+        "param-library": ("warning", "A generate_parameter_library definition (YAML) that a node links cannot be "
+                          "read or does not parse; the node's parameters are not all known, so AL403 does not judge "
+                          "it.", "Fix the file's YAML, or its path in generate_parameter_library()."),
         "ports-file": ("warning", "A YAML file that a node's parameter names, and whose entries are ports of "
                        "the node (yocs_cmd_vel_mux's yaml_cfg_file), cannot be read, or lacks an entry or has one "
                        "without a name; those ports are unknown.",
@@ -166,6 +170,10 @@ CODES: dict[str, Code] = {
                            "in (--env-from-shell, for local checks); only their names are shown. A name that looks "
                            "like a secret's is never read.", "In CI, pass each with --env NAME=VALUE instead, so "
                            "the result does not depend on the machine."),
+        "env-default": ("note", "An environment variable that was not given was read with a default written next "
+                        "to it ($(optenv X default), EnvironmentVariable's default_value, os.environ.get's), "
+                        "which is used. Listed only with --verbose.",
+                        "Pass it with --env NAME=VALUE if the system runs with another value."),
         "too-large": ("error", "A file is over the size cap for its kind; it is not read.",
                       "Raise the cap (docs/security.md) if the file is honest."),
         "budget-exceeded": ("warning", "An expansion (a robot description, an expression) went past a limit of "

@@ -27,6 +27,7 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 ENV_ALLOWED = ("ROS_DISTRO", "ROS_VERSION", "ROS_PYTHON_VERSION")
 """Environment variables read from the machine without being given: they name the ROS release,
@@ -130,8 +131,25 @@ def not_given_message(name: str) -> str:
             f"those of this shell)")
 
 
+class NotGiven(NamedTuple):
+    """A variable the input read that the run was not given; `defaulted`: the input's own default
+    was used instead ($(optenv X default), EnvironmentVariable's default_value, os.environ.get's)."""
+
+    name: str
+    defaulted: bool = False
+
+
+def env_note(read: NotGiven) -> tuple[str, str]:
+    """The diagnostic code and message of a variable not given: `env-default` (listed only with
+    --verbose) when the input's default was used, else `env-not-given`."""
+    if read.defaulted:
+        return "env-default", (f"environment variable {read.name} is not given, so the default written next to "
+                               f"it is used (pass --env {read.name}=... for another value)")
+    return "env-not-given", not_given_message(read.name)
+
+
 _current: ContextVar[Sandbox | None] = ContextVar("archlog_sandbox", default=None)
-_not_given: ContextVar[list[str] | None] = ContextVar("archlog_env_not_given", default=None)
+_not_given: ContextVar[list[NotGiven] | None] = ContextVar("archlog_env_not_given", default=None)
 
 
 def current() -> Sandbox:
@@ -166,17 +184,22 @@ def shell_value(name: str) -> str | None:
     return current().shell_value(name)
 
 
-def not_given(name: str) -> None:
-    """Note that the input read `name`, a variable the run was not given."""
+def not_given(name: str, defaulted: bool = False) -> None:
+    """Note that the input read `name`, a variable the run was not given (`defaulted`: and used
+    its own default); a read without default outweighs one with."""
     names = _not_given.get()
-    if names is not None and name not in names:
-        names.append(name)
+    if names is None:
+        return
+    if NotGiven(name, True) in names and not defaulted:
+        names.remove(NotGiven(name, True))
+    if NotGiven(name, False) not in names and NotGiven(name, True) not in names:
+        names.append(NotGiven(name, defaulted))
 
 
 @contextmanager
-def reads_not_given() -> Iterator[list[str]]:
+def reads_not_given() -> Iterator[list[NotGiven]]:
     """The variables read but not given while inside (an inner collection keeps its own)."""
-    names: list[str] = []
+    names: list[NotGiven] = []
     token = _not_given.set(names)
     try:
         yield names

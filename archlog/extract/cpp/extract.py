@@ -86,12 +86,13 @@ class CppEnvironment:
     fingerprint: str = ""
     interfaces: Interfaces = field(default_factory=Interfaces)
     refused: list[str] = field(default_factory=list)  # workspace files clang must never read
+    parameter_headers: Path | None = None  # stand-ins of generate_parameter_library headers (parameter_headers.py)
 
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
             [d for d in ("/usr/include/eigen3", "/usr/include/opencv4") if Path(d).is_dir()]
         includes = [str(p) for p in self.workspace_includes if p.is_dir() and sandbox.current().inside(p)]
-        includes += [str(self.generated)] if self.generated else []
+        includes += [str(d) for d in (self.generated, self.parameter_headers) if d]
         self.args = ["-x", "c++", "-std=c++17", "-Wno-everything", "-ferror-limit=0",
                      *(f"-I{d}" for d in includes + system)]
         rdir = resource_dir()

@@ -55,7 +55,7 @@ class SubstContext:
             return self.env[name]
         if (shell := sandbox.shell_value(name)) is not None:  # --env-from-shell
             return shell
-        sandbox.not_given(name)
+        sandbox.not_given(name, defaulted=bool(default))  # $(optenv X) alone: no default written
         if default is None:
             raise Unresolved(f"environment variable {name} is not given")
         return default

@@ -434,7 +434,7 @@ def environment(interp: Interpreter, name: str, default: object, line: int) -> o
     if name not in interp.env:
         if (shell := sandbox.shell_value(name)) is not None:  # --env-from-shell
             return shell
-        interp.not_given(name, line)
+        interp.not_given(sandbox.NotGiven(name, default is not None and not isinstance(default, Unread)), line)
         return default
     value = interp.env[name]
     return Unread(f"environment variable {name} is not known ({value.reason})", line) \
