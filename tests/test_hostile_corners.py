@@ -25,7 +25,7 @@ from support.hostile import TIME_LIMIT, Outside, problems, run_check
 from archlog import budget
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.cpp.clang_ast import line_finder
-from archlog.extract.cpp.stubs import _members
+from archlog.extract.cpp.stubs import members
 from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
 from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.launch.ros1_params import convert
@@ -297,7 +297,7 @@ READERS: dict[str, Callable[[Path], object]] = {
                                                    Workspace([], DiagnosticSink()), DiagnosticSink()),
     "model.yaml": lambda folder: load_models(folder / "model.yaml", "model.yaml", DiagnosticSink()),
     "node.py": lambda folder: extract_python(folder / "node.py", "p", "node.py", "node.py", DiagnosticSink()),
-    "Type.msg": lambda folder: _members((folder / "Type.msg").read_text(errors="replace"), "p"),
+    "Type.msg": lambda folder: members((folder / "Type.msg").read_text(errors="replace"), "p"),
 }
 DOCUMENTED = {"main.launch": "LaunchError", "main.launch.xml": "LaunchError", "main.launch.yaml": "LaunchError",
               "rosparam.yaml": "LaunchError"}

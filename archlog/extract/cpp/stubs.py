@@ -239,7 +239,7 @@ def _interface_header(pkg: str, kind: str, header: str, spellings: set[str],
     includes: list[str] = []
     body = []
     for index, suffix in enumerate(_PART[kind]):
-        fields, nested = members(sections[index] if index < len(sections) else "", pkg, _ros2_nested)
+        fields, nested = members(sections[index] if index < len(sections) else "", pkg)
         includes += nested
         body.append(_struct(f"{name}{suffix}", fields))
     if kind != "msg":
@@ -269,7 +269,13 @@ def _struct(name: str, members: str) -> str:
             f"{members}}};\nusing {name} = {name}_<std::allocator<void>>;\n")
 
 
-def members(section: str, pkg: str, nested: Callable[[str, str], tuple[str, str | None]],
+def _ros2_nested(base: str, pkg: str) -> tuple[str, str | None]:
+    owner, _, type_name = base.rpartition("/")
+    owner, type_name = _ROS1_BUILTINS.get(base, (owner or pkg, type_name))
+    return f"{owner}::msg::{type_name}_<ContainerAllocator>", f"{owner}/msg/{snake(type_name)}.hpp"
+
+
+def members(section: str, pkg: str, nested: Callable[[str, str], tuple[str, str | None]] = _ros2_nested,
             fixed_array: str = "std::array") -> tuple[str, list[str]]:
     """C++ members (fields and constants) of one section of a definition, and the headers of the
     nested types; `nested(type, pkg)` is the C++ type of a non-primitive field and its header."""
@@ -293,12 +299,6 @@ def members(section: str, pkg: str, nested: Callable[[str, str], tuple[str, str 
                 else f"std::vector<{cpp}>"
         lines.append(f"  {cpp} {match.group('name')};\n")
     return "".join(lines), includes
-
-
-def _ros2_nested(base: str, pkg: str) -> tuple[str, str | None]:
-    owner, _, type_name = base.rpartition("/")
-    owner, type_name = _ROS1_BUILTINS.get(base, (owner or pkg, type_name))
-    return f"{owner}::msg::{type_name}_<ContainerAllocator>", f"{owner}/msg/{snake(type_name)}.hpp"
 
 
 def _constant(cpp: str, name: str, value: str) -> str:
