@@ -617,7 +617,8 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
     graph = result.graph
     ports = [p for p in result.ports if running is None or graph is None
              or graph.ports.get((p.file, p.line, p.column), "") in running | {""}]
-    summary.ports += [p for p in ports if p not in summary.ports]  # a header's code is read with each file
+    known = set(summary.ports)
+    summary.ports += [p for p in ports if p not in known]  # a header's code is read with each file
     summary.loads += [n for n in result.loads if n not in summary.loads]
     if result.default_name is not None and summary.default_name is not None and \
             result.default_name != summary.default_name:
