@@ -106,7 +106,7 @@ def _definition(interfaces: Interfaces, pkg: str, kind: str, name: str) -> str |
 
 def _family_header(pkg: str, kind: str, base: str, definition: str) -> tuple[str, list[str]]:
     sections = re.split(r"^---\s*$", definition, flags=re.M)
-    fields = [members(section, pkg, _nested, "boost::array") for section in sections]
+    fields = [members(section, pkg, _nested, "boost::array", field_types=True) for section in sections]
     includes = [include for _text, nested in fields for include in nested]
     texts = [text for text, _nested in fields] + [""] * 3
     if kind == "msg":

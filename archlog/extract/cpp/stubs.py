@@ -92,6 +92,7 @@ EMBEDDED = {
         "GoalInfo goal_info\n---\nint8 ERROR_NONE=0\nint8 ERROR_REJECTED=1\nint8 ERROR_UNKNOWN_GOAL_ID=2\n"
         "int8 ERROR_GOAL_TERMINATED=3\nint8 return_code\nGoalInfo[] goals_canceling\n"),
     "tf2_msgs/msg/TFMessage": "geometry_msgs/TransformStamped[] transforms\n",
+    "diagnostic_msgs/srv/SelfTest": "---\nstring id\nbyte passed\nDiagnosticStatus[] status\n",
     "std_srvs/srv/Empty": "---\n",
     "std_srvs/srv/Trigger": "---\nbool success\nstring message\n",
     "std_srvs/srv/SetBool": "bool data\n---\nbool success\nstring message\n",
@@ -276,9 +277,10 @@ def _ros2_nested(base: str, pkg: str) -> tuple[str, str | None]:
 
 
 def members(section: str, pkg: str, nested: Callable[[str, str], tuple[str, str | None]] = _ros2_nested,
-            fixed_array: str = "std::array") -> tuple[str, list[str]]:
+            fixed_array: str = "std::array", field_types: bool = False) -> tuple[str, list[str]]:
     """C++ members (fields and constants) of one section of a definition, and the headers of the
-    nested types; `nested(type, pkg)` is the C++ type of a non-primitive field and its header."""
+    nested types; `nested(type, pkg)` is the C++ type of a non-primitive field and its header;
+    `field_types`: each field's type also named `_<field>_type`, as ROS 1's gencpp does."""
     lines, includes = [], []
     for raw in section.splitlines():
         text = raw.split("#", 1)[0].strip() if '"' not in raw and "'" not in raw else raw.strip()
@@ -297,7 +299,8 @@ def members(section: str, pkg: str, nested: Callable[[str, str], tuple[str, str 
         if match.group("array"):
             cpp = f"{fixed_array}<{cpp}, {match.group('n')}>" if match.group("n") and not match.group("size") \
                 else f"std::vector<{cpp}>"
-        lines.append(f"  {cpp} {match.group('name')};\n")
+        name = match.group("name")
+        lines.append(f"  typedef {cpp} _{name}_type;\n  _{name}_type {name};\n" if field_types else f"  {cpp} {name};\n")
     return "".join(lines), includes
 
 

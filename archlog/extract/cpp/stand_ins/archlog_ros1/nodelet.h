@@ -88,7 +88,7 @@ public:
 }  // namespace pluginlib
 
 #define PLUGINLIB_EXPORT_CLASS(class_type, base_class_type) \
-  static_assert(sizeof(class_type) > 0 && sizeof(base_class_type) > 0, "archlog stand-in")
+  namespace archlog_pluginlib { static_assert(sizeof(class_type) > 0 && sizeof(base_class_type) > 0, ""); }
 #define NODELET_DEBUG(...) ARCHLOG_ROS_PRINT(__VA_ARGS__)
 #define NODELET_INFO(...) ARCHLOG_ROS_PRINT(__VA_ARGS__)
 #define NODELET_WARN(...) ARCHLOG_ROS_PRINT(__VA_ARGS__)
