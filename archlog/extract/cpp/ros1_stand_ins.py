@@ -60,14 +60,10 @@ def ros1_stand_in_dir(missing: Iterable[str], interfaces: Interfaces, exists: Ca
 
 @cache
 def library_includes(library: str) -> tuple[str, ...]:
-    """The ROS headers a library stand-in includes (messages), directly or through another stand-in."""
-    found: list[str] = []
-    for include in _INCLUDE.findall((API_DIR / "archlog_ros1" / f"{library}.h").read_text()):
-        if include.startswith("archlog_ros1/"):
-            found += [] if Path(include).stem == library else library_includes(Path(include).stem)
-        elif MESSAGE_INCLUDE.match(include):
-            found.append(include)
-    return tuple(dict.fromkeys(found))
+    """The ROS headers a library stand-in includes (roscpp, other libraries, messages): the real
+    ones where installed, else stand-ins too."""
+    text = (API_DIR / "archlog_ros1" / f"{library}.h").read_text()
+    return tuple(name for name in _INCLUDE.findall(text) if ros1_library(name) or MESSAGE_INCLUDE.match(name))
 
 
 def _message_header(include: str, interfaces: Interfaces) -> tuple[str, list[str]]:

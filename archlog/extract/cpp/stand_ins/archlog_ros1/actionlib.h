@@ -3,7 +3,7 @@
 // (_action_goal_type::_goal_type...).
 #ifndef ARCHLOG_ROS1_ACTIONLIB_H
 #define ARCHLOG_ROS1_ACTIONLIB_H
-#include "archlog_ros1/roscpp.h"
+#include <ros/ros.h>
 
 namespace actionlib
 {

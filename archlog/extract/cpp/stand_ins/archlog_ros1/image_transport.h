@@ -1,8 +1,8 @@
 // archlog stand-in for image_transport (ROS 1). Written for archlog: declarations only.
 #ifndef ARCHLOG_ROS1_IMAGE_TRANSPORT_H
 #define ARCHLOG_ROS1_IMAGE_TRANSPORT_H
-#include "archlog_ros1/message_filters.h"
-#include "archlog_ros1/roscpp.h"
+#include <message_filters/simple_filter.h>
+#include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 

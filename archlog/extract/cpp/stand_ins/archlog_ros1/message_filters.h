@@ -2,7 +2,7 @@
 // inputs. Written for archlog: declarations only.
 #ifndef ARCHLOG_ROS1_MESSAGE_FILTERS_H
 #define ARCHLOG_ROS1_MESSAGE_FILTERS_H
-#include "archlog_ros1/roscpp.h"
+#include <ros/ros.h>
 
 namespace message_filters
 {

@@ -2,7 +2,9 @@
 // Written for archlog: declarations only.
 #ifndef ARCHLOG_ROS1_NODELET_H
 #define ARCHLOG_ROS1_NODELET_H
-#include "archlog_ros1/roscpp.h"
+#include <ros/ros.h>
+
+#include "archlog_ros1/print.h"
 
 namespace nodelet
 {

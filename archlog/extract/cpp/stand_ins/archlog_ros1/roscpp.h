@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "archlog_ros1/print.h"
+
 namespace XmlRpc
 {
 class XmlRpcValue
@@ -498,11 +500,6 @@ uint32_t getPort();
 const std::string & getURI();
 }  // namespace master
 
-namespace console
-{
-template<class... Args> void print(const Args &... args);
-}  // namespace console
-
 class Exception : public std::runtime_error
 {
 public:
@@ -516,8 +513,6 @@ public:
 }  // namespace ros
 
 // rosconsole: every argument is evaluated, nothing is printed
-#define ARCHLOG_ROS_PRINT(...) ::ros::console::print(__VA_ARGS__)
-#define ARCHLOG_ROS_STREAM(args) do { std::stringstream archlog_stream; archlog_stream << args; } while (false)
 #define ROS_DEBUG(...) ARCHLOG_ROS_PRINT(__VA_ARGS__)
 #define ROS_INFO(...) ARCHLOG_ROS_PRINT(__VA_ARGS__)
 #define ROS_WARN(...) ARCHLOG_ROS_PRINT(__VA_ARGS__)

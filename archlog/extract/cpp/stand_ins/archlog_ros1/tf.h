@@ -2,7 +2,7 @@
 // Written for archlog: declarations only.
 #ifndef ARCHLOG_ROS1_TF_H
 #define ARCHLOG_ROS1_TF_H
-#include "archlog_ros1/roscpp.h"
+#include <ros/ros.h>
 #include <geometry_msgs/TransformStamped.h>
 
 namespace tf2

@@ -2,7 +2,7 @@
 // server (ROS 1). Written for archlog: declarations only.
 #ifndef ARCHLOG_ROS1_TOOLS_H
 #define ARCHLOG_ROS1_TOOLS_H
-#include "archlog_ros1/roscpp.h"
+#include <ros/ros.h>
 #include <boost/thread/recursive_mutex.hpp>
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <visualization_msgs/InteractiveMarker.h>
