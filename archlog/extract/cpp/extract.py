@@ -21,7 +21,7 @@ import shlex
 import shutil
 import subprocess
 import tempfile
-from collections.abc import Collection
+from collections.abc import Callable, Collection
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -343,18 +343,14 @@ def _parse_ros1(index: ci.Index, source: Path, env: CppEnvironment,
     def exists(name: str) -> bool:
         return env.find(name, folders) is not None
 
-    wanted, own, tu, used = list(scan.missing), env.file_args(source), None, []
-    for _attempt in range(2):
+    def attempt(wanted: list[str]) -> tuple[ci.TranslationUnit, list[str]]:
         folder = ros1_stand_in_dir(wanted, env.interfaces, exists)
         used = [str(folder), str(API_DIR)] if folder else []
         extra = [f"-I{f}" for f in used]
-        tu = _load(index, source, env.parse_args(source) + extra, env.args + own + extra, scan.unsaved)
-        more = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))
-                and (ros1_library(m.group(1)) or MESSAGE_INCLUDE.match(m.group(1))) and m.group(1) not in wanted]
-        if not more:  # else: included by an installed header, found only while parsing
-            break
-        wanted += more
-    return tu, used
+        return _load(index, source, env.parse_args(source) + extra, env.args + env.file_args(source) + extra,
+                     scan.unsaved), used
+
+    return _with_stand_ins(list(scan.missing), attempt, lambda n: bool(ros1_library(n) or MESSAGE_INCLUDE.match(n)))
 
 
 def _parse_ros2(index: ci.Index, source: Path, env: CppEnvironment,
@@ -367,22 +363,28 @@ def _parse_ros2(index: ci.Index, source: Path, env: CppEnvironment,
     def exists(name: str) -> bool:
         return env.find(name, folders) is not None
 
-    tu, used = None, []
-    for _attempt in range(2):
+    def attempt(wanted: list[str]) -> tuple[ci.TranslationUnit, list[str]]:
         folder = stand_in_dir(wanted, scan.spellings, env.interfaces, exists)
         used = ([str(folder)] if folder else []) + [str(API_DIR)]
         stand_in_rclcpp = any(library_for(n) for n in wanted) and \
             not any(exists(n) for n in ["rclcpp/rclcpp.hpp", *library_interfaces("rclcpp")])
         pch = _rclcpp_pch() if stand_in_rclcpp else None
-        tu = index.parse(str(source), args=[f"-I{f}" for f in used] + env.args + env.file_args(source)
-                         + (["-include-pch", str(pch), "-Xclang", "-fno-validate-pch"] if pch else []),
-                         unsaved_files=scan.unsaved, options=_KEEP_GOING)
-        more = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))
-                and (library_for(m.group(1)) or INTERFACE_INCLUDE.match(m.group(1))) and m.group(1) not in wanted]
-        if not more:  # else: included by an installed header, found only while parsing
-            break
-        wanted += more
-    return tu, used
+        return index.parse(str(source), args=[f"-I{f}" for f in used] + env.args + env.file_args(source)
+                           + (["-include-pch", str(pch), "-Xclang", "-fno-validate-pch"] if pch else []),
+                           unsaved_files=scan.unsaved, options=_KEEP_GOING), used
+
+    return _with_stand_ins(wanted, attempt, lambda n: bool(library_for(n) or INTERFACE_INCLUDE.match(n)))
+
+
+def _with_stand_ins(wanted: list[str], attempt: Callable[[list[str]], tuple[ci.TranslationUnit, list[str]]],
+                    stands_in: Callable[[str], bool]) -> tuple[ci.TranslationUnit, list[str]]:
+    """The unit parsed with stand-ins for the `wanted` includes (and the stand-in folders used); once
+    more with the headers clang did not find that have stand-ins (included by an installed header,
+    found only while parsing)."""
+    tu, used = attempt(wanted)
+    more = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))
+            and stands_in(m.group(1)) and m.group(1) not in wanted]
+    return attempt(wanted + list(dict.fromkeys(more))) if more else (tu, used)
 
 
 def is_ros2_source(source: Path, env: CppEnvironment) -> bool:

@@ -19,7 +19,7 @@ from collections.abc import Callable, Iterable
 from functools import cache
 from pathlib import Path
 
-from archlog.extract.cpp.stubs import API_DIR, Interfaces, headers_folder, members
+from archlog.extract.cpp.stubs import API_DIR, Interfaces, members, stand_ins_folder
 
 # first component of a (non-message) include -> the stand-in declaring that library
 ROS1_API = {"ros": "roscpp", "nodelet": "nodelet", "nodelet_topic_tools": "nodelet", "pluginlib": "nodelet",
@@ -42,20 +42,14 @@ def ros1_library(include: str) -> str | None:
 def ros1_stand_in_dir(missing: Iterable[str], interfaces: Interfaces, exists: Callable[[str], bool]) -> Path | None:
     """A folder with stand-ins for the missing ROS 1 includes (and the headers they include that
     are missing too), or None when none of them is a ROS 1 library or message header."""
-    files: dict[str, str] = {}
-    pending = [name for name in missing if ros1_library(name) or MESSAGE_INCLUDE.match(name)]
-    while pending:
-        include = pending.pop()
-        if include in files:
-            continue
+
+    def header(include: str) -> tuple[str, Iterable[str]]:
         library = ros1_library(include)
         if library is not None:
-            files[include] = f'// archlog stand-in\n#include "archlog_ros1/{library}.h"\n'
-            needed = library_includes(library)
-        else:
-            files[include], needed = _message_header(include, interfaces)
-        pending += [n for n in needed if n not in files and not exists(n)]
-    return headers_folder(files) if files else None
+            return f'// archlog stand-in\n#include "archlog_ros1/{library}.h"\n', library_includes(library)
+        return _message_header(include, interfaces)
+
+    return stand_ins_folder([n for n in missing if ros1_library(n) or MESSAGE_INCLUDE.match(n)], header, exists)
 
 
 @cache

@@ -172,23 +172,32 @@ def stand_in_dir(missing: Iterable[str], spellings: set[str], interfaces: Interf
                  exists: Callable[[str], bool]) -> Path | None:
     """A folder with stand-ins for the missing ROS 2 includes (and the interfaces they need), or
     None when none of them is a ROS 2 library or interface header."""
+
+    def header(include: str) -> tuple[str, Iterable[str]]:
+        library = library_for(include)
+        if library is not None:
+            same = _TF2_SAME_AS_ROS1.match(include)
+            return (f"// archlog stand-in\n#include <tf2/{same.group(1)}.h>\n" if same else
+                    f'// archlog stand-in\n#include "archlog_ros2/{library}.hpp"\n'), library_interfaces(library)
+        match = INTERFACE_INCLUDE.match(include)
+        assert match is not None  # only library and interface includes are asked for
+        pkg, kind, name = match.groups()
+        return _interface_header(pkg, kind, name, spellings, interfaces)
+
+    return stand_ins_folder([n for n in missing if library_for(n) or INTERFACE_INCLUDE.match(n)], header, exists)
+
+
+def stand_ins_folder(missing: list[str], header: Callable[[str], tuple[str, Iterable[str]]],
+                     exists: Callable[[str], bool]) -> Path | None:
+    """A folder with a stand-in for each missing include (`header(include)`: its text and the
+    includes it needs) and for each include they need that does not exist; None when none is missing."""
     files: dict[str, str] = {}
-    pending = [name for name in missing if library_for(name) or INTERFACE_INCLUDE.match(name)]
+    pending = list(missing)
     while pending:
         include = pending.pop()
         if include in files:
             continue
-        library = library_for(include)
-        if library is not None:
-            same = _TF2_SAME_AS_ROS1.match(include)
-            files[include] = f"// archlog stand-in\n#include <tf2/{same.group(1)}.h>\n" if same else \
-                f'// archlog stand-in\n#include "archlog_ros2/{library}.hpp"\n'
-            needed = library_interfaces(library)
-        else:
-            match = INTERFACE_INCLUDE.match(include)
-            assert match is not None  # pending holds library and interface includes only
-            pkg, kind, header = match.groups()
-            files[include], needed = _interface_header(pkg, kind, header, spellings, interfaces)
+        files[include], needed = header(include)
         pending += [n for n in needed if n not in files and not exists(n)]
     return headers_folder(files) if files else None
 
