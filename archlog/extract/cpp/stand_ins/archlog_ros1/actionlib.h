@@ -7,24 +7,19 @@
 
 namespace actionlib
 {
-template<class ActionSpec> struct ActionParts
-{
-  typedef typename ActionSpec::_action_goal_type::_goal_type Goal;
-  typedef typename ActionSpec::_action_result_type::_result_type Result;
-  typedef typename ActionSpec::_action_feedback_type::_feedback_type Feedback;
-  typedef boost::shared_ptr<const Goal> GoalConstPtr;
-  typedef boost::shared_ptr<const Result> ResultConstPtr;
+// the types of an action's parts, as actionlib's own ACTION_DEFINITION names them
+#define ACTION_DEFINITION(ActionSpec) \
+  typedef typename ActionSpec::_action_goal_type::_goal_type Goal; \
+  typedef typename ActionSpec::_action_result_type::_result_type Result; \
+  typedef typename ActionSpec::_action_feedback_type::_feedback_type Feedback; \
+  typedef boost::shared_ptr<const Goal> GoalConstPtr; \
+  typedef boost::shared_ptr<const Result> ResultConstPtr; \
   typedef boost::shared_ptr<const Feedback> FeedbackConstPtr;
-};
 
 template<class ActionSpec> class SimpleActionServer
 {
 public:
-  typedef typename ActionParts<ActionSpec>::Goal Goal;
-  typedef typename ActionParts<ActionSpec>::Result Result;
-  typedef typename ActionParts<ActionSpec>::Feedback Feedback;
-  typedef typename ActionParts<ActionSpec>::GoalConstPtr GoalConstPtr;
-  typedef typename ActionParts<ActionSpec>::FeedbackConstPtr FeedbackConstPtr;
+  ACTION_DEFINITION(ActionSpec)
   typedef boost::function<void(const GoalConstPtr &)> ExecuteCallback;
 
   SimpleActionServer(std::string name, ExecuteCallback execute_callback, bool auto_start);
@@ -66,10 +61,7 @@ public:
 template<class ActionSpec> class SimpleActionClient
 {
 public:
-  typedef typename ActionParts<ActionSpec>::Goal Goal;
-  typedef typename ActionParts<ActionSpec>::Result Result;
-  typedef typename ActionParts<ActionSpec>::ResultConstPtr ResultConstPtr;
-  typedef typename ActionParts<ActionSpec>::FeedbackConstPtr FeedbackConstPtr;
+  ACTION_DEFINITION(ActionSpec)
   typedef boost::function<void(const SimpleClientGoalState &, const ResultConstPtr &)> SimpleDoneCallback;
   typedef boost::function<void()> SimpleActiveCallback;
   typedef boost::function<void(const FeedbackConstPtr &)> SimpleFeedbackCallback;
