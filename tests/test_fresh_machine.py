@@ -1,6 +1,7 @@
 """The README's example on a machine without Debian's ROS or clang packages (the libclang wheel
 only): the same findings, and at most a one-line diagnostic naming the header that was missing
-(issue 14) besides the note that the stand-in ROS 1 headers were read. Debian's files are hidden with bind mounts in a private mount namespace."""
+(issue 14) besides the note that the stand-in ROS 1 headers were read. Debian's files are hidden
+with bind mounts in a private mount namespace."""
 
 from __future__ import annotations
 
