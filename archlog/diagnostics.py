@@ -82,8 +82,11 @@ CODES: dict[str, Code] = {
                         "include folder to the analysed paths."),
         "cpp-crash": ("error", "The C++ parser crashed on an executable; its ROS calls are not recovered.",
                       "Report it; meanwhile describe the node with --model."),
-        "cpp-stand-in": ("note", "archlog's stand-in ROS 2 headers lack an API a line uses; it is read from the "
+        "cpp-stand-in": ("note", "archlog's stand-in ROS headers lack an API a line uses; it is read from the "
                          "tokens.", "Nothing; report the API if its ports are missing."),
+        "cpp-ros1-stand-in": ("note", "A C++ file includes ROS 1 library headers that are not installed (ros/ros.h "
+                              "...); it is read with archlog's stand-in headers, which declare the same API.",
+                              "Nothing; install the ROS 1 headers to read it with the real ones."),
         "cpp-private-name": ("error", "A NodeHandle method is given a ~name: roscpp throws at start-up.",
                              "Use a NodeHandle(\"~\") and a relative name."),
         "cpp-several-nodes": ("note", "A C++ file creates several nodes; they are read as one.",
