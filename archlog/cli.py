@@ -21,6 +21,8 @@ if TYPE_CHECKING:  # the heavy parts (clingo, libclang, numpy, rich) load in the
 
     from archlog.analysis import Analysis
     from archlog.config import Config
+    from archlog.reports.paths import Rebase
+    from archlog.rules.engine import Finding
     from archlog.rules.ruleset import RuleSet
 
 FAIL_ON = (*SEVERITIES, "never")
@@ -146,6 +148,17 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
     return _analyse(given, quiet), given.ruleset, given.config
 
 
+def _in_repository(analysis: Analysis, ruleset: RuleSet, config: Config, rebase: Rebase
+                   ) -> tuple[list[Finding], dict]:
+    """The findings, each at a location in the analysed repository (a shipped model or a file
+    outside it only as a related location), and the labels of the locations they left."""
+    from archlog.queries.session import Session
+    from archlog.reports.relocate import relocate, shipped
+
+    return relocate(Session(analysis.store, ruleset, config).findings(), analysis.store,
+                    lambda file: shipped(file) or os.path.isabs(rebase(file)))
+
+
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="archlog")
 def main() -> None:
@@ -189,12 +202,10 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     """Check a ROS system configuration and report findings."""
     from rich.console import Console
 
-    from archlog.queries.session import Session
     from archlog.reports.annotations import to_github, to_junit
     from archlog.reports.codequality import to_codequality
     from archlog.reports.json_report import to_json
     from archlog.reports.paths import Rebase, source_root
-    from archlog.reports.relocate import relocate, shipped
     from archlog.reports.report import Report, coverage, holes
     from archlog.reports.sarif import to_sarif
     from archlog.reports.suppress import apply_suppressions, read_baseline, stale_baseline
@@ -206,8 +217,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     analysis = _analyse(given, quiet or fmt != "text" and output is None)
     root = analysis.workspace.roots[0]
     rebase = Rebase(analysis.workspace.roots, source_root(root, source_root_dir))
-    findings, labels = relocate(Session(analysis.store, ruleset, config).findings(), analysis.store,
-                                lambda file: shipped(file) or os.path.isabs(rebase(file)))
+    findings, labels = _in_repository(analysis, ruleset, config, rebase)
     files = {str(row[1]) for row in analysis.store.rows("location")}
     with sandbox.active(analysis.policy):  # inline suppressions are read where the analysis could read
         elements = {str(node): (loc[0], loc[1]) for node, _pkg, _exe, elem in analysis.store.rows("node")
@@ -361,12 +371,13 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
 def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus,
           depth, parameters, groups, output) -> None:
     """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
-    from archlog.queries.session import Session
     from archlog.reports import graph as views
+    from archlog.reports.paths import Rebase, source_root
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env, quiet=output is None)
-    drawn = views.build(analysis.store, Session(analysis.store, ruleset, config).findings())
+    rebase = Rebase(analysis.workspace.roots, source_root(analysis.workspace.roots[0], None))
+    drawn = views.build(analysis.store, _in_repository(analysis, ruleset, config, rebase)[0])
     if focus:
         try:
             drawn = views.focus(drawn, focus, depth)
