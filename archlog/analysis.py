@@ -10,7 +10,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from archlog import budget, sandbox
+from archlog import budget, collector, sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.errors import ConfigError
 from archlog.extract import parameter_library, registry
@@ -108,15 +108,16 @@ def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], model
     system = link(workspace, config, node_models, extracted, diagnostics)
     timings["link"] = _lap(clock)
 
-    clock = time.perf_counter()
-    store = compose(system, diagnostics)
-    timings["facts"] = _lap(clock)
+    with collector.paused():
+        clock = time.perf_counter()
+        store = compose(system, diagnostics)
+        timings["facts"] = _lap(clock)
 
-    clock = time.perf_counter()
-    add_near_names(store, near_threshold, diagnostics)
-    add_param_near(store, near_threshold)
-    add_name_fits(store)
-    timings["near-miss"] = _lap(clock)
+        clock = time.perf_counter()
+        add_near_names(store, near_threshold, diagnostics)
+        add_param_near(store, near_threshold)
+        add_name_fits(store)
+        timings["near-miss"] = _lap(clock)
     return Analysis(workspace, system.config, store, diagnostics, timings)
 
 
