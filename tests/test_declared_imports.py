@@ -25,8 +25,8 @@ DEBIAN_PYTHON = {
     "tests/support/roslaunch_oracle.py",
     "tests/support/topic_monitor.py",
 }
-LOCAL = {"archlog", "support", "conftest", "python_bench", "scale_bench",  # this repository's own modules
-         "rosidl_standin"}  # tests/support/ros2_standin: a stand-in for ROS 2's Python API
+LOCAL = {"archlog", "support", "rosidl_standin",  # tests/support/ros2_standin: a stand-in for ROS 2's Python API
+         *(p.stem for folder in ("tests", "bench") for p in (ROOT / folder).glob("*.py"))}  # modules beside each other
 
 
 def _normal(dist: str) -> str:
