@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass
 
 from archlog import budget
@@ -43,6 +44,16 @@ def partly_known(parts: tuple[str | Unknown, ...]) -> Unknown:
     return Unknown(" + ".join(p.expr if isinstance(p, Unknown) else repr(p) for p in parts), unknown.file,
                    unknown.line, first.prefix if isinstance(first, Unknown) else first,
                    last.suffix if isinstance(last, Unknown) else last)
+
+
+def one_of(options: list[str | Unknown]) -> Unknown:
+    """The unknown string that is one of `options` (at least one unknown): it starts with what
+    every option is known to start with, and ends with what every option is known to end with."""
+    unknown = next(o for o in options if isinstance(o, Unknown))
+    starts = [o.prefix if isinstance(o, Unknown) else o for o in options]
+    ends = [(o.suffix if isinstance(o, Unknown) else o)[::-1] for o in options]
+    return Unknown("one of " + ", ".join(map(str, options)), unknown.file, unknown.line,
+                   os.path.commonprefix(starts), os.path.commonprefix(ends)[::-1])
 
 
 def order(cell: str | int | Unknown) -> tuple[int, str | int, str, int]:

@@ -97,7 +97,7 @@ rospy.Subscriber('~' + socket.gethostname(), LaserScan, print)
 """
 
 
-def _relay(root: Path, remap: str) -> dict[str, object]:
+def _relay(root: Path, remap: str, source: str = RELAY) -> dict[str, object]:
     """The name of each port of a relay in namespace /r1 whose names are partly known, and each pattern."""
     corpus = CORPUS / "partly_known_name" / "buggy" / "src" / "fleet_base"
     package = root / "src" / "relay"
@@ -106,7 +106,7 @@ def _relay(root: Path, remap: str) -> dict[str, object]:
     (package / "package.xml").write_text((corpus / "package.xml").read_text().replace("fleet_base", "relay"))
     (package / "CMakeLists.txt").write_text("cmake_minimum_required(VERSION 3.0.2)\nproject(relay)\n"
                                             "catkin_install_python(PROGRAMS scripts/relay.py DESTINATION bin)\n")
-    (package / "scripts" / "relay.py").write_text(RELAY)
+    (package / "scripts" / "relay.py").write_text(source)
     (package / "launch" / "relay.launch").write_text(RELAY_LAUNCH.format(remap=remap))
     analysis = analyse([root], ["relay/launch/relay.launch"], {}, [])
     ports = {kind: name for kind in ("publisher", "subscriber") for _p, _n, name, _t in rows(analysis, kind)}
@@ -152,3 +152,11 @@ def test_names_from_get_namespace_resolve_as_roscpp_does(tmp_path: Path) -> None
     assert {(str(u), p, s) for u, p, s in rows(analysis, "unknown_pattern")} == {
         ("?(chosen (string edits not understood) + '/debug')", "", "/debug"),
         ("?('~/' + argv [ 1 ]/state)", "/r1/odometer", "/state")}
+
+
+
+def test_a_name_that_is_one_of_several_partly_known_keeps_only_what_all_share(tmp_path: Path) -> None:
+    """`host + ('/scan_best' if fast else '/front_scan')` ends with /scan_best or /front_scan: the
+    pattern keeps what both end with, never one option's end alone (that claims /front_scan cannot be it)."""
+    either = RELAY.replace("'/scan/'", "('/scan_best' if rospy.get_param('~fast', False) else '/front_scan')")
+    assert _relay(tmp_path, "", either)["publisher"] == ("/r1/robot_", "")

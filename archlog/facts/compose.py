@@ -27,6 +27,7 @@ from archlog.values import (
     Unknown,
     Value,
     concat,
+    one_of,
     partly_known,
 )
 
@@ -351,8 +352,14 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
     if isinstance(value, Alternatives):
         bound = [_bind(option, node, config) for option in value.options]
         flat = [o for b in bound for o in _options(b)]
-        unknown = next((o for o in flat if isinstance(o, Unknown)), None)
-        return unknown or (flat[0] if len(set(flat)) == 1 else Alternatives(tuple(dict.fromkeys(flat)), value.every))
+        distinct = list(dict.fromkeys(flat))
+        if len(distinct) == 1:
+            return distinct[0]
+        if over := next((o for o in distinct if isinstance(o, OverBudget)), None):
+            return over
+        if any(isinstance(o, Unknown) for o in distinct):
+            return one_of(distinct)  # what every option is known to start and end with, no more
+        return Alternatives(tuple(distinct), value.every)
     assert isinstance(value, Concat), value  # a list-parameter name is expanded (_each) before binding
     joined = concat(*[_bind(p, node, config) for p in value.parts])
     if isinstance(joined, Concat):
