@@ -145,7 +145,24 @@ class Switch:
     otherwise: Value
 
 
-Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives | Namespace | Switch
+@dataclass(frozen=True)
+class CommandArg:
+    """A value a node's command line gives (a Python node's argparse argument): its `position`-th
+    positional word (from 1, as models' `{N}`), or the word after one of its `options` (with
+    `present`, a flag: `present` when one of them is on the line); `default` when the instance's
+    command line lacks it. `valued`: the parser's options that take a value (their value words are
+    not positional). Bound per node instance, like a parameter read."""
+
+    position: int
+    options: tuple[str, ...]
+    default: Value
+    valued: tuple[str, ...] = ()
+    file: str = ""
+    line: int = 0
+    present: str | None = None
+
+
+Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives | Namespace | Switch | CommandArg
 MAX_ALTERNATIVES = 16
 
 

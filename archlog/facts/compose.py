@@ -14,10 +14,12 @@ from archlog.facts.followed_types import Following, add_followed
 from archlog.facts.namespaces import add_namespaces
 from archlog.facts.parameters import add_param_spec, add_parameters
 from archlog.facts.store import FactStore
+from archlog.system.command_line import command_word
 from archlog.system.link import System
 from archlog.system.node_models import UNSET
 from archlog.values import (
     Alternatives,
+    CommandArg,
     Concat,
     Namespace,
     OverBudget,
@@ -344,6 +346,9 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
         return _bind(value.default, node, config)
     if isinstance(value, Namespace):
         return _namespace(value, node, config)
+    if isinstance(value, CommandArg):
+        given = command_word(value, node.args)
+        return given if given is not None else _bind(value.default, node, config)
     if isinstance(value, Switch):
         subject = _single(_bind(value.subject, node, config))
         if isinstance(subject, Unknown):

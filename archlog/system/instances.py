@@ -8,6 +8,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchConfig, LaunchNode
 from archlog.extract.launch.ros2_params import matches
 from archlog.extract.summary import NodeSummary
+from archlog.system.command_line import command_value
 
 
 def complete_instances(config: LaunchConfig, summaries: dict[tuple[str, str], NodeSummary],
@@ -39,8 +40,9 @@ def _place(node: LaunchNode, summary: NodeSummary | None, diagnostics: Diagnosti
 def _source_name(node: LaunchNode, summary: NodeSummary | None, diagnostics: DiagnosticSink) -> str:
     """The node name the code gives, or the executable's when that is not known."""
     fallback = node.type.rsplit("::", 1)[-1]
-    if summary is not None and isinstance(summary.default_name, str) and summary.default_name:
-        return summary.default_name
+    given = command_value(summary.default_name, node.args) if summary is not None and summary.default_name else None
+    if isinstance(given, str) and given:
+        return given  # as the code names it, with the instance's command-line arguments
     why = "has no source or model" if summary is None else "gives itself a name not known statically"
     diagnostics.add(node.elem.file, node.elem.line, "node-name", f"the launch file does not name this node and "
                     f"{'/'.join(node.kind)} {why}; using {fallback}", "note")

@@ -7,6 +7,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import Element, LaunchConfig, LaunchNode
 from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
+from archlog.system.command_line import command_value
 
 
 def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Workspace,
@@ -21,8 +22,9 @@ def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Work
         source = executable.sources[0] if executable and executable.sources else None
         file = summary.name_file or (workspace.display(source) if source else pkg)
         elem = Element(f"x{index:05d}", file, summary.name_line or 1)
-        name = summary.default_name if isinstance(summary.default_name, str) else exe
-        unknown = summary.default_name is not None and not isinstance(summary.default_name, str)
+        given = command_value(summary.default_name, "") if summary.default_name is not None else None
+        name = given if isinstance(given, str) and given else exe
+        unknown = given is not None and not isinstance(given, str)
         if unknown:
             diagnostics.add(elem.file, elem.line, "node-name", f"node name of {pkg}/{exe} is not known statically; "
                             f"using the executable name {exe}", "note")

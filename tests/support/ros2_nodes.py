@@ -16,6 +16,7 @@ import importlib.util
 import itertools
 import json
 import os
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -69,6 +70,7 @@ class NodeRun:
     entry: str = ""
     remaps: tuple[tuple[str, str], ...] = ()
     params: tuple[tuple[str, object], ...] = ()
+    words: tuple[str, ...] = ()  # the instance's own command-line arguments (launch args=/arguments=)
 
     def argv(self) -> list[str]:
         namespace, _, base = self.name.rpartition("/")
@@ -82,7 +84,7 @@ class NodeRun:
             ros_args += ["-r", f"{source}:={target}"]
         for name, value in self.params:
             ros_args += ["-p", f"{name}:={json.dumps(value)}"]
-        return [sys.executable, *start, "--ros-args", *ros_args]
+        return [sys.executable, *start, *self.words, "--ros-args", *ros_args]
 
 
 @contextmanager
@@ -125,7 +127,8 @@ def rclpy_runs(analysis: Analysis) -> list[NodeRun]:
         prefix = node.name + "/"
         params = tuple((key[len(prefix):], value) for key, (value, _elem) in analysis.config.params.items()
                        if key.startswith(prefix) and "/" not in key[len(prefix):])
-        runs.append(NodeRun(node.name, source, root, executable.entry, tuple((a, b) for a, b, _e in node.remaps), params))
+        runs.append(NodeRun(node.name, source, root, executable.entry, tuple((a, b) for a, b, _e in node.remaps), params,
+                            tuple(shlex.split(node.args))))
     return runs
 
 

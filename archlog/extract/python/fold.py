@@ -14,8 +14,9 @@ import ast
 import re
 from dataclasses import dataclass, replace
 
+from archlog.extract.python.command_line import parsed_argument
 from archlog.extract.python.index import Assigned, FileIndex, Function, arg, is_self_attr
-from archlog.values import Namespace, ParamList, ParamRef, Switch, Unknown, Value, alternatives, concat
+from archlog.values import CommandArg, Namespace, ParamList, ParamRef, Switch, Unknown, Value, alternatives, concat
 
 _PARAMETER_VALUES = {"value", "string_value", "integer_value", "double_value", "bool_value"}
 _KIND = {ast.AugAssign: "augmented assignment", ast.For: "loop variable", ast.With: "with target"}
@@ -163,6 +164,9 @@ class ValueFolder(FileIndex):
             return concat(*parts)
         if isinstance(expr, ast.Call):
             return self.call_value(expr, depth, scope)
+        if isinstance(expr, ast.IfExp) and isinstance(test := self.value(expr.test, depth + 1, scope), CommandArg) \
+                and test.present is not None:  # decided per instance by a command-line flag
+            return Switch(test, "true", self.value(expr.body, depth + 1, scope), self.value(expr.orelse, depth + 1, scope))
         if isinstance(expr, ast.IfExp):
             return alternatives([self.value(expr.body, depth + 1, scope), self.value(expr.orelse, depth + 1, scope)],
                                 False, self.unknown(expr, "one of several values"))
@@ -172,6 +176,9 @@ class ValueFolder(FileIndex):
                 isinstance(expr.slice.value, str) and isinstance(listed := self.value(expr.value, depth + 1, scope),
                                                                  ParamList) and not listed.field and not listed.entry:
             return replace(listed, field=expr.slice.value, defaults=None)  # `item["topic"]` of a list of dicts
+        if isinstance(expr, ast.Attribute) and (given := parsed_argument(
+                self, self.file, expr, scope, lambda default, where: self.value(default, depth + 1, where))) is not None:
+            return given
         return self.unknown(expr)
 
     def name_value(self, expr: ast.Name, depth: int, scope: Function | None) -> Value:
