@@ -278,8 +278,10 @@ DERIVED: tuple[Relation, ...] = (
     _derived(_PRELUDE, "is_unknown", "A value static analysis could not know (a term unknown(N)).",
              ("value", "id", "the unknown term")),
     _derived(_PRELUDE, "alternative_instances", "Two node instances started by themselves (standalone): alternatives "
-             "that are not known to run together (AL202 and AL301 do not pair them).",
+             "that are not known to run together (AL103, AL202 and AL301 do not pair them).",
              ("a", "id", "a node's element"), ("b", "id", "another node's element")),
+    _derived(_PRELUDE, "alternative_nodes", "Two nodes whose instances are alternatives (alternative_instances).",
+             ("a", "name", "a node"), ("b", "name", "another node")),
     _derived(_PRELUDE, "port_node", "The node instance a port of any kind belongs to.", _PORT, _NODE),
     _derived(_PRELUDE, "published", "A topic some publisher uses.", ("topic", "name", "the topic")),
     _derived(_PRELUDE, "subscribed", "A topic some subscriber uses.", ("topic", "name", "the topic")),
