@@ -1,5 +1,5 @@
-"""Namespace facts: the namespace of every node and of every resolved name, and the scope of
-every parameter (the node whose private namespace holds it, or global)."""
+"""Namespace facts: the namespace and last segment of every resolved name, the namespace of every
+node, and the scope of every parameter (the node whose private namespace holds it, or global)."""
 
 from __future__ import annotations
 
@@ -7,18 +7,19 @@ from archlog.facts.schema import RELATIONS
 from archlog.facts.store import FactStore
 from archlog.names import namespace_of
 
-ADDED = ("node_namespace", "name_namespace", "param_scope")
+ADDED = ("node_namespace", "name_namespace", "name_leaf", "param_scope")
 _PARAMS = ("param", "param_read", "param_write")
 
 
 def add_namespaces(store: FactStore) -> None:
-    """node_namespace, name_namespace and param_scope rows for the names already in `store`."""
+    """node_namespace, name_namespace, name_leaf and param_scope rows for the names already in `store`."""
     used: set[str] = set()
     for relation in (r for r in RELATIONS if r.name not in ADDED):
         for index in (i for i, c in enumerate(relation.columns) if c.type == "name"):
             used.update(c for row in store.rows(relation.name) if isinstance(c := row[index], str) and c[:1] == "/")
     for name in sorted(used - {"/"}):
         store.add("name_namespace", name, namespace_of(name))
+        store.add("name_leaf", name, name.rsplit("/", 1)[-1])
     nodes = {str(row[0]) for row in store.rows("node")}
     for node in sorted(nodes):
         store.add("node_namespace", node, namespace_of(node))

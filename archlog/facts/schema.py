@@ -91,6 +91,8 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("configuration", "name_namespace", "The namespace part of every resolved name the facts use (nodes, "
          "topics, services, actions, parameters, remaps).",
          ("name", "name", "a resolved name"), ("ns", "name", "its namespace: /a/b for /a/b/c, / for /c")),
+    _rel("configuration", "name_leaf", "The last segment of every resolved name the facts use.",
+         ("name", "name", "a resolved name"), ("leaf", "str", "its last segment: c for /a/b/c")),
     _rel("configuration", "param_scope", "Whose parameter a parameter name is: a node's private parameter (~name) "
          "or a global one (any other namespace).",
          ("param", "name", "a parameter set or used"),
