@@ -1,6 +1,8 @@
-"""Values a Python node takes from its command line through argparse: `args.NAME` where `args =
+"""Values a Python node takes from its command line: through argparse, `args.NAME` where `args =
 parser.parse_args()` (or `parser.parse_known_args()`, whose first item it is) and `parser` is an
-`argparse.ArgumentParser` the same function (or module) builds with `add_argument` calls.
+`argparse.ArgumentParser` the same function (or module) builds with `add_argument` calls; or a word
+of the command line itself, `sys.argv[N]` / `rospy.myargv(argv=sys.argv)[N]` (guarded by
+`if len(argv) > N`, with the default the guard gives).
 
 The value is a CommandArg, bound per node instance to the instance's command-line words (launch
 `args=`/`arguments=`, an ExecuteProcess's words) or to the argument's default when the words lack it.
@@ -85,7 +87,7 @@ def _parser_of(index: FileIndex, args: str, scope: Function | None) -> tuple[str
     if isinstance(call, ast.Subscript) and isinstance(call.slice, ast.Constant) and call.slice.value == 0:
         call = call.value  # parse_known_args()[0]
     if not (isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute) and call.func.attr in _PARSE
-            and isinstance(call.func.value, ast.Name) and _reads_command_line(call)):
+            and isinstance(call.func.value, ast.Name) and _reads_command_line(call, index, where)):
         return None
     parser = call.func.value.id
     made = (where.assigns if where is not None else index.module_assigns).get(parser, [])
@@ -101,11 +103,48 @@ def _unpacked(root: ast.AST, name: str) -> list[ast.expr]:
             and isinstance(target.elts[0], ast.Name) and target.elts[0].id == name]
 
 
-def _reads_command_line(call: ast.Call) -> bool:
+def _reads_command_line(call: ast.Call, index: FileIndex, where: Function | None) -> bool:
     """parse_args() reads sys.argv; given words, only those that are the command line (rospy.myargv,
-    rclpy's remove_ros_args, sys.argv[1:]) are followed."""
+    rclpy's remove_ros_args, sys.argv[1:], or a variable holding one of them, from its second word)
+    are followed."""
     given = arg(call, 0, "args")
+    if isinstance(given, ast.Subscript) and isinstance(given.slice, ast.Slice) and given.slice.upper is None \
+            and isinstance(given.slice.lower, ast.Constant) and given.slice.lower.value == 1:
+        return _command_line(index, given.value, where)
     return given is None or "argv" in ast.unparse(given)
+
+
+def _command_line(index: FileIndex, expr: ast.expr, where: Function | None) -> bool:
+    """`sys.argv`, `rospy.myargv(...)`, rclpy's `remove_ros_args(...)`, or a name one function (or
+    the module) assigns once to one of them: every word of the command line, the program first."""
+    if isinstance(expr, ast.Name):
+        values = (where.assigns if where is not None and expr.id in where.assigns else index.module_assigns).get(expr.id, [])
+        return len(values) == 1 and isinstance(values[0], ast.expr) and _command_line(index, values[0], where)
+    called = index.qualified(expr.func) if isinstance(expr, ast.Call) else None
+    return index.qualified(expr) == "sys.argv" or called is not None and called.rsplit(".", 1)[-1] in (
+        "myargv", "remove_ros_args")
+
+
+def argv_word(index: FileIndex, file: str, expr: ast.expr, scope: Function | None,
+              fold: Callable[[ast.expr, Function | None], Value]) -> Value | None:
+    """`argv[N]` of the command line (N >= 1; a word not given is unknown), or `argv[N] if
+    len(argv) > N else D` (D when not given); None for anything else."""
+    guarded = None
+    if isinstance(expr, ast.IfExp) and isinstance(test := expr.test, ast.Compare) and len(test.ops) == 1 and \
+            isinstance(test.left, ast.Call) and isinstance(test.left.func, ast.Name) and test.left.func.id == "len" \
+            and len(test.left.args) == 1 and isinstance(bound := test.comparators[0], ast.Constant) and \
+            isinstance(bound.value, int) and not isinstance(bound.value, bool):
+        guarded = ast.unparse(test.left.args[0]), bound.value + isinstance(test.ops[0], ast.Gt), expr.orelse
+        expr = expr.body
+    if not (isinstance(expr, ast.Subscript) and isinstance(expr.slice, ast.Constant) and
+            isinstance(position := expr.slice.value, int) and not isinstance(position, bool) and position >= 1
+            and _command_line(index, expr.value, scope)):
+        return None
+    if guarded is not None and (guarded[0] != ast.unparse(expr.value) or guarded[1] != position + 1):
+        return None
+    default = fold(guarded[2], scope) if guarded is not None else \
+        Unknown(f"{ast.unparse(expr)} (command-line argument {position} not given)", file, expr.lineno)
+    return CommandArg(position, (), default, (), file, expr.lineno)
 
 
 def _calls(index: FileIndex, parser: str, where: Function | None) -> list[ast.Call]:

@@ -14,7 +14,7 @@ import ast
 import re
 from dataclasses import dataclass, replace
 
-from archlog.extract.python.command_line import parsed_argument
+from archlog.extract.python.command_line import argv_word, parsed_argument
 from archlog.extract.python.index import Assigned, FileIndex, Function, arg, is_self_attr
 from archlog.values import CommandArg, Namespace, ParamList, ParamRef, Switch, Unknown, Value, alternatives, concat
 
@@ -164,6 +164,9 @@ class ValueFolder(FileIndex):
             return concat(*parts)
         if isinstance(expr, ast.Call):
             return self.call_value(expr, depth, scope)
+        if isinstance(expr, (ast.Subscript, ast.IfExp)) and (word := argv_word(
+                self, self.file, expr, scope, lambda default, where: self.value(default, depth + 1, where))) is not None:
+            return word
         if isinstance(expr, ast.IfExp) and isinstance(test := self.value(expr.test, depth + 1, scope), CommandArg) \
                 and test.present is not None:  # decided per instance by a command-line flag
             return Switch(test, "true", self.value(expr.body, depth + 1, scope), self.value(expr.orelse, depth + 1, scope))
