@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -61,6 +62,10 @@ def test_an_unsure_list_not_empty_makes_the_finding_a_note(tmp_path: Path) -> No
     _ctl, findings = Engine(load_rules([path])).run(small_store())
     assert sorted((f.message, f.severity) for f in findings if f.rule.id == "USR1") == [
         ("/x", "warning"), ("/x unless /c", "note"), ("/y", "warning")]
+    for finding in findings:  # a configured severity (archlog.toml [severity]) is the rule's; unsure stays a note
+        finding.rule = replace(finding.rule, severity="error")
+    assert sorted((f.tag, f.severity) for f in findings if f.rule.id == "USR1") == [
+        ("USR1", "error"), ("USR1", "error"), ("USR1 [note]", "note")]
 
 
 @pytest.mark.parametrize("body, line, column, words", [

@@ -44,9 +44,14 @@ class Finding:
     message: str
     location: Location
     related: list[Location]
-    severity: str  # the rule's, or `note` when one of the lists the rule calls `unsure` is not empty
+    unsure: bool  # one of the lists the rule calls `unsure` is not empty: the finding is a note
     subjects: dict[str, list[str]] = field(default_factory=dict)
     suppression: tuple[str, str] | None = None  # (kind: inSource | external, justification)
+
+    @property
+    def severity(self) -> str:
+        """The rule's severity (as the configuration sets it), or `note` when unsure."""
+        return "note" if self.unsure else self.rule.severity
 
     @property
     def tag(self) -> str:
@@ -124,7 +129,7 @@ class Engine:
                     values[name] = _list_text(", ".join(sorted(items)), rule.list_phrases.get(name))
                     shown += sorted(items)
                     unsure = unsure or (bool(items) and name in rule.unsure)
-                result.append(_finding(rule, values, store, shown, "note" if unsure else rule.severity))
+                result.append(_finding(rule, values, store, shown, unsure))
         self.timings["findings"] = time.perf_counter() - clock
         return sorted(result, key=lambda f: (f.location.file, f.location.line, f.rule.id, f.message))
 
@@ -145,7 +150,7 @@ def _list_text(joined: str, phrase: str | None) -> str:
     return phrase.replace("{}", joined) if joined else ""
 
 
-def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list[str], severity: str) -> Finding:
+def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list[str], unsure: bool) -> Finding:
     """A finding; listed items that are located ids (ports, elements) are related locations too."""
     def locate(column: str) -> Location:
         found = store.location(str(values[column]))
@@ -161,7 +166,7 @@ def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list
     message = rule.message.format(**{k: render(v) for k, v in values.items()})
     related = [found for found in map(locate, rule.related) if found.file]  # an optional column may hold `none`
     also = [Location(*found) for item in listed if (found := store.location(item))]
-    return Finding(rule, values, message, locate(rule.location), related + also, severity, subjects)
+    return Finding(rule, values, message, locate(rule.location), related + also, unsure, subjects)
 
 
 # -- checking rule programs ---------------------------------------------------------------
