@@ -134,9 +134,11 @@ CODES: dict[str, Code] = {
         "model-yaml": ("error", "A model file is not valid YAML.", "Fix the YAML."),
         "model-schema": ("error", "A model does not follow the model schema.",
                          "Fix it as the message says (archlog/models/model.schema.json)."),
-        "robot-description": ("warning", "A robot description (URDF/xacro) cannot be read or expanded.",
-                              "Fix the description; xacro expressions are evaluated by archlog's restricted "
-                              "evaluator."),
+        "robot-description": ("warning", "A robot description (URDF/xacro) cannot be read or expanded, or an "
+                              "include of it names a package not here (the include is left out, the rest read). "
+                              "The spawner of such a description is partial: its gazebo plugins may be more.",
+                              "Fix the description, or add the folder of the package it includes to the analysed "
+                              "paths; xacro expressions are evaluated by archlog's restricted evaluator."),
         "tf-args": ("warning", "A node that broadcasts the transform its command line gives (static_transform_publisher) "
                     "has arguments that are not `x y z yaw pitch roll frame child` nor `x y z qx qy qz qw frame child`; "
                     "the transform it broadcasts is unknown, so no transform can be reported missing.",

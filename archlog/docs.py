@@ -12,7 +12,7 @@ from pathlib import Path
 
 from archlog.diagnostics import CODES
 from archlog.facts import schema
-from archlog.reports.rule_help import example, fixtures, help_text
+from archlog.reports.rule_help import example, fixtures, help_text, severity
 from archlog.rules.ruleset import load_rules
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
@@ -49,7 +49,7 @@ def rules_markdown() -> str:
     lines += [f"| [{r.id}](#{r.id.lower()}) | {r.name} | {r.severity} | {r.summary} |" for r in rules]
     lines.append("")
     for r in rules:
-        lines += [f"## {r.id}", "", f"**{r.name}** ({r.severity}, precision {r.precision}; tags: {', '.join(r.tags)})",
+        lines += [f"## {r.id}", "", f"**{r.name}** ({severity(r)}, precision {r.precision}; tags: {', '.join(r.tags)})",
                   "", r.summary, "", r.description, ""]
         if example(r):
             lines += ["**Example finding** (from its fixtures)", "", f"    {example(r)}", ""]

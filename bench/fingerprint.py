@@ -30,7 +30,7 @@ def system(variant: Path) -> dict[str, list]:
     result: dict[str, list] = {
         relation: sorted(json.dumps([store.plain(c) for c in row]) for row in store.rows(relation))
         for relation in sorted(BY_NAME)}
-    result["findings"] = sorted(f"{f.rule.id} {f.location.file}:{f.location.line}:{f.location.column} "
+    result["findings"] = sorted(f"{f.tag} {f.location.file}:{f.location.line}:{f.location.column} "
                                 f"{render(next(iter(f.values.values())))}: {f.message}" for f in findings)
     result["diagnostics"] = sorted(str(d) for d in analysis.diagnostics.items)
     return result

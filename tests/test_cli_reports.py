@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -75,6 +76,24 @@ def test_sarif_validates_against_the_official_schema(tmp_path: Path, sarif_schem
     [result] = run["results"]
     assert result["ruleId"] == "AL102" and result["relatedLocations"]
     assert result["locations"][0]["physicalLocation"]["artifactLocation"]["uriBaseId"] == "SRCROOT"
+
+
+def test_a_finding_an_unread_part_may_answer_is_a_note_in_every_report(tmp_path: Path) -> None:
+    workspace = tmp_path / "ws"
+    shutil.copytree(CORPUS / "service_mismatch" / "buggy", workspace)
+    launch = workspace / "src" / "mission_control" / "launch" / "navigation.launch"
+    launch.write_text(launch.read_text().replace('<group ns="nav">', '<group ns="nav">\n'
+                                                 '    <include file="$(find planning_servers)/launch/servers.launch"/>'))
+    args = ["check", workspace, *launch_of(workspace)]
+    result = archlog(*args, "--format", "json")
+    assert result.returncode == 0, result.stderr
+    [finding] = json.loads(result.stdout)["findings"]
+    assert finding["rule"] == "AL201" and finding["severity"] == "note"
+    assert "not read at src/mission_control/launch/navigation.launch:6 starts its server" in finding["message"]
+    sarif = json.loads(archlog(*args, "--format", "sarif").stdout)
+    assert [r["level"] for r in sarif["runs"][0]["results"]] == ["note"]
+    assert archlog(*args, "--fail-on", "note").returncode == 1
+    assert "0 errors" in archlog(*args, "--quiet").stdout
 
 
 def test_bad_input_gives_diagnostics_in_every_format(tmp_path: Path, sarif_schema: dict) -> None:

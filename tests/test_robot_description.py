@@ -89,6 +89,28 @@ def test_broken_xacro_is_a_diagnostic_at_the_parameter(tmp_path: Path) -> None:
     assert "xacro cannot expand" in result.diagnostics.items[0].message
 
 
+def test_an_include_of_a_package_not_here_is_left_out_and_the_spawner_is_partial(tmp_path: Path) -> None:
+    shutil.copytree(CASES / "clean" / "bot", tmp_path / "bot")
+    xacro = tmp_path / "bot" / "urdf" / "bot.urdf.xacro"
+    xacro.write_text(xacro.read_text().replace('<link name="base_link"/>', '<link name="base_link"/>\n'
+                                               '  <xacro:include filename="$(find vendor_lidar)/urdf/lidar.xacro"/>'))
+    result = analyse([tmp_path], ["bot/sim.launch"], {}, [])
+    assert [(d.file, d.line, d.code) for d in result.diagnostics.items] == [
+        ("bot/urdf/bot.urdf.xacro", 5, "robot-description")]
+    assert "<xacro:include> left out: package 'vendor_lidar' not found" in result.diagnostics.items[0].message
+    assert ("/spawn_bot", "/imu/data", "sensor_msgs/Imu") in ports(result, "publisher")  # the rest is read
+    assert list(result.store.rows("node_incomplete")) == [
+        ("/spawn_bot", "its robot description was read without an include (package 'vendor_lidar' not found)")]
+
+
+def test_a_description_not_read_leaves_its_spawner_partial(tmp_path: Path) -> None:
+    shutil.copytree(CASES / "clean" / "bot", tmp_path / "bot")
+    (tmp_path / "bot" / "urdf" / "sensors.xacro").write_text("<robot><broken\n")
+    result = analyse([tmp_path], ["bot/sim.launch"], {}, [])
+    assert list(result.store.rows("node_incomplete")) == [
+        ("/spawn_bot", "the robot description in robot_description was not read: its gazebo plugins are unknown")]
+
+
 def test_unreadable_descriptions_and_arguments_are_diagnostics(tmp_path: Path) -> None:
     shutil.copytree(CASES / "clean" / "bot", tmp_path / "bot")
     (tmp_path / "bot" / "urdf" / "other.urdf").write_text(

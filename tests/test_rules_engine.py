@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -53,6 +54,20 @@ def test_unknown_values_never_join(tmp_path: Path) -> None:
     assert [f for f in findings if f.rule.id == "USR1"] == []
 
 
+def test_an_unsure_list_not_empty_makes_the_finding_a_note(tmp_path: Path) -> None:
+    path = rule_file(tmp_path, "hit(T, P) :- publisher(P, _, T, _).\nblind(P, \"/c\") :- publisher(P, \"/a\", _, _).\n",
+                     message="{topic}{unseen}")
+    path.write_text(path.read_text().replace('%! message:', '%! lists: {unseen: {of: blind(port), text: " unless {}"}}\n'
+                                             '%! unsure: [unseen]\n%! message:'))
+    _ctl, findings = Engine(load_rules([path])).run(small_store())
+    assert sorted((f.message, f.severity) for f in findings if f.rule.id == "USR1") == [
+        ("/x", "warning"), ("/x unless /c", "note"), ("/y", "warning")]
+    for finding in findings:  # a configured severity (archlog.toml [severity]) is the rule's; unsure stays a note
+        finding.rule = replace(finding.rule, severity="error")
+    assert sorted((f.tag, f.severity) for f in findings if f.rule.id == "USR1") == [
+        ("USR1", "error"), ("USR1", "error"), ("USR1 [note]", "note")]
+
+
 @pytest.mark.parametrize("body, line, column, words", [
     ("hit(T, P) :- publisher(P, _, T _).\n", 8, 32, "syntax error"),
     ("hit(T, P) :- publisher(P, _, T, _), not subscriber(Q, _, X, _).\n", 8, 52, "unsafe variables Q, X"),
@@ -94,6 +109,7 @@ def test_non_stratified_rules_are_rejected(tmp_path: Path) -> None:
     (('%! message: "{topic}"', '%! message: "{topic}"\n%! lists: {l: {of: hit(port)}}'), 8, "as a mapping must be"),
     (('%! message: "{topic}"', '%! message: "{topic}"\n%! lists: {l: {of: hit(port), text: no list}}'), 8,
      "as a mapping must be"),
+    (('%! message: "{topic}"', '%! message: "{topic}"\n%! unsure: [gone]'), 8, "`unsure` must be a list of the rule's"),
     (("%! summary: test\n", ""), 1, "metadata lacks summary"),
     (("%! summary: test\n", "%! summary: test\n%! sumary: typo\n"), 5, "unknown metadata key 'sumary'"),
     (("%! summary: test\n", "%! summary: test\n%! description: |\n%!   two\n%!   lines\n%! helps: x\n"), 8,

@@ -153,7 +153,8 @@ def _line_of(text: str, key: str) -> int:
 
 
 def describe(findings: list[Finding]) -> str:
-    """One line per finding, sorted: `RULE file:line subject: message` (the rendered message)."""
-    lines = sorted(f"{f.rule.id} {f.location.file}:{f.location.line} {render(next(iter(f.values.values())))}: "
+    """One line per finding, sorted: `RULE file:line subject: message` (the rendered message);
+    `RULE [note] ...` when the finding is a note of a rule of another severity (`unsure`)."""
+    lines = sorted(f"{f.tag} {f.location.file}:{f.location.line} {render(next(iter(f.values.values())))}: "
                    f"{f.message}" for f in findings)
     return "".join(line + "\n" for line in lines)

@@ -64,9 +64,16 @@ def example(rule: Rule) -> str:
     return ""
 
 
+def severity(rule: Rule) -> str:
+    """The rule's severity, and when its findings are notes instead (`unsure`)."""
+    if not rule.unsure:
+        return rule.severity
+    return f"{rule.severity}; a note when what archlog could not read may hold the counterpart"
+
+
 def explain(rule: Rule) -> str:
     """Everything about a rule, as `archlog rule ID` prints it."""
-    parts = [f"{rule.id} {rule.name} ({rule.severity}, precision {rule.precision}"
+    parts = [f"{rule.id} {rule.name} ({severity(rule)}, precision {rule.precision}"
              + (f"; tags: {', '.join(rule.tags)})" if rule.tags else ")"), "", rule.summary]
     if rule.description:
         parts += ["", rule.description]

@@ -44,12 +44,19 @@ class Finding:
     message: str
     location: Location
     related: list[Location]
+    unsure: bool  # one of the lists the rule calls `unsure` is not empty: the finding is a note
     subjects: dict[str, list[str]] = field(default_factory=dict)
     suppression: tuple[str, str] | None = None  # (kind: inSource | external, justification)
 
     @property
     def severity(self) -> str:
-        return self.rule.severity
+        """The rule's severity (as the configuration sets it), or `note` when unsure."""
+        return "note" if self.unsure else self.rule.severity
+
+    @property
+    def tag(self) -> str:
+        """The rule id, and the severity when it is not the rule's: `AL201 [note]`."""
+        return self.rule.id if self.severity == self.rule.severity else f"{self.rule.id} [{self.severity}]"
 
     @property
     def fingerprint(self) -> str:
@@ -114,13 +121,15 @@ class Engine:
             for atom in ctl.symbolic_atoms.by_signature(rule.predicate, len(rule.columns)):
                 values = {c: store.from_term(a) for c, a in zip(rule.columns, atom.symbol.arguments)}
                 shown: list[str] = []
+                unsure = False
                 for name, (relation, column) in rule.lists.items():
                     if relation not in listed:
                         listed[relation] = _binary_rows(ctl, relation, store)
                     items = listed[relation].get(atom.symbol.arguments[rule.columns.index(column)], set())
                     values[name] = _list_text(", ".join(sorted(items)), rule.list_phrases.get(name))
                     shown += sorted(items)
-                result.append(_finding(rule, values, store, shown))
+                    unsure = unsure or (bool(items) and name in rule.unsure)
+                result.append(_finding(rule, values, store, shown, unsure))
         self.timings["findings"] = time.perf_counter() - clock
         return sorted(result, key=lambda f: (f.location.file, f.location.line, f.rule.id, f.message))
 
@@ -141,7 +150,7 @@ def _list_text(joined: str, phrase: str | None) -> str:
     return phrase.replace("{}", joined) if joined else ""
 
 
-def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list[str]) -> Finding:
+def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list[str], unsure: bool) -> Finding:
     """A finding; listed items that are located ids (ports, elements) are related locations too."""
     def locate(column: str) -> Location:
         found = store.location(str(values[column]))
@@ -157,7 +166,7 @@ def _finding(rule: Rule, values: dict[str, Cell], store: FactStore, listed: list
     message = rule.message.format(**{k: render(v) for k, v in values.items()})
     related = [found for found in map(locate, rule.related) if found.file]  # an optional column may hold `none`
     also = [Location(*found) for item in listed if (found := store.location(item))]
-    return Finding(rule, values, message, locate(rule.location), related + also, subjects)
+    return Finding(rule, values, message, locate(rule.location), related + also, unsure, subjects)
 
 
 # -- checking rule programs ---------------------------------------------------------------

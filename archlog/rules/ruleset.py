@@ -27,7 +27,7 @@ from archlog.diagnostics import SEVERITIES
 
 BUILTIN = Path(__file__).resolve().parent / "builtin"
 REQUIRED = ("id", "name", "severity", "finding", "location", "message", "summary")
-OPTIONAL = ("related", "description", "help", "tags", "precision", "lists", "url", "fix")
+OPTIONAL = ("related", "description", "help", "tags", "precision", "lists", "unsure", "url", "fix")
 FIX_KINDS = ("remap", "rename")  # what a rule's `fix` edits: a node's remaps, a name where it is set
 KEYS = REQUIRED + OPTIONAL  # a closed set: any other key is an error (docs/writing-rules.md documents each)
 PRECISIONS = ("high", "medium", "low")
@@ -66,6 +66,10 @@ class Rule:
     lists: dict[str, tuple[str, str]] = field(default_factory=dict)
     # list name -> the phrase it renders as ("{}" is the list), or nothing when the list is empty
     list_phrases: dict[str, str] = field(default_factory=dict)
+    # `unsure: [list, ...]`: lists naming what archlog could not read (an unread launch part, an
+    # opaque node) that might hold the finding's missing counterpart; a finding with any of them not
+    # empty is a note, whatever the rule's severity
+    unsure: list[str] = field(default_factory=list)
     # metadata key -> its line in the file (errors about a key point at it)
     lines: dict[str, int] = field(default_factory=dict)
     # `fix: {remap: [node, from, to], safe: BOOL}`: the columns of the node whose launch element gets
@@ -213,6 +217,9 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
         if not match or match.group(2).strip() not in columns:
             raise fail("lists", f"list '{name}' must look like relation(column), with a column of {head.group(1)}")
         lists[str(name)] = (match.group(1), match.group(2).strip())
+    unsure = meta.get("unsure") or []
+    if not isinstance(unsure, list) or not all(isinstance(n, str) and n in lists for n in unsure):
+        raise fail("unsure", f"`unsure` must be a list of the rule's list names ({', '.join(lists) or 'none given'})")
     fix = meta.get("fix")
     kinds = [k for k in FIX_KINDS if isinstance(fix, dict) and k in fix]
     if fix is not None and not (isinstance(fix, dict) and len(kinds) == 1 and set(fix) <= {*kinds, "safe"}
@@ -230,6 +237,7 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
         related=list(related), description=str(meta.get("description", "")).strip(),
         help=str(meta.get("help", "")).strip(), url=str(meta.get("url", "")).strip(), tags=list(meta.get("tags") or []),
         precision=precision, file=file, line=line, lists=lists, list_phrases=phrases, lines=lines,
+        unsure=list(unsure),
         fix=tuple(fix[kinds[0]]) if fix else None, fix_safe=bool(fix and fix.get("safe", False)),
         fix_kind=kinds[0] if fix else "remap",
     )

@@ -41,16 +41,17 @@ RVIZ_TOOL_TOPICS = {"rviz/SetGoal": "/move_base_simple/goal", "rviz/SetInitialPo
 
 
 def configured_ports(node: LaunchNode, config: LaunchConfig, workspace: Workspace,
-                     diagnostics: DiagnosticSink) -> list[Port]:
+                     diagnostics: DiagnosticSink) -> tuple[list[Port], str | None]:
+    """The ports a node's command line configures, and why they may not be all (None: they are)."""
     words = shlex.split(node.args) if node.args else []
     if (node.pkg, node.type) == ("gazebo_ros", "spawn_model"):
         return spawned_ports(node, words, config, workspace, diagnostics)
     if (node.pkg, node.type) == ("rosbag", "record"):
-        return _recorded(node, words)
+        return _recorded(node, words), None
     if (node.pkg, node.type) == ("rviz", "rviz"):
         display = next((words[i + 1] for i, w in enumerate(words[:-1]) if w in ("-d", "--display-config")), None)
-        return _rviz(node, Path(display), diagnostics) if display else []
-    return []
+        return (_rviz(node, Path(display), diagnostics) if display else []), None
+    return [], None
 
 
 def _recorded(node: LaunchNode, words: list[str]) -> list[Port]:

@@ -183,11 +183,13 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     if summary is not None and any(p.info_of is not None for p in summary.ports):
         summary = replace(summary, ports=[placed_camera_info(p, node) for p in summary.ports])
     slots = summary.plugins if summary is not None and summary.plugins else model.plugins if model else ()
-    extra = configured_ports(node, config, workspace, diagnostics) + loader_ports(node) + \
-        plugin_ports(node, slots, models.classes, config, diagnostics)
+    configured, unread = configured_ports(node, config, workspace, diagnostics)
+    extra = configured + loader_ports(node) + plugin_ports(node, slots, models.classes, config, diagnostics)
     if extra:
         summary = replace(summary, ports=summary.ports + extra) if summary is not None else \
             NodeSummary(node.pkg, node.type, "model", ports=extra, incomplete="only its configured ports are known")
+    if summary is not None and unread and not summary.incomplete:
+        summary = replace(summary, incomplete=unread)
     if summary is not None and any(listed(p) for p in summary.ports):
         summary = replace(summary, ports=file_ports(node, summary.ports, config, workspace, diagnostics))
     if summary is not None:

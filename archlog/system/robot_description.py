@@ -5,7 +5,8 @@ xacro; xacro files are expanded with the xacro library routed through archlog's 
 sandboxed reading and budgets (see `xacro_expand`; nothing in them is run), with `$(find pkg)`
 answered from the workspace. The plugins run inside gzserver once
 `spawn_model -param NAME` inserts the model, so their ports are given to that spawn_model instance,
-and so are the transforms they broadcast (a plugin model's `transforms:`).
+and so are the transforms they broadcast (a plugin model's `transforms:`). A description not read,
+read without an include, or holding a plugin without a model leaves that instance partial, with why.
 """
 
 from __future__ import annotations
@@ -69,20 +70,29 @@ class Description:
     doc: xml.dom.minidom.Document
     files: list[Path]
     elem: Element
+    left_out: list[str]  # includes not read (why)
 
 
 def spawned_ports(node: LaunchNode, words: list[str], config: LaunchConfig, workspace: Workspace,
-                  diagnostics: DiagnosticSink) -> list[Port]:
-    """The plugin ports of the description `spawn_model -urdf -param NAME` inserts."""
+                  diagnostics: DiagnosticSink) -> tuple[list[Port], str | None]:
+    """The plugin ports of the description `spawn_model -urdf -param NAME` inserts, and why they
+    may not be all (None when they are)."""
     _positional, option = split_options(words, {"-param", "-robot_namespace"})
     if "-param" not in option:
-        return []
+        return [], None
     found = description(option["-param"], node, config, workspace, diagnostics)
     if found is None:
-        return []
-    return [port for plugin in found.doc.getElementsByTagName("plugin")
-            for port in _plugin_ports(plugin, option.get("-robot_namespace"), found.files, found.elem, workspace,
-                                      diagnostics)]
+        return [], f"the robot description in {option['-param']} was not read: its gazebo plugins are unknown"
+    plugins = found.doc.getElementsByTagName("plugin")
+    ports = [port for plugin in plugins
+             for port in _plugin_ports(plugin, option.get("-robot_namespace"), found.files, found.elem, workspace,
+                                       diagnostics)]
+    unmodelled = sorted({p.getAttribute("filename") for p in plugins} - set(plugin_models()))
+    if found.left_out:
+        return ports, f"its robot description was read without an include ({found.left_out[0]})"
+    if unmodelled:
+        return ports, f"gazebo plugin {unmodelled[0]} has no model"
+    return ports, None
 
 
 def spawned_transforms(node: LaunchNode, words: list[str], config: LaunchConfig, workspace: Workspace,
@@ -123,20 +133,20 @@ def description(param: str, node: LaunchNode, config: LaunchConfig, workspace: W
     described = _expand(value, elem, workspace, diagnostics)
     if described is None:
         return None
-    text, files = described
+    text, files, left_out = described
     try:
         doc = parse_xml(text)
     except Exception as exc:  # expat raises several types for broken XML
         diagnostics.add(elem.file, elem.line, "robot-description", f"robot description is not XML: {exc}", "warning")
         return None
-    return Description(doc, files, elem)
+    return Description(doc, files, elem, left_out)
 
 
 def _expand(value: object, elem: Element, workspace: Workspace,
-            diagnostics: DiagnosticSink) -> tuple[str, list[Path]] | None:
-    """The description's XML text and the files it came from."""
+            diagnostics: DiagnosticSink) -> tuple[str, list[Path], list[str]] | None:
+    """The description's XML text, the files it came from and the includes left out (why)."""
     if isinstance(value, str):
-        return value, []
+        return value, [], []
     expr = value.expr if isinstance(value, Unknown) else ""
     try:
         words = shlex.split(expr[len("command: "):]) if expr.startswith("command: ") else []
@@ -154,7 +164,7 @@ def _expand(value: object, elem: Element, workspace: Workspace,
 
 
 def _xacro(source: Path, mappings: dict[str, str], workspace: Workspace, elem: Element,
-           diagnostics: DiagnosticSink) -> tuple[str, list[Path]] | None:
+           diagnostics: DiagnosticSink) -> tuple[str, list[Path], list[str]] | None:
     def at(place: Place) -> tuple[str, int]:
         file, line = place
         return (workspace.display(file), line or 1) if file else (elem.file, elem.line)
@@ -171,7 +181,10 @@ def _xacro(source: Path, mappings: dict[str, str], workspace: Workspace, elem: E
     for name, place in dict.fromkeys(expanded.legacy):
         diagnostics.add(*at(place), "xacro-legacy", f"<{name}> calls the macro {name} without the xacro: prefix "
                         "(deprecated; xacro 2 leaves it unexpanded); archlog expands it")
-    return expanded.text, expanded.files
+    for why, place in expanded.skipped:
+        diagnostics.add(*at(place), "robot-description", f"<xacro:include> left out: {why}; the rest of the "
+                        "description is read, and the nodes it runs in are partial", "warning")
+    return expanded.text, expanded.files, [why for why, _place in expanded.skipped]
 
 
 def _plugin_ports(plugin: xml.dom.minidom.Element, robot_ns: str | None, files: list[Path], elem: Element,

@@ -37,7 +37,7 @@ import yaml
 from archlog import budget, sandbox
 from archlog.budget import BudgetExceeded
 from archlog.extract.launch.evaluate import MATH, PURE_BUILTINS, bounded, restricted_eval, spend
-from archlog.extract.launch.model import SubstitutionError
+from archlog.extract.launch.model import SubstitutionError, Unresolved
 from archlog.extract.launch.ros1_subst import SubstContext, substitute
 
 _TOKEN = re.compile(r"(?P<dollars>\$\$+[{(])|(?P<expr>\$\{[^}]*\})|(?P<extension>\$\([^)]*\))"
@@ -72,6 +72,7 @@ class Expanded:
     files: list[Path]
     unseen: list[tuple[sandbox.NotGiven, Place]]
     legacy: list[tuple[str, Place]] = field(default_factory=list)  # macros called without xacro:, with places
+    skipped: list[tuple[str, Place]] = field(default_factory=list)  # includes not read: why, where
 
 
 class XacroFailure(Exception):
@@ -90,7 +91,8 @@ def expand(source: Path, mappings: dict[str, str], find: Callable[[str], Path | 
     with budget.scope(), routed(expansion):
         try:
             text = xacro.process_file(str(source), mappings=dict(mappings)).toxml()
-            return Expanded(text, [source, *map(Path, xacro.all_includes)], expansion.unseen, expansion.legacy)
+            return Expanded(text, [source, *map(Path, xacro.all_includes)], expansion.unseen, expansion.legacy,
+                            expansion.skipped)
         except Exception as exc:  # xacro reports every failure as some exception
             raise expansion.failure(exc, source) from None
 
@@ -105,6 +107,7 @@ class Expansion:
         self.needle: str | None = None  # text of the innermost failing piece, to find its line by
         self.unseen: list[tuple[sandbox.NotGiven, Place]] = []
         self.legacy: list[tuple[str, Place]] = []
+        self.skipped: list[tuple[str, Place]] = []
         self.names = self._names()
 
     def _names(self) -> dict[str, object]:
@@ -314,6 +317,27 @@ class Expansion:
 
         return call
 
+    def process_include(self, original: Callable[..., None]) -> Callable[..., None]:
+        """xacro's `process_include`; an include whose file name depends on what is not here (a
+        package not found, a variable not given) is left out and recorded with its place, so the
+        rest of the description is read (a macro of the file left out stays an error where it is
+        called)."""
+        xacro = self.xacro
+
+        def skipping(node: xml.dom.minidom.Element, macros: object, symbols: object, func: object) -> None:
+            depth = len(xacro.filestack)
+            try:
+                original(node, macros, symbols, func)
+            except Exception as exc:  # xacro may wrap what the file name's substitution raised
+                cause = _unresolved(exc)
+                if cause is None or len(xacro.filestack) != depth:  # not the file name: inside the file
+                    raise
+                self.skipped.append((str(cause), self._located(node.getAttribute("filename"))))
+                self.needle = None
+                xacro.replace_node(node, by=None)
+
+        return skipping
+
     def replace_node(self, original: Callable[..., None]) -> Callable[..., None]:
         """xacro's `replace_node`, the sibling scans of its insertions and removal spent as steps."""
         def counted(node: xml.dom.minidom.Node, by: xml.dom.minidom.Node | list[xml.dom.minidom.Node] | None,
@@ -350,6 +374,14 @@ def _cause(exc: BaseException) -> BaseException:
     return exc
 
 
+def _unresolved(exc: BaseException) -> Unresolved | None:
+    """The substitution that depends on this machine behind an exception xacro may have wrapped."""
+    seen: BaseException | None = exc
+    while seen is not None and not isinstance(seen, Unresolved):
+        seen = getattr(seen, "exc", None) or seen.__cause__ or seen.__context__
+    return seen
+
+
 def _namespace(xacro: object, names: Mapping[str, object]) -> object:
     space = xacro.NameSpace()  # type: ignore[attr-defined]
     space.update(names)
@@ -380,6 +412,7 @@ def routed(expansion: Expansion) -> Iterator[None]:
                 "eval_all": expansion.eval_all(xacro.eval_all),
                 "replace_node": expansion.replace_node(xacro.replace_node),
                 "handle_macro_call": expansion.handle_macro_call(xacro.handle_macro_call),
+                "process_include": expansion.process_include(xacro.process_include),
                 "_global_symbols": expansion.names, "re_macro_arg": _MACRO_ARG, "all_includes": [],
                 "glob": SimpleNamespace(glob=expansion.glob),  # the module xacro lists include patterns with
                 "substitution_args_context": {}, "filestack": None, "macrostack": None}
