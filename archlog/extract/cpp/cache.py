@@ -7,10 +7,10 @@ import json
 import os
 import pickle
 import sqlite3
-from functools import lru_cache
+from functools import cache, lru_cache
 from pathlib import Path
 
-from archlog import __version__, budget
+from archlog import __version__, budget, sandbox
 
 
 def cache_dir() -> Path:
@@ -30,6 +30,35 @@ def code_digest() -> str:
     for path in sorted([*package.glob("extract/**/*.py"), package / "values.py", package / "names.py"]):
         digest.update(path.read_bytes())
     return digest.hexdigest()
+
+
+def file_stamp(path: Path | str) -> str:
+    """What a cached result holds of a file it depends on: its content's digest, so that a fresh
+    checkout of the same files (new mtimes, as on a CI runner with the cache restored) still hits;
+    installed files (/usr, /opt, kept by their package manager) and files archlog may not read are
+    stamped by size and mtime."""
+    name = str(path)
+    try:
+        stat = os.stat(name)
+    except OSError:
+        return "missing"
+    if name.startswith(("/usr/", "/opt/")) or not (name.startswith(_archlog_files()) or sandbox.current().inside(name)):
+        return f"{stat.st_size}:{stat.st_mtime_ns}"
+    return _content_digest(name, stat.st_size, stat.st_mtime_ns)
+
+
+@cache
+def _content_digest(name: str, _size: int, _mtime: int) -> str:
+    try:
+        with open(name, "rb") as handle:
+            return hashlib.sha256(handle.read()).hexdigest()[:32]
+    except OSError:
+        return "unreadable"
+
+
+def _archlog_files() -> tuple[str, ...]:
+    """Folders of files archlog supplies: its package (stand-in headers) and its cache (generated ones)."""
+    return str(Path(__file__).resolve().parents[2]), str(cache_dir())
 
 
 def key(*parts: bytes | str) -> str:

@@ -31,7 +31,7 @@ import clang.cindex as ci
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cpp.behavior import FileBehavior, link_files
-from archlog.extract.cpp.cache import ResultCache, cache_dir, key
+from archlog.extract.cpp.cache import ResultCache, cache_dir, file_stamp, key
 from archlog.extract.cpp.callers import merged_sites, settled_loads, settled_ports
 from archlog.extract.cpp.macros import MACRO_TOKENS, Macro, defines, macro_bomb, nested_calls
 from archlog.extract.cpp.reach import reached
@@ -258,7 +258,7 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     errors = [d for d in genuine if d.location.file and Path(d.location.file.name) == source]
     result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2, graph=graph,
                   workspace=tuple(str(root.resolve()) for root in env.roots))
-    result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
+    result.depends = [(inc.include.name, file_stamp(inc.include.name)) for inc in tu.get_includes()]
     result.diagnostics += _ros1_stand_in_note(tu, source, shown, stand_ins) if not scan.ros2 else []
     result.diagnostics += _blocked_includes(tu, source, shown, scan)
     result.missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
@@ -583,13 +583,6 @@ def _load(index: ci.Index, source: Path, args: list[str], without_pch: list[str]
         return index.parse(str(source), args=without_pch, unsaved_files=unsaved, options=_KEEP_GOING)
 
 
-def _mtime(path: str) -> int:
-    try:
-        return os.stat(path).st_mtime_ns
-    except OSError:
-        return -1
-
-
 _FOUND: dict[tuple[str, str], bool] = {}
 """Whether an include name is found, by (include environment's fingerprint, name): a worker
 checks many cached files missing the same headers, each against hundreds of folders."""
@@ -597,7 +590,7 @@ checks many cached files missing the same headers, each against hundreds of fold
 
 def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
     """A cached result holds while its headers are unchanged and its missing headers still are."""
-    if any(_mtime(path) != mtime for path, mtime in result.depends):
+    if any(file_stamp(path) != stamp for path, stamp in result.depends):
         return False
     folders = env.folders()
     for name in result.missing:
@@ -639,14 +632,9 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
 
 
 def _tree_stamp(folders: list[Path]) -> list[str]:
-    """(path, size, mtime) of every header under the workspace's include folders."""
-    stamps = []
-    for folder in folders:
-        for path in files_under(folder):
-            if path.suffix in _HEADER_SUFFIXES and path.is_file():
-                stat = path.stat()
-                stamps.append(f"{path}:{stat.st_size}:{stat.st_mtime_ns}")
-    return stamps
+    """(path, file_stamp) of every header under the workspace's include folders."""
+    return [f"{path}:{file_stamp(path)}" for folder in folders for path in files_under(folder)
+            if path.suffix in _HEADER_SUFFIXES and path.is_file()]
 
 
 def _ros_pch(system: list[str], rdir: str | None) -> Path | None:
