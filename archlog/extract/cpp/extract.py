@@ -87,6 +87,7 @@ class CppEnvironment:
     interfaces: Interfaces = field(default_factory=Interfaces)
     refused: list[str] = field(default_factory=list)  # workspace files clang must never read
     parameter_headers: Path | None = None  # stand-ins of generate_parameter_library headers (parameter_headers.py)
+    listings: dict[str, frozenset[str]] = field(default_factory=dict)  # folder: its entries, listed once a run
 
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
@@ -121,8 +122,23 @@ class CppEnvironment:
         """Where an include resolves; a ROS 1 header of a package that ROS 2 has under the same
         include names (tf2_ros, message_filters...) does not count for ROS 2 code."""
         dual = name.split("/", 1)[0] in DUAL
-        return next((folder / name for folder in folders if (folder / name).is_file()
+        return next((folder / name for folder in folders if self.may_hold(folder, name) and (folder / name).is_file()
                      and not (dual and _ros1_system(folder))), None)
+
+    def may_hold(self, folder: Path, name: str) -> bool:
+        """Whether `folder/name` can exist: the name's first part is an entry of the folder (each
+        folder listed once a run, instead of a stat per folder and include); `.`, `..` and
+        absolute names are not judged."""
+        first = name.split("/", 1)[0]
+        if first in ("", ".", ".."):
+            return True
+        where = str(folder)
+        if where not in self.listings:
+            try:
+                self.listings[where] = frozenset(os.listdir(where))
+            except OSError:
+                self.listings[where] = frozenset()
+        return first in self.listings[where]
 
 
 def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvironment,
@@ -431,12 +447,14 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
             continue
         texts.append(text)
         dirs = [path.parent] + folders
-        blocked += _refused_includes([str(folder / name) for name in _named_files(text) for folder in dirs])
+        blocked += _refused_includes([str(folder / name) for name in _named_files(text) for folder in dirs
+                                      if env.may_hold(folder, name)])
         read.append((path, text))
         macros.update(defines(path, text))
         for name in _INCLUDE.findall(text):
             found = env.find(name, dirs)
-            if str(found) in blocked or found is None and any(str(folder / name) in blocked for folder in dirs):
+            if str(found) in blocked or found is None and any(str(folder / name) in blocked for folder in dirs
+                                                                  if env.may_hold(folder, name)):
                 continue
             if found is None:
                 ros1 = name.split("/", 1)[0] in DUAL and any((f / name).is_file() for f in folders if _ros1_system(f))
