@@ -122,22 +122,28 @@ def test_cpp_that_does_not_compile_keeps_the_calls(tmp_path: Path) -> None:
     assert [(p.kind, p.name, p.type) for p in s.ports] == [("publisher", "chatter", "std_msgs/String")]
 
 
+def _good_and_other(tmp_path: Path, other: str) -> None:
+    """A package of two executables: `good` advertises /out, `other` is an empty main."""
+    pkg = tmp_path / "src" / "demo"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package format='2'><name>demo</name><version>0.1.0</version><description>d"
+                                     "</description><maintainer email='dev@example.com'>m</maintainer>"
+                                     "<license>MIT</license></package>")
+    (pkg / "CMakeLists.txt").write_text(f"project(demo)\nadd_executable(good src/good.cpp)\n"
+                                        f"add_executable({other} src/{other}.cpp)\n")
+    (pkg / "src" / "good.cpp").write_text('#include <ros/ros.h>\n#include <std_msgs/String.h>\nint main(int c, char** v)'
+                                          ' { ros::init(c, v, "good"); ros::NodeHandle nh;\n'
+                                          '  nh.advertise<std_msgs::String>("out", 1); }\n')
+    (pkg / "src" / f"{other}.cpp").write_text("int main() {}\n")
+
+
 def test_a_parser_crash_costs_one_executable_not_the_run(tmp_path: Path, monkeypatch) -> None:
     """Fault injection: the C++ extractor aborts the worker process on one file."""
     import os
 
     import archlog.analysis as analysis
 
-    pkg = tmp_path / "src" / "demo"
-    (pkg / "src").mkdir(parents=True)
-    (pkg / "package.xml").write_text("<package format='2'><name>demo</name><version>0.1.0</version><description>d"
-                                     "</description><maintainer email='dev@example.com'>m</maintainer>"
-                                     "<license>MIT</license></package>")
-    (pkg / "CMakeLists.txt").write_text("project(demo)\nadd_executable(good src/good.cpp)\nadd_executable(bad src/bad.cpp)\n")
-    (pkg / "src" / "good.cpp").write_text('#include <ros/ros.h>\n#include <std_msgs/String.h>\nint main(int c, char** v)'
-                                          ' { ros::init(c, v, "good"); ros::NodeHandle nh;\n'
-                                          '  nh.advertise<std_msgs::String>("out", 1); }\n')
-    (pkg / "src" / "bad.cpp").write_text("int main() {}\n")
+    _good_and_other(tmp_path, "bad")
     real = analysis.extract_cpp
 
     def crashing(sources, *args):
@@ -156,16 +162,7 @@ def test_an_executable_past_its_cpu_time_costs_that_executable(tmp_path: Path, m
     spins past it ends its worker and is reported as a crash; the other executable is read."""
     import archlog.analysis as analysis
 
-    pkg = tmp_path / "src" / "demo"
-    (pkg / "src").mkdir(parents=True)
-    (pkg / "package.xml").write_text("<package format='2'><name>demo</name><version>0.1.0</version><description>d"
-                                     "</description><maintainer email='dev@example.com'>m</maintainer>"
-                                     "<license>MIT</license></package>")
-    (pkg / "CMakeLists.txt").write_text("project(demo)\nadd_executable(good src/good.cpp)\nadd_executable(slow src/slow.cpp)\n")
-    (pkg / "src" / "good.cpp").write_text('#include <ros/ros.h>\n#include <std_msgs/String.h>\nint main(int c, char** v)'
-                                          ' { ros::init(c, v, "good"); ros::NodeHandle nh;\n'
-                                          '  nh.advertise<std_msgs::String>("out", 1); }\n')
-    (pkg / "src" / "slow.cpp").write_text("int main() {}\n")
+    _good_and_other(tmp_path, "slow")
     real = analysis.extract_cpp
 
     def spinning(sources, *args):
