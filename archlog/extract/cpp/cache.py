@@ -14,12 +14,15 @@ from archlog import __version__, budget, sandbox
 
 
 def cache_dir() -> Path:
-    """$ARCHLOG_CACHE_DIR, else $XDG_CACHE_HOME/archlog, else ~/.cache/archlog."""
-    base = os.environ.get("ARCHLOG_CACHE_DIR") or \
-        Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "archlog"
-    path = Path(base)
+    """$ARCHLOG_CACHE_DIR, else $XDG_CACHE_HOME/archlog, else ~/.cache/archlog (created)."""
+    path = _cache_path()
     path.mkdir(parents=True, exist_ok=True)
     return path
+
+
+def _cache_path() -> Path:
+    return Path(os.environ.get("ARCHLOG_CACHE_DIR") or
+                Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "archlog")
 
 
 @lru_cache(maxsize=1)
@@ -42,13 +45,16 @@ def file_stamp(path: Path | str) -> str:
         stat = os.stat(name)
     except OSError:
         return "missing"
-    if name.startswith(("/usr/", "/opt/")) or not (name.startswith(_archlog_files()) or sandbox.current().inside(name)):
+    if name.startswith(("/usr/", "/opt/")):
         return f"{stat.st_size}:{stat.st_mtime_ns}"
-    return _content_digest(name, stat.st_size, stat.st_mtime_ns)
+    return _stamp(name, stat.st_size, stat.st_mtime_ns, sandbox.current().roots, str(_cache_path()))
 
 
 @cache
-def _content_digest(name: str, _size: int, _mtime: int) -> str:
+def _stamp(name: str, size: int, mtime: int, _roots: tuple[Path, ...] | None, cache_folder: str) -> str:
+    """file_stamp of a file outside /usr and /opt, once per version of the file and reading policy."""
+    if not (name.startswith((_ARCHLOG_PACKAGE, cache_folder)) or sandbox.current().inside(name)):
+        return f"{size}:{mtime}"
     try:
         with open(name, "rb") as handle:
             return hashlib.sha256(handle.read()).hexdigest()[:32]
@@ -56,9 +62,8 @@ def _content_digest(name: str, _size: int, _mtime: int) -> str:
         return "unreadable"
 
 
-def _archlog_files() -> tuple[str, ...]:
-    """Folders of files archlog supplies: its package (stand-in headers) and its cache (generated ones)."""
-    return str(Path(__file__).resolve().parents[2]), str(cache_dir())
+_ARCHLOG_PACKAGE = str(Path(__file__).resolve().parents[2])
+"""archlog's own files (stand-in headers); its generated ones are in the cache folder."""
 
 
 def key(*parts: bytes | str) -> str:
