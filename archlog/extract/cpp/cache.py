@@ -9,6 +9,7 @@ import pickle
 import sqlite3
 from functools import cache, lru_cache
 from pathlib import Path
+from stat import S_ISREG
 
 from archlog import __version__, budget, sandbox
 
@@ -52,12 +53,18 @@ def file_stamp(path: Path | str) -> str:
 
 @cache
 def _stamp(name: str, size: int, mtime: int, _roots: tuple[Path, ...] | None, cache_folder: str) -> str:
-    """file_stamp of a file outside /usr and /opt, once per version of the file and reading policy."""
-    if not (name.startswith((_ARCHLOG_PACKAGE, cache_folder)) or sandbox.current().inside(name)):
-        return f"{size}:{mtime}"
+    """file_stamp of a file outside /usr and /opt, once per version of the file and reading policy:
+    the digest of a regular file within the size cap that archlog may read (opened without
+    blocking: a FIFO the workspace names is never waited on)."""
+    by_time = f"{size}:{mtime}"
+    if size > sandbox.SIZE_CAPS["source"] or not (name.startswith((_ARCHLOG_PACKAGE, cache_folder))
+                                                  or sandbox.current().inside(name)):
+        return by_time
     try:
-        with open(name, "rb") as handle:
-            return hashlib.sha256(handle.read()).hexdigest()[:32]
+        with os.fdopen(os.open(name, os.O_RDONLY | os.O_NONBLOCK), "rb") as handle:
+            if not S_ISREG(os.fstat(handle.fileno()).st_mode):
+                return by_time
+            return hashlib.sha256(handle.read(sandbox.SIZE_CAPS["source"] + 1)).hexdigest()[:32]
     except OSError:
         return "unreadable"
 
