@@ -87,7 +87,7 @@ class CppEnvironment:
     interfaces: Interfaces = field(default_factory=Interfaces)
     refused: list[str] = field(default_factory=list)  # workspace files clang must never read
     parameter_headers: Path | None = None  # stand-ins of generate_parameter_library headers (parameter_headers.py)
-    listings: dict[str, frozenset[str]] = field(default_factory=dict)  # folder: its entries, listed once a run
+    listings: dict[str, frozenset[str]] = field(default_factory=dict)  # folder: its entries, listed once per job
 
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
@@ -127,8 +127,8 @@ class CppEnvironment:
 
     def may_hold(self, folder: Path, name: str) -> bool:
         """Whether `folder/name` can exist: the name's first part is an entry of the folder (each
-        folder listed once a run, instead of a stat per folder and include); `.`, `..` and
-        absolute names are not judged."""
+        folder listed once per executable's job, instead of a stat per folder and include);
+        `.`, `..` and absolute names are not judged."""
         first = name.split("/", 1)[0]
         if first in ("", ".", ".."):
             return True
