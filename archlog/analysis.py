@@ -152,8 +152,11 @@ def _cpp(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Executa
                                env, exe.cls, sandbox.current(), dict(budget.current().limits), exe.linked)
 
 
-CPP_JOB_SECONDS = 300
-"""Longest one executable's C++ may take (libclang has no budget of its own)."""
+CPP_JOB_CPU_SECONDS = 300
+"""Most CPU time one executable's C++ may take (libclang has no budget of its own), counted in CPU
+seconds so that a machine busy with other work does not cut a job short."""
+CPP_JOB_WALL_SECONDS = 4 * CPP_JOB_CPU_SECONDS
+"""The backstop for a job that stops using the CPU without ending."""
 
 
 @dataclass(frozen=True)
@@ -170,12 +173,14 @@ class _CppJob:
 
     def __call__(self) -> tuple[NodeSummary, list[Diagnostic]]:
         sink = DiagnosticSink()
-        signal.alarm(CPP_JOB_SECONDS)  # past it the worker dies: reported as a crash of this executable
+        signal.setitimer(signal.ITIMER_PROF, CPP_JOB_CPU_SECONDS)  # past either (SIGPROF, SIGALRM) the worker
+        signal.alarm(CPP_JOB_WALL_SECONDS)  # dies: reported as a crash of this executable
         try:
             with sandbox.active(self.policy), budget.active(self.limits):
                 summary = extract_cpp(self.sources, self.package, self.executable, self.env, self.shown, sink,
                                       self.cls, self.linked)
         finally:
+            signal.setitimer(signal.ITIMER_PROF, 0)
             signal.alarm(0)
         return summary, sink.items
 

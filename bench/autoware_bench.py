@@ -80,10 +80,10 @@ class Sampler(threading.Thread):
                       file=sys.stderr, flush=True)
 
 
-def run_pass(workspace: Path, cache: Path, out: Path) -> dict:
-    """One `archlog check` of the rosrun configuration with the cache in `cache`."""
+def run_pass(workspace: Path, cache: Path, out: Path, launches: tuple[str, ...] = ()) -> dict:
+    """One `archlog check` of the rosrun configuration (or of the `launches`) with the cache in `cache`."""
     command = [sys.executable, "-m", "archlog", "check", str(workspace), "--format", "json", "--output", str(out),
-               "--fail-on", "never", "--quiet"]
+               "--fail-on", "never", "--quiet", *(a for launch in launches for a in ("--launch", launch))]
     env = {**os.environ, "ARCHLOG_CACHE_DIR": str(cache)}
     start = time.monotonic()
     proc = subprocess.Popen(command, cwd=ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)

@@ -122,22 +122,28 @@ def test_cpp_that_does_not_compile_keeps_the_calls(tmp_path: Path) -> None:
     assert [(p.kind, p.name, p.type) for p in s.ports] == [("publisher", "chatter", "std_msgs/String")]
 
 
+def _good_and_other(tmp_path: Path, other: str) -> None:
+    """A package of two executables: `good` advertises /out, `other` is an empty main."""
+    pkg = tmp_path / "src" / "demo"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package format='2'><name>demo</name><version>0.1.0</version><description>d"
+                                     "</description><maintainer email='dev@example.com'>m</maintainer>"
+                                     "<license>MIT</license></package>")
+    (pkg / "CMakeLists.txt").write_text(f"project(demo)\nadd_executable(good src/good.cpp)\n"
+                                        f"add_executable({other} src/{other}.cpp)\n")
+    (pkg / "src" / "good.cpp").write_text('#include <ros/ros.h>\n#include <std_msgs/String.h>\nint main(int c, char** v)'
+                                          ' { ros::init(c, v, "good"); ros::NodeHandle nh;\n'
+                                          '  nh.advertise<std_msgs::String>("out", 1); }\n')
+    (pkg / "src" / f"{other}.cpp").write_text("int main() {}\n")
+
+
 def test_a_parser_crash_costs_one_executable_not_the_run(tmp_path: Path, monkeypatch) -> None:
     """Fault injection: the C++ extractor aborts the worker process on one file."""
     import os
 
     import archlog.analysis as analysis
 
-    pkg = tmp_path / "src" / "demo"
-    (pkg / "src").mkdir(parents=True)
-    (pkg / "package.xml").write_text("<package format='2'><name>demo</name><version>0.1.0</version><description>d"
-                                     "</description><maintainer email='dev@example.com'>m</maintainer>"
-                                     "<license>MIT</license></package>")
-    (pkg / "CMakeLists.txt").write_text("project(demo)\nadd_executable(good src/good.cpp)\nadd_executable(bad src/bad.cpp)\n")
-    (pkg / "src" / "good.cpp").write_text('#include <ros/ros.h>\n#include <std_msgs/String.h>\nint main(int c, char** v)'
-                                          ' { ros::init(c, v, "good"); ros::NodeHandle nh;\n'
-                                          '  nh.advertise<std_msgs::String>("out", 1); }\n')
-    (pkg / "src" / "bad.cpp").write_text("int main() {}\n")
+    _good_and_other(tmp_path, "bad")
     real = analysis.extract_cpp
 
     def crashing(sources, *args):
@@ -149,6 +155,27 @@ def test_a_parser_crash_costs_one_executable_not_the_run(tmp_path: Path, monkeyp
     result = analysis.analyse([tmp_path], [], {}, [])
     assert [(n, t) for _p, n, t, _ty in result.store.rows("publisher")] == [("/good", "/out")]
     assert [(d.file, d.code) for d in result.diagnostics.items] == [("src/demo/src/bad.cpp", "cpp-crash")]
+
+
+def test_an_executable_past_its_cpu_time_costs_that_executable(tmp_path: Path, monkeypatch) -> None:
+    """The job limit counts CPU seconds (a busy machine does not cut a job short): a job that
+    spins past it ends its worker and is reported as a crash; the other executable is read."""
+    import archlog.analysis as analysis
+
+    _good_and_other(tmp_path, "slow")
+    real = analysis.extract_cpp
+
+    def spinning(sources, *args):
+        while sources[0].name == "slow.cpp":
+            pass
+        return real(sources, *args)
+
+    monkeypatch.setattr(analysis, "extract_cpp", spinning)
+    monkeypatch.setattr(analysis, "CPP_JOB_CPU_SECONDS", 1)
+    monkeypatch.setattr(analysis, "CPP_JOB_WALL_SECONDS", 60)  # bounds the test if the CPU limit failed
+    result = analysis.analyse([tmp_path], [], {}, [])
+    assert [(n, t) for _p, n, t, _ty in result.store.rows("publisher")] == [("/good", "/out")]
+    assert [(d.file, d.code) for d in result.diagnostics.items] == [("src/demo/src/slow.cpp", "cpp-crash")]
 
 
 def test_handles_and_strings_through_constructor_call_sites(tmp_path: Path) -> None:

@@ -4,6 +4,7 @@ diagnostics) without parsing again, and a change to an input parses again."""
 from __future__ import annotations
 
 import os
+import shutil
 from pathlib import Path
 
 import pytest
@@ -134,4 +135,45 @@ def test_cpp_result_comes_from_the_cache_until_a_header_changes(tmp_path: Path,
     assert run() == first and parsed == []
     header.write_text('#define TOPIC "talk"\n')
     os.utime(header, ns=(header.stat().st_atime_ns, header.stat().st_mtime_ns + 10**9))
+    assert run() == (["talk"], ["cpp-compile"]) and parsed == [1]
+
+
+def test_cpp_cache_travels_to_a_fresh_checkout(tmp_path: Path, fresh_cache: Path,
+                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    """CI: the cache folder is saved after one run and restored on a new runner, whose checkout
+    has the same files with new mtimes (and inodes); nothing is parsed again there."""
+    files = {"src/talker.cpp": CPP, "include/local.h": '#define TOPIC "chatter"\n'}
+
+    def checkout() -> Path:
+        root = tmp_path / "ws"
+        shutil.rmtree(root, ignore_errors=True)
+        for name, text in files.items():
+            (root / name).parent.mkdir(parents=True, exist_ok=True)
+            (root / name).write_text(text)
+            os.utime(root / name, ns=(10**18, 10**18))  # as a checkout on another day would
+        return root
+
+    def run() -> tuple[list[str], list[str]]:
+        root = tmp_path / "ws"
+        source = root / "src" / "talker.cpp"
+        env = extract.CppEnvironment([root / "include"], roots=[root])
+        sink = DiagnosticSink()
+        summary = extract.extract_cpp([source], "demo", "talker", env, {source: "src/talker.cpp"}, sink)
+        return [str(p.name) for p in summary.ports], [d.code for d in sink.items]
+
+    checkout()
+    os.utime(tmp_path / "ws" / "include" / "local.h", ns=(5 * 10**17, 5 * 10**17))
+    first = run()
+    assert first == (["chatter"], ["cpp-compile"])
+    saved = tmp_path / "saved-cache"
+    shutil.copytree(fresh_cache, saved)  # the CI cache action's save, then a new runner's restore
+    shutil.rmtree(fresh_cache)
+    shutil.copytree(saved, fresh_cache)
+    checkout()
+    real = extract._parse_guarded
+    parsed = []
+    monkeypatch.setattr(extract, "_parse_guarded", lambda *args: parsed.append(1) or real(*args))
+    assert run() == first and parsed == []
+    files["include/local.h"] = '#define TOPIC "talk"\n'  # a pull request changes a header
+    checkout()
     assert run() == (["talk"], ["cpp-compile"]) and parsed == [1]

@@ -7,19 +7,23 @@ import json
 import os
 import pickle
 import sqlite3
-from functools import lru_cache
+from functools import cache, lru_cache
 from pathlib import Path
+from stat import S_ISREG
 
-from archlog import __version__, budget
+from archlog import __version__, budget, sandbox
 
 
 def cache_dir() -> Path:
-    """$ARCHLOG_CACHE_DIR, else $XDG_CACHE_HOME/archlog, else ~/.cache/archlog."""
-    base = os.environ.get("ARCHLOG_CACHE_DIR") or \
-        Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "archlog"
-    path = Path(base)
+    """$ARCHLOG_CACHE_DIR, else $XDG_CACHE_HOME/archlog, else ~/.cache/archlog (created)."""
+    path = _cache_path()
     path.mkdir(parents=True, exist_ok=True)
     return path
+
+
+def _cache_path() -> Path:
+    return Path(os.environ.get("ARCHLOG_CACHE_DIR") or
+                Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "archlog")
 
 
 @lru_cache(maxsize=1)
@@ -30,6 +34,43 @@ def code_digest() -> str:
     for path in sorted([*package.glob("extract/**/*.py"), package / "values.py", package / "names.py"]):
         digest.update(path.read_bytes())
     return digest.hexdigest()
+
+
+def file_stamp(path: Path | str) -> str:
+    """What a cached result holds of a file it depends on: its content's digest, so that a fresh
+    checkout of the same files (new mtimes, as on a CI runner with the cache restored) still hits;
+    installed files (/usr, /opt, kept by their package manager) and files archlog may not read are
+    stamped by size and mtime."""
+    name = str(path)
+    try:
+        stat = os.stat(name)
+    except OSError:
+        return "missing"
+    if name.startswith(("/usr/", "/opt/")):
+        return f"{stat.st_size}:{stat.st_mtime_ns}"
+    return _stamp(name, stat.st_size, stat.st_mtime_ns, sandbox.current().roots, str(_cache_path()))
+
+
+@cache
+def _stamp(name: str, size: int, mtime: int, _roots: tuple[Path, ...] | None, cache_folder: str) -> str:
+    """file_stamp of a file outside /usr and /opt, once per version of the file and reading policy:
+    the digest of a regular file within the size cap that archlog may read (opened without
+    blocking: a FIFO the workspace names is never waited on)."""
+    by_time = f"{size}:{mtime}"
+    if size > sandbox.SIZE_CAPS["source"] or not (name.startswith((_ARCHLOG_PACKAGE, cache_folder))
+                                                  or sandbox.current().inside(name)):
+        return by_time
+    try:
+        with os.fdopen(os.open(name, os.O_RDONLY | os.O_NONBLOCK), "rb") as handle:
+            if not S_ISREG(os.fstat(handle.fileno()).st_mode):
+                return by_time
+            return hashlib.sha256(handle.read(sandbox.SIZE_CAPS["source"] + 1)).hexdigest()[:32]
+    except OSError:
+        return "unreadable"
+
+
+_ARCHLOG_PACKAGE = str(Path(__file__).resolve().parents[2])
+"""archlog's own files (stand-in headers); its generated ones are in the cache folder."""
 
 
 def key(*parts: bytes | str) -> str:

@@ -31,7 +31,7 @@ import clang.cindex as ci
 from archlog import sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.extract.cpp.behavior import FileBehavior, link_files
-from archlog.extract.cpp.cache import ResultCache, cache_dir, key
+from archlog.extract.cpp.cache import ResultCache, cache_dir, file_stamp, key
 from archlog.extract.cpp.callers import merged_sites, settled_loads, settled_ports
 from archlog.extract.cpp.macros import MACRO_TOKENS, Macro, defines, macro_bomb, nested_calls
 from archlog.extract.cpp.reach import reached
@@ -87,6 +87,7 @@ class CppEnvironment:
     interfaces: Interfaces = field(default_factory=Interfaces)
     refused: list[str] = field(default_factory=list)  # workspace files clang must never read
     parameter_headers: Path | None = None  # stand-ins of generate_parameter_library headers (parameter_headers.py)
+    listings: dict[str, frozenset[str]] = field(default_factory=dict)  # folder: its entries, listed once per job
 
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
@@ -121,8 +122,23 @@ class CppEnvironment:
         """Where an include resolves; a ROS 1 header of a package that ROS 2 has under the same
         include names (tf2_ros, message_filters...) does not count for ROS 2 code."""
         dual = name.split("/", 1)[0] in DUAL
-        return next((folder / name for folder in folders if (folder / name).is_file()
+        return next((folder / name for folder in folders if self.may_hold(folder, name) and (folder / name).is_file()
                      and not (dual and _ros1_system(folder))), None)
+
+    def may_hold(self, folder: Path, name: str) -> bool:
+        """Whether `folder/name` can exist: the name's first part is an entry of the folder (each
+        folder listed once per executable's job, instead of a stat per folder and include);
+        `.`, `..` and absolute names are not judged."""
+        first = name.split("/", 1)[0]
+        if first in ("", ".", ".."):
+            return True
+        where = str(folder)
+        if where not in self.listings:
+            try:
+                self.listings[where] = frozenset(os.listdir(where))
+            except OSError:
+                self.listings[where] = frozenset()
+        return first in self.listings[where]
 
 
 def extract_cpp(sources: list[Path], package: str, executable: str, env: CppEnvironment,
@@ -258,7 +274,7 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     errors = [d for d in genuine if d.location.file and Path(d.location.file.name) == source]
     result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2, graph=graph,
                   workspace=tuple(str(root.resolve()) for root in env.roots))
-    result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
+    result.depends = [(inc.include.name, file_stamp(inc.include.name)) for inc in tu.get_includes()]
     result.diagnostics += _ros1_stand_in_note(tu, source, shown, stand_ins) if not scan.ros2 else []
     result.diagnostics += _blocked_includes(tu, source, shown, scan)
     result.missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
@@ -431,12 +447,14 @@ def _scan(source: Path, env: CppEnvironment) -> _Scan:
             continue
         texts.append(text)
         dirs = [path.parent] + folders
-        blocked += _refused_includes([str(folder / name) for name in _named_files(text) for folder in dirs])
+        blocked += _refused_includes([str(folder / name) for name in _named_files(text) for folder in dirs
+                                      if env.may_hold(folder, name)])
         read.append((path, text))
         macros.update(defines(path, text))
         for name in _INCLUDE.findall(text):
             found = env.find(name, dirs)
-            if str(found) in blocked or found is None and any(str(folder / name) in blocked for folder in dirs):
+            if str(found) in blocked or found is None and any(str(folder / name) in blocked for folder in dirs
+                                                                  if env.may_hold(folder, name)):
                 continue
             if found is None:
                 ros1 = name.split("/", 1)[0] in DUAL and any((f / name).is_file() for f in folders if _ros1_system(f))
@@ -583,13 +601,6 @@ def _load(index: ci.Index, source: Path, args: list[str], without_pch: list[str]
         return index.parse(str(source), args=without_pch, unsaved_files=unsaved, options=_KEEP_GOING)
 
 
-def _mtime(path: str) -> int:
-    try:
-        return os.stat(path).st_mtime_ns
-    except OSError:
-        return -1
-
-
 _FOUND: dict[tuple[str, str], bool] = {}
 """Whether an include name is found, by (include environment's fingerprint, name): a worker
 checks many cached files missing the same headers, each against hundreds of folders."""
@@ -597,7 +608,7 @@ checks many cached files missing the same headers, each against hundreds of fold
 
 def _still_valid(result: FileResult, env: CppEnvironment) -> bool:
     """A cached result holds while its headers are unchanged and its missing headers still are."""
-    if any(_mtime(path) != mtime for path, mtime in result.depends):
+    if any(file_stamp(path) != stamp for path, stamp in result.depends):
         return False
     folders = env.folders()
     for name in result.missing:
@@ -639,14 +650,9 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
 
 
 def _tree_stamp(folders: list[Path]) -> list[str]:
-    """(path, size, mtime) of every header under the workspace's include folders."""
-    stamps = []
-    for folder in folders:
-        for path in files_under(folder):
-            if path.suffix in _HEADER_SUFFIXES and path.is_file():
-                stat = path.stat()
-                stamps.append(f"{path}:{stat.st_size}:{stat.st_mtime_ns}")
-    return stamps
+    """(path, file_stamp) of every header under the workspace's include folders."""
+    return [f"{path}:{file_stamp(path)}" for folder in folders for path in files_under(folder)
+            if path.suffix in _HEADER_SUFFIXES and path.is_file()]
 
 
 def _ros_pch(system: list[str], rdir: str | None) -> Path | None:

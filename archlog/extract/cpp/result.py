@@ -27,7 +27,7 @@ class FileResult:
     params_dynamic: str = ""  # why its parameters are not all known (see NodeSummary.params_dynamic)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     fallback_lines: list[int] = field(default_factory=list)
-    depends: list[tuple[str, int]] = field(default_factory=list)
+    depends: list[tuple[str, str]] = field(default_factory=list)  # (included file, its file_stamp)
     missing: list[str] = field(default_factory=list)
     behavior: FileBehavior = field(default_factory=FileBehavior)
     loads: list[LoadedNodelet] = field(default_factory=list)

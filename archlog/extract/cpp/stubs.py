@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from archlog import sandbox
-from archlog.extract.cpp.cache import cache_dir
+from archlog.extract.cpp.cache import cache_dir, file_stamp
 
 API_DIR = Path(__file__).with_name("stand_ins")
 # first component of an include -> the stand-in declaring that library
@@ -153,8 +153,8 @@ class Interfaces:
                 self.found.setdefault((pkg, folder.name), {})[path.stem.lower()] = (path.stem, path)
 
     def stamp(self) -> list[str]:
-        """(path, size, mtime) of every definition file, for cache keys."""
-        return [f"{p}:{p.stat().st_size}:{p.stat().st_mtime_ns}" for kinds in self.found.values()
+        """(path, file_stamp) of every definition file, for cache keys."""
+        return [f"{p}:{file_stamp(p)}" for kinds in self.found.values()
                 for _n, p in kinds.values() if isinstance(p, Path) and p.is_file()]
 
     def lookup(self, pkg: str, kind: str, header: str) -> tuple[str, str] | None:
