@@ -49,6 +49,7 @@ from archlog.extract.cpp.param_guards import Branches, initial_value, required
 from archlog.extract.cpp.rclcpp.durations import Durations
 from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
 from archlog.extract.cpp.rclcpp.walker import RclcppWalker
+from archlog.extract.cpp.rclcpp.wrappers import definitions, summaries
 from archlog.extract.cpp.reach import Functions, build
 from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp_fallback import roscpp_fallback
@@ -216,6 +217,8 @@ class _Walker:
         reads = [c for c in calls if c.spelling in PARAM_READS]  # first: a port's guard may test what they read
         for cursor in reads + [c for c in calls if c.spelling not in PARAM_READS]:
             self.call(cursor)
+        if self.rclcpp is not None:
+            self.rclcpp.wrapped(summaries(definitions(root, self.workspace_code), self.key, self.shown), calls)
         self.record_call_sites(calls)
 
     def workspace_code(self, decl: ci.Cursor) -> bool:

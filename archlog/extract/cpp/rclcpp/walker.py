@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import clang.cindex as ci
 
+from archlog.extract.cpp.callers import FromCaller
 from archlog.extract.cpp.clang_ast import (
     SKIP,
+    CursorKey,
     K,
     camera_info,
     qualified,
@@ -48,6 +50,7 @@ from archlog.extract.cpp.rclcpp.nodes import Nodes
 from archlog.extract.cpp.rclcpp.parameters import Parameters
 from archlog.extract.cpp.rclcpp.qos import QosReader, builtin_qos
 from archlog.extract.cpp.rclcpp.qos_changes import QosChanges
+from archlog.extract.cpp.rclcpp.wrappers import Wrapper
 from archlog.extract.qos import Qos, number, seconds_text
 from archlog.values import Value
 
@@ -64,6 +67,16 @@ TF2 = {
                                      Qos({"depth": "1"}))],
 }
 CONSTRUCTED_ROS2 = {*TF2, "message_filters::Subscriber"}
+
+
+def _callees(call: ci.Cursor) -> list[ci.Cursor]:
+    """The definitions a call may run: its function's, or for make_shared<T> T's constructors."""
+    ref = call.referenced
+    if ref is None:
+        return []
+    if call.spelling in FACTORIES and (cls := factory_class(call)) is not None:
+        return [c.get_definition() or c for c in cls.get_children() if c.kind in (K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)]
+    return [ref.get_definition() or ref]
 
 
 class RclcppWalker:
@@ -151,6 +164,40 @@ class RclcppWalker:
         else:
             return False
         return True
+
+    def wrapped(self, wrappers: dict[CursorKey, set[Wrapper]], calls: list[ci.Cursor]) -> None:
+        """One port at each call of a function that creates a port named by its argument
+        (wrappers.py), with the name that call passes; the port of the wrapper's own rclcpp call,
+        whose name no single call decides, is left out then."""
+        made = {(p.file, p.line, p.kind): p for p in self.ctx.result.ports}
+        bases: set[tuple[str, int, str]] = set()
+        for call in calls:
+            for callee in _callees(call):
+                for wrapper in wrappers.get(self.ctx.key(callee), ()):
+                    args = written_args(call)
+                    if wrapper.index >= len(args) or (self.ctx.shown(call), call.location.line, wrapper.kind) in made \
+                            or self.passed_on(args[wrapper.index], wrappers, wrapper.kind):
+                        continue
+                    base = made.get((*wrapper.base, wrapper.kind))  # the rclcpp call as the AST read it, if it did
+                    type_ = base.type if base is not None and isinstance(base.type, str) else \
+                        type_from_spelling(wrapper.type_) if wrapper.type_ else self.entity_type(call)
+                    self.ctx.add(wrapper.kind, call, self.ctx.value(args[wrapper.index]),
+                                 type_ or self.ctx.unknown(call, "message type not resolved"),
+                                 base.handle_ns if base is not None else "",
+                                 qos=base.qos if base is not None else ())
+                    bases.add((*wrapper.base, wrapper.kind))
+        self.ctx.result.ports = [p for p in self.ctx.result.ports if (p.file, p.line, p.kind) not in bases or
+                                 isinstance(p.name, FromCaller)]
+
+    def passed_on(self, arg: ci.Cursor, wrappers: dict[CursorKey, set[Wrapper]], kind: str) -> bool:
+        """The argument is a parameter of a wrapper that names the same kind of port with it: that
+        wrapper's callers give the name."""
+        decl = strip(arg).referenced
+        if decl is None or decl.kind != K.PARM_DECL or decl.semantic_parent is None:
+            return False
+        function = decl.semantic_parent
+        index = parameter_names(function).index(decl.spelling) if decl.spelling in parameter_names(function) else -1
+        return any(w.index == index and w.kind == kind for w in wrappers.get(self.ctx.key(function), ()))
 
     def value(self, expr: ci.Cursor, owner: str, name: str, args: list[ci.Cursor], depth: int) -> Value | None:
         """The value of an rclcpp call (a parameter read, get_name()...), None when it is not one."""
