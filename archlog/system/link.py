@@ -56,7 +56,8 @@ def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, 
                if (model := models.shipped(kind, _kind_on_ros2(kind, on_ros2, workspace))) is not None}
     summaries = {**shipped, **extracted, **models.user}
     for kind in extracted.keys() & shipped.keys() - models.user.keys():
-        summaries[kind] = _source_or_model(extracted[kind], shipped[kind], diagnostics)
+        summaries[kind] = _source_or_model(extracted[kind], shipped[kind], diagnostics,
+                                           _other_release(workspace.version(kind[0]), models.lines.get(kind, ())))
     if config is None:
         config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
                                workspace, diagnostics)
@@ -105,16 +106,26 @@ def _kind_on_ros2(kind: tuple[str, str], on_ros2: bool | None, workspace: Worksp
 _COMPARED = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 
 
-def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: DiagnosticSink) -> NodeSummary:
+def _other_release(version: str | None, lines: tuple[str, ...]) -> str:
+    """Why a model describes another release than the source's package (its version is in none of the
+    release lines the model names), "" when it may be the same or it is not known."""
+    if version is None or not lines or ".".join(version.split(".")[:2]) in lines:
+        return ""
+    return f"the model describes release line {', '.join(lines)}, the source is {version}"
+
+
+def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: DiagnosticSink,
+                     other_release: str = "") -> NodeSummary:
     """A node both read from source and modelled by archlog: the source, unless it resolves fewer
-    ports than the model (code in a library not read, names not known, a file that did not compile):
-    then the model. Where the two disagree on a resolved name, a model-drift note. A source that
-    loads nodelets into its process is used: their ports are placed per instance (nodelets.py)."""
+    ports than the model (code in a library not read, names not known, a file that did not compile)
+    and the model describes the source's release (`other_release` says why not): then the model.
+    Where the two disagree on a resolved name, a model-drift note. A source that loads nodelets into
+    its process is used: their ports are placed per instance (nodelets.py)."""
     if source.loads:
         return source
     ours = _resolved(source)
     theirs = _resolved(model) | {(k, _argv_label(p["name"])) for k, p, _file in model.argv_ports}
-    chosen = model if len(ours) < len(theirs) else source
+    chosen = model if len(ours) < len(theirs) and not other_release else source
     actions = {n for k, n in ours | theirs if k.startswith("action")}  # an action's topics are the action
     only_source, only_model = ([(k, n) for k, n in sorted(a - b) if not _action_topic(k, n, actions)]
                                for a, b in ((ours, theirs), (theirs, ours)))
@@ -126,7 +137,8 @@ def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: Diagn
         diagnostics.add(where[0], where[1] or 1, "model-drift",
                         f"{source.package}/{source.executable}: the source ({len(ours)} resolved ports) has "
                         f"{shown(only_source)} that archlog's model ({len(theirs)}) lacks, the model "
-                        f"{shown(only_model)}; the {'model' if chosen is model else 'source'} is used", "note")
+                        f"{shown(only_model)}; the {'model' if chosen is model else 'source'} is used"
+                        f"{f' ({other_release})' if other_release else ''}", "note")
     return chosen
 
 
