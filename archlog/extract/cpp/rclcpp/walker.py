@@ -8,6 +8,8 @@ so the real headers and archlog's stand-ins (cpp/stubs.py) give the same result.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import clang.cindex as ci
 
 from archlog.extract.cpp.callers import FromCaller
@@ -52,6 +54,7 @@ from archlog.extract.cpp.rclcpp.qos import QosReader, builtin_qos
 from archlog.extract.cpp.rclcpp.qos_changes import QosChanges
 from archlog.extract.cpp.rclcpp.wrappers import Wrapper
 from archlog.extract.qos import Qos, number, seconds_text
+from archlog.extract.summary import Port
 from archlog.values import Value
 
 # classes whose construction creates ports: (kind, topic, type, the library's QoS: rclcpp::QoS(depth)
@@ -77,6 +80,12 @@ def _callees(call: ci.Cursor) -> list[ci.Cursor]:
     if call.spelling in FACTORIES and (cls := factory_class(call)) is not None:
         return [c.get_definition() or c for c in cls.get_children() if c.kind in (K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)]
     return [ref.get_definition() or ref]
+
+
+def _also_if(port: Port, base: Port) -> Port:
+    """A wrapper's port at its call site, under the conditions of the wrapper's own call as well."""
+    conditions = [c for c in (port.condition, *port.also, base.condition, *base.also) if c is not None]
+    return replace(port, condition=conditions[0], also=tuple(conditions[1:]))
 
 
 class RclcppWalker:
@@ -179,12 +188,14 @@ class RclcppWalker:
                             or self.passed_on(args[wrapper.index], wrappers, wrapper.kind):
                         continue
                     base = made.get((*wrapper.base, wrapper.kind))  # the rclcpp call as the AST read it, if it did
-                    type_ = base.type if base is not None and isinstance(base.type, str) else \
-                        type_from_spelling(wrapper.type_) if wrapper.type_ else self.entity_type(call)
+                    type_ = (type_from_spelling(wrapper.type_) if wrapper.type_ else self.entity_type(call)) or \
+                        (base.type if base is not None and isinstance(base.type, str) else None)
                     self.ctx.add(wrapper.kind, call, self.ctx.value(args[wrapper.index]),
                                  type_ or self.ctx.unknown(call, "message type not resolved"),
                                  base.handle_ns if base is not None else "",
                                  qos=base.qos if base is not None else ())
+                    if base is not None and base.condition is not None:  # the branch the wrapper creates it in
+                        self.ctx.result.ports[-1] = _also_if(self.ctx.result.ports[-1], base)
                     bases.add((*wrapper.base, wrapper.kind))
         self.ctx.result.ports = [p for p in self.ctx.result.ports if (p.file, p.line, p.kind) not in bases or
                                  isinstance(p.name, FromCaller)]

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import clang.cindex as ci
 
 from archlog.extract.cpp.clang_ast import CursorKey, K, qualified
-from archlog.extract.cpp.rclcpp.api import ENTITIES, FACTORIES
+from archlog.extract.cpp.rclcpp.api import ENTITIES, FACTORIES, NODE_CLASSES
 
 DEPTH = 6  # a name handed on through this many functions at most
 _CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)
@@ -153,7 +153,10 @@ def _port_call(call: Call) -> tuple[str, int] | None:
         interfaces = len(call.args) >= (8 if call.name == "create_server" else 5)  # the node-interfaces overload
         return ("action_server" if call.name == "create_server" else "action_client"), 4 if interfaces else 1
     if call.name in ENTITIES and not call.name.startswith("create_generic"):
-        return ENTITIES[call.name], 1 if call.scope == "rclcpp" else 0 if not call.scope else -1
+        if call.scope == "rclcpp":  # rclcpp::create_publisher(node, topic, ...)
+            return ENTITIES[call.name], 1
+        if not call.scope or call.scope in NODE_CLASSES:  # node->create_publisher(topic, ...), Base::create_...
+            return ENTITIES[call.name], 0
     return None
 
 
