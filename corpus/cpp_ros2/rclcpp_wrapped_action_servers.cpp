@@ -3,13 +3,16 @@
 // make_shared; the object's public constructor delegates to one taking node interfaces, which keeps
 // the name in a member and creates the rclcpp_action server with it. Each call of the member
 // template is one server, named at that call. A non-template helper publishes on the topic it is
-// given: each of its calls is one publisher too.
+// given: each of its calls is one publisher too, and so is each object of a class whose constructor
+// publishes on the topic it is given, with the type its parameter chooses.
 #include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
 
 #include "example_interfaces/action/fibonacci.hpp"
+#include "geometry_msgs/msg/twist.hpp"
+#include "geometry_msgs/msg/twist_stamped.hpp"
 #include "rclcpp/rclcpp.hpp"
 #include "rclcpp_action/rclcpp_action.hpp"
 #include "rclcpp_lifecycle/lifecycle_node.hpp"
@@ -80,6 +83,27 @@ public:
   }
 };
 
+class CommandOut
+{
+public:
+  CommandOut(rclcpp_lifecycle::LifecycleNode * node, const std::string & topic)
+  : topic_(topic)
+  {
+    stamped_mode_ = node->declare_parameter("stamped_commands", true);
+    if (stamped_mode_) {
+      stamped_ = node->create_publisher<geometry_msgs::msg::TwistStamped>(topic_, 1);
+    } else {
+      plain_ = node->create_publisher<geometry_msgs::msg::Twist>(topic_, 1);
+    }
+  }
+
+private:
+  std::string topic_;
+  bool stamped_mode_;
+  rclcpp_lifecycle::LifecyclePublisher<geometry_msgs::msg::TwistStamped>::SharedPtr stamped_;
+  rclcpp_lifecycle::LifecyclePublisher<geometry_msgs::msg::Twist>::SharedPtr plain_;
+};
+
 }  // namespace fleet
 
 using Fibonacci = example_interfaces::action::Fibonacci;
@@ -99,6 +123,7 @@ public:
     undock_server_ = add_task_server<Fibonacci>("undock_robot", [this]() {announce("undocking");}, true);
     report("events/docked");
     report("events/undocked");
+    drive_ = std::make_unique<fleet::CommandOut>(this, "dock_cmd_vel");
   }
 
 private:
@@ -118,6 +143,7 @@ private:
   std::vector<rclcpp_lifecycle::LifecyclePublisher<std_msgs::msg::String>::SharedPtr> reporters_;
   fleet::TaskServer<Fibonacci>::SharedPtr dock_server_;
   fleet::TaskServer<Fibonacci>::SharedPtr undock_server_;
+  std::unique_ptr<fleet::CommandOut> drive_;
 };
 
 int main(int argc, char ** argv)
