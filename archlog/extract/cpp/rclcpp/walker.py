@@ -180,12 +180,17 @@ class RclcppWalker:
         whose name no single call decides, is left out then."""
         made = {(p.file, p.line, p.kind): p for p in self.ctx.result.ports}
         bases: set[tuple[str, int, str]] = set()
+        done: set[tuple[ci.Cursor, Wrapper]] = set()
         for call in calls:
             for callee in _callees(call):
                 for wrapper in wrappers.get(self.ctx.key(callee), ()):
                     args = written_args(call)
-                    if wrapper.index >= len(args) or (self.ctx.shown(call), call.location.line, wrapper.kind) in made \
-                            or self.passed_on(args[wrapper.index], wrappers, wrapper.kind):
+                    if wrapper.index >= len(args) or (call, wrapper) in done or \
+                            self.passed_on(args[wrapper.index], wrappers, wrapper.kind):
+                        continue
+                    done.add((call, wrapper))
+                    if (self.ctx.shown(call), call.location.line, wrapper.kind) in made:  # read as rclcpp's own call
+                        bases.add((*wrapper.base, wrapper.kind))
                         continue
                     base = made.get((*wrapper.base, wrapper.kind))  # the rclcpp call as the AST read it, if it did
                     type_ = (type_from_spelling(wrapper.type_) if wrapper.type_ else self.entity_type(call)) or \
