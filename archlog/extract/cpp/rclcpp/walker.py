@@ -180,28 +180,25 @@ class RclcppWalker:
         whose name no single call decides, is left out then."""
         made = {(p.file, p.line, p.kind): p for p in self.ctx.result.ports}
         bases: set[tuple[str, int, str]] = set()
-        done: set[tuple[ci.Cursor, Wrapper]] = set()
-        for call in calls:
+        for call in dict.fromkeys(calls):  # each call once
+            args = written_args(call)
+            found: dict[tuple[int, str, str | None], list[tuple[str, int, str]]] = {}
             for callee in _callees(call):
-                for wrapper in wrappers.get(self.ctx.key(callee), ()):
-                    args = written_args(call)
-                    if wrapper.index >= len(args) or (call, wrapper) in done or \
-                            self.passed_on(args[wrapper.index], wrappers, wrapper.kind):
-                        continue
-                    done.add((call, wrapper))
-                    if (self.ctx.shown(call), call.location.line, wrapper.kind) in made:  # read as rclcpp's own call
-                        bases.add((*wrapper.base, wrapper.kind))
-                        continue
-                    base = made.get((*wrapper.base, wrapper.kind))  # the rclcpp call as the AST read it, if it did
-                    type_ = (type_from_spelling(wrapper.type_) if wrapper.type_ else self.entity_type(call)) or \
-                        (base.type if base is not None and isinstance(base.type, str) else None)
-                    self.ctx.add(wrapper.kind, call, self.ctx.value(args[wrapper.index]),
-                                 type_ or self.ctx.unknown(call, "message type not resolved"),
-                                 base.handle_ns if base is not None else "",
-                                 qos=base.qos if base is not None else ())
-                    if base is not None and base.condition is not None:  # the branch the wrapper creates it in
-                        self.ctx.result.ports[-1] = _also_if(self.ctx.result.ports[-1], base)
-                    bases.add((*wrapper.base, wrapper.kind))
+                for w in wrappers.get(self.ctx.key(callee), ()):  # one port, whatever the ways to its rclcpp call
+                    if w.index < len(args) and not self.passed_on(args[w.index], wrappers, w.kind):
+                        found.setdefault((w.index, w.kind, w.type_), []).append((*w.base, w.kind))
+            for (index, kind, written), inner in found.items():
+                bases.update(inner)
+                if (self.ctx.shown(call), call.location.line, kind) in made:  # read as rclcpp's own call
+                    continue
+                base = next((made[b] for b in inner if b in made), None)  # the rclcpp call as the AST read it
+                type_ = (type_from_spelling(written) if written else self.entity_type(call)) or \
+                    (base.type if base is not None and isinstance(base.type, str) else None)
+                self.ctx.add(kind, call, self.ctx.value(args[index]),
+                             type_ or self.ctx.unknown(call, "message type not resolved"),
+                             base.handle_ns if base is not None else "", qos=base.qos if base is not None else ())
+                if base is not None and base.condition is not None:  # the branch the wrapper creates it in
+                    self.ctx.result.ports[-1] = _also_if(self.ctx.result.ports[-1], base)
         self.ctx.result.ports = [p for p in self.ctx.result.ports if (p.file, p.line, p.kind) not in bases or
                                  isinstance(p.name, FromCaller)]
 
