@@ -58,6 +58,7 @@ class Definition:
     qualified: str
     file: str
     params: list[str]
+    names: list[bool]  # whether each parameter can hold a name (a string, or a template parameter's type)
     required: int  # parameters without a default value
     template_params: set[str]
     members: dict[str, int] = field(default_factory=dict)  # member -> the parameter that initialises it
@@ -79,9 +80,8 @@ class Definition:
             arg = arg[1:2]
         if len(arg) != 1:
             return None
-        if arg[0] in self.params:
-            return self.params.index(arg[0])
-        return self.members.get(arg[0])
+        index = self.params.index(arg[0]) if arg[0] in self.params else self.members.get(arg[0])
+        return index if index is not None and self.names[index] else None
 
 
 Key = Callable[[ci.Cursor], CursorKey]
@@ -175,7 +175,7 @@ def _definition(cursor: ci.Cursor, key: Key, shown: Shown) -> Definition | None:
     templates = {c.spelling for c in [*cursor.get_children(), *(parent.get_children() if parent else [])]
                  if c.kind == K.TEMPLATE_TYPE_PARAMETER}
     d = Definition(key(cursor), name, qualified(cursor), shown(cursor),
-                   [p.spelling for p in params],
+                   [p.spelling for p in params], [_name_type(p.type.spelling, templates) for p in params],
                    sum(1 for p in params if "=" not in [t.spelling for t in p.get_tokens()]), templates,
                    constructor=cursor.kind == K.CONSTRUCTOR or
                    (cursor.kind == K.FUNCTION_TEMPLATE and parent is not None and name == parent.spelling))
@@ -188,6 +188,13 @@ def _definition(cursor: ci.Cursor, key: Key, shown: Shown) -> Definition | None:
                 spellings[i - 1] in ("{", ";", "}", ">"):
             d.members.setdefault(spellings[i], d.params.index(spellings[i + 2]))
     return d
+
+
+def _name_type(spelling: str, templates: set[str]) -> bool:
+    """A parameter type that can hold a port's name: a string, a character pointer, or a template
+    parameter (not a duration, a callback or a number handed on beside the name)."""
+    bare = spelling.replace("const ", "").replace("&", "").replace("*", "").strip()
+    return "string" in spelling or "char" in spelling or bare in templates
 
 
 def _initialisers(d: Definition, tokens: list[Token], at: int) -> int:
