@@ -25,7 +25,7 @@ from archlog.system.param_files import file_ports, listed
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
 from archlog.system.transforms import configured_transforms, spawns
-from archlog.values import FullNodeName, ParamList, ParamRef
+from archlog.values import FullNodeName, ParamList, ParamRef, Unknown
 
 
 @dataclass
@@ -119,6 +119,7 @@ def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: Diagn
     """A node both read from source and modelled by archlog: the source, unless it resolves fewer
     ports than the model (code in a library not read, names not known, a file that did not compile)
     and the model describes the source's release (`other_release` says why not): then the model.
+    A source of another release keeps the model's names only for ports it has without a name.
     Where the two disagree on a resolved name, a model-drift note. A source that loads nodelets into
     its process is used: their ports are placed per instance (nodelets.py)."""
     if source.loads:
@@ -139,7 +140,17 @@ def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: Diagn
                         f"{shown(only_source)} that archlog's model ({len(theirs)}) lacks, the model "
                         f"{shown(only_model)}; the {'model' if chosen is model else 'source'} is used"
                         f"{f' ({other_release})' if other_release else ''}", "note")
-    return chosen
+    return replace(source, ports=source.ports + _named_by_model(source, model)) if other_release else chosen
+
+
+def _named_by_model(source: NodeSummary, model: NodeSummary) -> list[Port]:
+    """The model's ports that name what the source leaves unnamed: of a kind and type the source
+    has a port of whose name it does not know (an action server a plugin creates under a name
+    from a parameter), and that the source does not have by name."""
+    unnamed = [p for p in source.ports if p.kind in _COMPARED and _port_key(p) is None]
+    named = _resolved(source)
+    return [p for p in model.ports if (key := _port_key(p)) is not None and key not in named and
+            any(u.kind == p.kind and (u.type == p.type or isinstance(u.type, Unknown)) for u in unnamed)]
 
 
 def _argv_label(raw: object) -> str:
