@@ -187,13 +187,18 @@ class RclcppWalker:
                 for w in wrappers.get(self.ctx.key(callee), ()):  # one port, whatever the ways to its rclcpp call
                     if w.index < len(args) and not self.passed_on(args[w.index], wrappers, w.kind):
                         found.setdefault((w.index, w.kind, w.type_), []).append((*w.base, w.kind))
+            chosen = {(index, kind) for index, kind, _written in found}
             for (index, kind, written), inner in found.items():
                 bases.update(inner)
-                if (self.ctx.shown(call), call.location.line, kind) in made:  # read as rclcpp's own call
-                    continue
+                if (self.ctx.shown(call), call.location.line, kind) in made or (index, kind) not in chosen:
+                    continue  # read as rclcpp's own call, or made below with the other types
+                chosen.discard((index, kind))
                 base = next((made[b] for b in inner if b in made), None)  # the rclcpp call as the AST read it
-                type_ = (type_from_spelling(written) if written else self.entity_type(call)) or \
+                type_: Value | None = (type_from_spelling(written) if written else self.entity_type(call)) or \
                     (base.type if base is not None and isinstance(base.type, str) else None)
+                types = sorted({t for i, k, t in found if (i, k) == (index, kind)}, key=str)
+                if len(types) > 1:  # the wrapper picks one in a branch archlog does not decide
+                    type_ = self.ctx.unknown(call, f"one of {', '.join(str(t) for t in types)}, as the callee decides")
                 self.ctx.add(kind, call, self.ctx.value(args[index]),
                              type_ or self.ctx.unknown(call, "message type not resolved"),
                              base.handle_ns if base is not None else "", qos=base.qos if base is not None else ())
