@@ -7,15 +7,16 @@ import os
 import signal
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from archlog import budget, sandbox
+from archlog import budget, collector, sandbox
 from archlog.diagnostics import Diagnostic, DiagnosticSink
 from archlog.errors import ConfigError
-from archlog.extract import registry
+from archlog.extract import parameter_library, registry
 from archlog.extract.cpp.extract import CppEnvironment, extract_cpp
 from archlog.extract.cpp.msg_headers import generated_headers
+from archlog.extract.cpp.parameter_headers import parameter_headers
 from archlog.extract.files import files_under
 from archlog.extract.launch.model import LaunchConfig
 from archlog.extract.launch.ros1 import LaunchInterpreter
@@ -47,13 +48,21 @@ Progress = registry.Progress
 
 def analyse(paths: list[Path], launches: list[str], args: dict[str, str], models: list[Path],
             near_threshold: float = 0.5, progress: Progress | None = None,
-            env: dict[str, str] | None = None, limits: dict[str, int] | None = None) -> Analysis:
+            env: dict[str, str] | None = None, limits: dict[str, int] | None = None,
+            env_from_shell: bool = False) -> Analysis:
     """Recover the architecture of one system configuration into facts, reading only inside the
     analysed paths and package roots, seeing only the environment given in `env` (and the
-    allow-list), and expanding within `limits` (see archlog.sandbox and archlog.budget)."""
-    policy = sandbox.Sandbox(reading_roots(paths, launches, models), sandbox.machine_env(env))
+    allow-list; with `env_from_shell`, the variables the input asks for from this process's
+    environment too, each named in an env-from-shell note), and expanding within `limits` (see
+    archlog.sandbox and archlog.budget)."""
+    policy = sandbox.Sandbox(reading_roots(paths, launches, models), sandbox.machine_env(env), shell=env_from_shell)
     with sandbox.active(policy), budget.active(limits or {}):
-        return _analyse(paths, launches, args, models, near_threshold, progress)
+        analysis = _analyse(paths, launches, args, models, near_threshold, progress)
+    if policy.from_shell:
+        where = str(resolve_launch(launches[0], analysis.workspace)) if launches else str(paths[0]) if paths else ""
+        analysis.diagnostics.add(analysis.workspace.display(Path(where)) if where else "", 1, "env-from-shell",
+                                 "read from this shell (--env-from-shell): " + ", ".join(sorted(policy.from_shell)))
+    return analysis
 
 
 def reading_roots(paths: list[Path], launches: list[str], models: list[Path]) -> tuple[Path, ...]:
@@ -88,21 +97,27 @@ def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], model
     node_models = load_node_models(models, workspace, diagnostics)
     wanted = {n.kind for n in config.nodes} if config else None
     extracted = registry.extract(workspace, wanted, diagnostics, progress or (lambda _done, _total: None))
+    for key, summary in extracted.items():
+        exe = workspace.executable(*key)
+        if exe is not None and exe.parameter_files:  # a copy: a summary may be cached
+            extracted[key] = replace(summary, ports=list(summary.ports))
+            parameter_library.add_declarations(extracted[key], exe.parameter_files, workspace.display, diagnostics)
     timings["extract"] = _lap(clock)
 
     clock = time.perf_counter()
     system = link(workspace, config, node_models, extracted, diagnostics)
     timings["link"] = _lap(clock)
 
-    clock = time.perf_counter()
-    store = compose(system, diagnostics)
-    timings["facts"] = _lap(clock)
+    with collector.paused():
+        clock = time.perf_counter()
+        store = compose(system, diagnostics)
+        timings["facts"] = _lap(clock)
 
-    clock = time.perf_counter()
-    add_near_names(store, near_threshold, diagnostics)
-    add_param_near(store, near_threshold)
-    add_name_fits(store)
-    timings["near-miss"] = _lap(clock)
+        clock = time.perf_counter()
+        add_near_names(store, near_threshold, diagnostics)
+        add_param_near(store, near_threshold)
+        add_name_fits(store)
+        timings["near-miss"] = _lap(clock)
     return Analysis(workspace, system.config, store, diagnostics, timings)
 
 
@@ -131,7 +146,8 @@ def _python(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Exec
 def _cpp(workspace: Workspace, diagnostics: DiagnosticSink) -> Callable[[Executable], _CppJob]:
     """C++ executables are parsed by libclang in worker processes, sharing one include environment."""
     env = CppEnvironment([d for p in workspace.packages.values() for d in [p.path / "include", *p.include_dirs]],
-                         generated_headers(workspace, diagnostics), workspace.roots)
+                         generated_headers(workspace, diagnostics), workspace.roots,
+                         parameter_headers=parameter_headers(workspace))
     return lambda exe: _CppJob(exe.sources, {s: workspace.display(s) for s in exe.sources}, exe.package, exe.name,
                                env, exe.cls, sandbox.current(), dict(budget.current().limits), exe.linked)
 

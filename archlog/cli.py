@@ -21,6 +21,8 @@ if TYPE_CHECKING:  # the heavy parts (clingo, libclang, numpy, rich) load in the
 
     from archlog.analysis import Analysis
     from archlog.config import Config
+    from archlog.reports.paths import Rebase
+    from archlog.rules.engine import Finding
     from archlog.rules.ruleset import RuleSet
 
 FAIL_ON = (*SEVERITIES, "never")
@@ -47,6 +49,12 @@ def _env_pairs(values: tuple[str, ...]) -> dict[str, str]:
     return pairs
 
 
+def _remember_shell_flag(ctx: click.Context, _param: click.Parameter, value: bool) -> bool:
+    """--env-from-shell, kept for _inputs (the commands do not take it as an argument)."""
+    ctx.meta["env_from_shell"] = value
+    return value
+
+
 def _system_options(func):
     options = [
         click.argument("paths", nargs=-1, type=click.Path(path_type=Path)),
@@ -56,6 +64,10 @@ def _system_options(func):
         click.option("--env", "env", multiple=True, metavar="NAME=VALUE",
                      help="Environment variable launch files may read (repeatable); no other is read from this "
                           "machine but ROS_DISTRO, ROS_VERSION and ROS_PYTHON_VERSION."),
+        click.option("--env-from-shell", is_flag=True, expose_value=False, callback=_remember_shell_flag,
+                     help="Also read, from this shell, each environment variable the launch files ask for and "
+                          "--env does not give (a local check; never set by a configuration file; names that "
+                          "look like secrets are not read). CI should pass --env."),
         click.option("--model", "models", multiple=True, type=click.Path(path_type=Path),
                      help="YAML node models for nodes without source, or external producers/consumers."),
         click.option("--rules", "rule_paths", multiple=True, type=click.Path(exists=True, path_type=Path),
@@ -83,6 +95,7 @@ class Inputs:
     args: dict[str, str]
     models: list[Path]
     env: dict[str, str]
+    env_from_shell: bool = False
 
 
 def _inputs(paths, launches, args, models, rule_paths, config_path, profile, threshold, env) -> Inputs:
@@ -101,7 +114,8 @@ def _inputs(paths, launches, args, models, rule_paths, config_path, profile, thr
     config = cli_choices.select(config, choices, ruleset.rules)
     paths, launches, args, models = cli_choices.inputs(config, choices, list(paths), list(launches),
                                                        _arg_pairs(args), list(models))
-    return Inputs(config, ruleset, paths, launches, args, models, {**config.env, **_env_pairs(env)})
+    shell = bool(click.get_current_context().meta.get("env_from_shell"))
+    return Inputs(config, ruleset, paths, launches, args, models, {**config.env, **_env_pairs(env)}, shell)
 
 
 def _analyse(given: Inputs, quiet: bool = False) -> Analysis:
@@ -115,7 +129,7 @@ def _analyse(given: Inputs, quiet: bool = False) -> Analysis:
     stderr = Console(stderr=True)
     if quiet or not stderr.is_terminal:
         return analyse(given.paths, given.launches, given.args, given.models, config.near_miss_threshold,
-                       env=given.env, limits=config.limits)
+                       env=given.env, limits=config.limits, env_from_shell=given.env_from_shell)
     with Progress(SpinnerColumn(), TextColumn("reading nodes"), BarColumn(), MofNCompleteColumn(),
                   TimeElapsedColumn(), console=stderr, transient=True) as bar:
         task = bar.add_task("nodes", total=None)
@@ -124,7 +138,7 @@ def _analyse(given: Inputs, quiet: bool = False) -> Analysis:
             bar.update(task, completed=done, total=total if total > 0 else None)
 
         return analyse(given.paths, given.launches, given.args, given.models, config.near_miss_threshold,
-                       advance, env=given.env, limits=config.limits)
+                       advance, env=given.env, limits=config.limits, env_from_shell=given.env_from_shell)
 
 
 def _load(paths, launches, args, models, rule_paths, config_path, profile, threshold, env,
@@ -132,6 +146,17 @@ def _load(paths, launches, args, models, rule_paths, config_path, profile, thres
     """The configuration, the rules and the analysis of one run."""
     given = _inputs(paths, launches, args, models, rule_paths, config_path, profile, threshold, env)
     return _analyse(given, quiet), given.ruleset, given.config
+
+
+def _in_repository(analysis: Analysis, ruleset: RuleSet, config: Config, rebase: Rebase
+                   ) -> tuple[list[Finding], dict]:
+    """The findings, each at a location in the analysed repository (a shipped model or a file
+    outside it only as a related location), and the labels of the locations they left."""
+    from archlog.queries.session import Session
+    from archlog.reports.relocate import relocate, shipped
+
+    return relocate(Session(analysis.store, ruleset, config).findings(), analysis.store,
+                    lambda file: shipped(file) or os.path.isabs(rebase(file)))
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -165,22 +190,22 @@ def main() -> None:
               help="Also exit 1 when a node is only partially recovered or opaque (no model or source), or a "
                    "part of the launch configuration was not read (an include skipped, an action not interpreted).")
 @click.option("--quiet", "-q", is_flag=True, help="Text: one line per finding and the summary.")
+@click.option("--verbose", "-v", is_flag=True, help="Also list the notes that need no action (an environment "
+              "variable not given whose default, written next to it, was used).")
 @click.option("--fix", "fix", is_flag=True, help="Apply the safe fixes (remaps in launch files) and report what remains.")
 @click.option("--unsafe-fixes", is_flag=True, help="With --fix or --diff: the fixes that may change the meaning too.")
 @click.option("--diff", "show_diff", is_flag=True,
               help="Print the fixes as a unified diff instead of applying them (exit 1 when there is one).")
 def check(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt,
-          source_root_dir, output, fail_on, baseline, write_baseline, new_only, base_ref, fail_on_incomplete, quiet, fix,
-          unsafe_fixes, show_diff) -> None:
+          source_root_dir, output, fail_on, baseline, write_baseline, new_only, base_ref, fail_on_incomplete, quiet, verbose,
+          fix, unsafe_fixes, show_diff) -> None:
     """Check a ROS system configuration and report findings."""
     from rich.console import Console
 
-    from archlog.queries.session import Session
     from archlog.reports.annotations import to_github, to_junit
     from archlog.reports.codequality import to_codequality
     from archlog.reports.json_report import to_json
     from archlog.reports.paths import Rebase, source_root
-    from archlog.reports.relocate import relocate, shipped
     from archlog.reports.report import Report, coverage, holes
     from archlog.reports.sarif import to_sarif
     from archlog.reports.suppress import apply_suppressions, read_baseline, stale_baseline
@@ -192,8 +217,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     analysis = _analyse(given, quiet or fmt != "text" and output is None)
     root = analysis.workspace.roots[0]
     rebase = Rebase(analysis.workspace.roots, source_root(root, source_root_dir))
-    findings, labels = relocate(Session(analysis.store, ruleset, config).findings(), analysis.store,
-                                lambda file: shipped(file) or os.path.isabs(rebase(file)))
+    findings, labels = _in_repository(analysis, ruleset, config, rebase)
     files = {str(row[1]) for row in analysis.store.rows("location")}
     with sandbox.active(analysis.policy):  # inline suppressions are read where the analysis could read
         elements = {str(node): (loc[0], loc[1]) for node, _pkg, _exe, elem in analysis.store.rows("node")
@@ -218,7 +242,7 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
     if write_baseline:
         written = write_baseline_file(findings, write_baseline)
         click.echo(f"archlog: wrote {written} finding{'s' if written != 1 else ''} to {write_baseline}", err=True)
-    report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused), config.adjust(ruleset.rules),
+    report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused, verbose), config.adjust(ruleset.rules),
                     root, Report.node_origins(analysis.store), coverage(analysis.store), labels, hidden,
                     holes(analysis.store))
     report = rebase.report(report)
@@ -340,23 +364,29 @@ def repl(paths, launches, args, models, rule_paths, config_path, profile, near_m
 @click.option("--depth", type=click.IntRange(0, 20), default=2, show_default=True,
               help="Edges around --focus (near-miss partners of what is kept are kept too).")
 @click.option("--parameters", is_flag=True, help="dot, svg: draw parameters too (the HTML page toggles them).")
+@click.option("--show", "groups", multiple=True, type=click.Choice(["tf", "dynamic_reconfigure", "rosout", "built-in",
+              "leaf topics", "all"]), help="dot, svg: draw this infrastructure too, hidden unless a finding names "
+              "it (repeatable; the HTML page toggles them).")
 @click.option("--output", type=click.Path(dir_okay=False, path_type=Path), help="Write here instead of stdout.")
 def graph(paths, launches, args, models, rule_paths, config_path, profile, near_miss_threshold, env, fmt, focus,
-          depth, parameters, output) -> None:
+          depth, parameters, groups, output) -> None:
     """Draw the recovered architecture, with findings highlighted (an offline HTML page by default)."""
-    from archlog.queries.session import Session
     from archlog.reports import graph as views
+    from archlog.reports.paths import Rebase, source_root
 
     analysis, ruleset, config = _load(paths, launches, args, models, rule_paths, config_path, profile,
                                       near_miss_threshold, env, quiet=output is None)
-    drawn = views.build(analysis.store, Session(analysis.store, ruleset, config).findings())
+    rebase = Rebase(analysis.workspace.roots, source_root(analysis.workspace.roots[0], None))
+    drawn = views.build(analysis.store, _in_repository(analysis, ruleset, config, rebase)[0])
     if focus:
         try:
             drawn = views.focus(drawn, focus, depth)
         except ValueError as exc:
             raise click.UsageError(str(exc)) from None
     try:
-        text = views.draw(drawn, fmt, f"archlog: {' '.join(map(str, analysis.workspace.roots))}", parameters)
+        asked = set(views.GROUPS) - {"parameters"} if "all" in groups else set(groups)
+        text = views.draw(drawn, fmt, f"archlog: {' '.join(map(str, analysis.workspace.roots))}",
+                          asked | ({"parameters"} if parameters else set()))
     except RuntimeError as exc:
         raise click.ClickException(str(exc)) from None
     if output:

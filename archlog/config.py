@@ -41,7 +41,7 @@ from pathlib import Path
 
 from archlog import sandbox
 from archlog.budget import LIMITS
-from archlog.diagnostics import CODES, SEVERITIES, Diagnostic
+from archlog.diagnostics import CODES, SEVERITIES, VERBOSE_ONLY, Diagnostic
 from archlog.errors import ConfigError
 from archlog.rules.ruleset import Rule
 
@@ -89,14 +89,16 @@ class Config:
         return (not select or matches(select)) and not matches(self.ignore) and \
             (not self.precision or rule.precision in self.precision)
 
-    def diagnostics(self, items: list[Diagnostic]) -> list[Diagnostic]:
+    def diagnostics(self, items: list[Diagnostic], verbose: bool = False) -> list[Diagnostic]:
         """The diagnostics shown: `select` and `ignore` take diagnostic codes or code prefixes
-        (`launch-`) as they take rule ids, and `[severity]` overrides a code's severity."""
+        (`launch-`) as they take rule ids, and `[severity]` overrides a code's severity; the
+        VERBOSE_ONLY codes only with `verbose` or when selected by their full code."""
         select = [p for p in self.select if is_code(p)]
         def matches(code: str, patterns: list[str]) -> bool:
             return any(code == p or (p.endswith("-") and code.startswith(p)) for p in patterns)
         return [replace(d, severity=self.severity.get(d.code, d.severity)) for d in items
-                if (not select or matches(d.code, select)) and not matches(d.code, self.ignore)]
+                if (not select or matches(d.code, select)) and not matches(d.code, self.ignore)
+                and (verbose or d.code not in VERBOSE_ONLY or d.code in select)]
 
     def adjust(self, rules: list[Rule]) -> list[Rule]:
         """The rules that apply, with severity overrides."""

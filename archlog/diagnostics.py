@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 SEVERITIES = ("error", "warning", "note")
+VERBOSE_ONLY = frozenset({"env-default"})  # codes a report lists only with --verbose: nothing to act on
 
 
 @dataclass(frozen=True)
@@ -81,8 +82,11 @@ CODES: dict[str, Code] = {
                         "include folder to the analysed paths."),
         "cpp-crash": ("error", "The C++ parser crashed on an executable; its ROS calls are not recovered.",
                       "Report it; meanwhile describe the node with --model."),
-        "cpp-stand-in": ("note", "archlog's stand-in ROS 2 headers lack an API a line uses; it is read from the "
+        "cpp-stand-in": ("note", "archlog's stand-in ROS headers lack an API a line uses; it is read from the "
                          "tokens.", "Nothing; report the API if its ports are missing."),
+        "cpp-ros1-stand-in": ("note", "A C++ file includes ROS 1 library headers that are not installed (ros/ros.h "
+                              "...); it is read with archlog's stand-in headers, which declare the same API.",
+                              "Nothing; install the ROS 1 headers to read it with the real ones."),
         "cpp-private-name": ("error", "A NodeHandle method is given a ~name: roscpp throws at start-up.",
                              "Use a NodeHandle(\"~\") and a relative name."),
         "cpp-several-nodes": ("note", "A C++ file creates several nodes; they are read as one.",
@@ -147,6 +151,9 @@ CODES: dict[str, Code] = {
                          "Write <xacro:NAME/>."),
         "rviz-config": ("warning", "An rviz configuration cannot be read; its displays' topics are unknown.",
                         "Check the -d path."),
+        "param-library": ("warning", "A generate_parameter_library definition (YAML) that a node links cannot be "
+                          "read or does not parse; the node's parameters are not all known, so AL403 does not judge "
+                          "it.", "Fix the file's YAML, or its path in generate_parameter_library()."),
         "ports-file": ("warning", "A YAML file that a node's parameter names, and whose entries are ports of "
                        "the node (yocs_cmd_vel_mux's yaml_cfg_file), cannot be read, or lacks an entry or has one "
                        "without a name; those ports are unknown.",
@@ -162,6 +169,14 @@ CODES: dict[str, Code] = {
         "env-not-given": ("note", "An environment variable was read that was not given (--env, [env] in "
                           "archlog.toml, or the allow-list); it reads as unset. Only its name is shown.",
                           "Pass it with --env NAME=VALUE if the system depends on it."),
+        "env-from-shell": ("note", "Environment variables the input asks for were read from the shell archlog runs "
+                           "in (--env-from-shell, for local checks); only their names are shown. A name that looks "
+                           "like a secret's is never read.", "In CI, pass each with --env NAME=VALUE instead, so "
+                           "the result does not depend on the machine."),
+        "env-default": ("note", "An environment variable that was not given was read with a default written next "
+                        "to it ($(optenv X default), EnvironmentVariable's default_value, os.environ.get's), "
+                        "which is used. Listed only with --verbose.",
+                        "Pass it with --env NAME=VALUE if the system runs with another value."),
         "too-large": ("error", "A file is over the size cap for its kind; it is not read.",
                       "Raise the cap (docs/security.md) if the file is honest."),
         "budget-exceeded": ("warning", "An expansion (a robot description, an expression) went past a limit of "

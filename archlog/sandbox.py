@@ -6,7 +6,10 @@ pull request), so reading is confined and the environment is an explicit input.
   is followed only when its target stays inside those roots. Anything else raises `Refused`,
   whose message names the path and never its content.
 - Environment: only variables given with `--env NAME=VALUE`, set in `archlog.toml` (`[env]`), or
-  on `ENV_ALLOWED` are visible; any other reads as unset. A reader that meets one calls
+  on `ENV_ALLOWED` are visible; any other reads as unset. With `shell` (the command line's
+  `--env-from-shell`, for a user checking locally; never a configuration file's setting), a
+  variable the input asks for and was not given is read from this process's environment unless its
+  name looks like a secret's (`SECRET_LIKE`); the names so read are kept in `from_shell`. A reader that meets one calls
   `not_given(name)`; the reader of the file collects those names (`reads_not_given()`) and reports
   an `env-not-given` diagnostic at its place with `not_given_message` (the name, never a value).
 
@@ -17,16 +20,21 @@ Outside it (library use, unit tests) every path is inside, and the environment i
 from __future__ import annotations
 
 import os
+import re
 import stat
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from contextvars import ContextVar
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 ENV_ALLOWED = ("ROS_DISTRO", "ROS_VERSION", "ROS_PYTHON_VERSION")
 """Environment variables read from the machine without being given: they name the ROS release,
 which launch files branch on, and hold no secret."""
+
+SECRET_LIKE = re.compile(r"TOKEN|SECRET|PASSW|KEY|CREDENTIAL|AUTH|COOKIE|SESSION|PRIVATE|CERT", re.IGNORECASE)
+"""Names of variables `--env-from-shell` never reads: they may hold a secret."""
 
 MiB = 1 << 20
 SIZE_CAPS = {"source": 8 * MiB, "launch": 4 * MiB, "params": 4 * MiB, "build": 4 * MiB,
@@ -51,6 +59,8 @@ class Sandbox:
     roots: tuple[Path, ...] | None = None
     env: Mapping[str, str] = field(default_factory=dict)
     caps: Mapping[str, int] = field(default_factory=lambda: dict(SIZE_CAPS))
+    shell: bool = False
+    from_shell: list[str] = field(default_factory=list)
 
     def inside(self, path: Path | str) -> bool:
         """Whether `path`, with every symlink resolved, lies under a root (a path with a NUL byte
@@ -97,7 +107,15 @@ class Sandbox:
 
     def getenv(self, name: str) -> str | None:
         """An environment variable archlog may see, or None (unset, or not given)."""
-        return self.env.get(name)
+        return self.env[name] if name in self.env else self.shell_value(name)
+
+    def shell_value(self, name: str) -> str | None:
+        """A variable of this shell under `--env-from-shell` (not a secret's name), else None."""
+        if not self.shell or SECRET_LIKE.search(name) or name not in os.environ:
+            return None
+        if name not in self.from_shell:
+            self.from_shell.append(name)
+        return os.environ[name]
 
 
 def machine_env(given: Mapping[str, str] | None = None) -> dict[str, str]:
@@ -109,11 +127,29 @@ def machine_env(given: Mapping[str, str] | None = None) -> dict[str, str]:
 
 def not_given_message(name: str) -> str:
     return (f"environment variable {name} is not given, so its value is unknown (archlog reads only the "
-            f"variables passed with --env {name}=... or set in [env] of archlog.toml)")
+            f"variables passed with --env {name}=... or set in [env] of archlog.toml, and with --env-from-shell "
+            f"those of this shell)")
+
+
+class NotGiven(NamedTuple):
+    """A variable the input read that the run was not given; `defaulted`: the input's own default
+    was used instead ($(optenv X default), EnvironmentVariable's default_value, os.environ.get's)."""
+
+    name: str
+    defaulted: bool = False
+
+
+def env_note(read: NotGiven) -> tuple[str, str]:
+    """The diagnostic code and message of a variable not given: `env-default` (listed only with
+    --verbose) when the input's default was used, else `env-not-given`."""
+    if read.defaulted:
+        return "env-default", (f"environment variable {read.name} is not given, so the default written next to "
+                               f"it is used (pass --env {read.name}=... for another value)")
+    return "env-not-given", not_given_message(read.name)
 
 
 _current: ContextVar[Sandbox | None] = ContextVar("archlog_sandbox", default=None)
-_not_given: ContextVar[list[str] | None] = ContextVar("archlog_env_not_given", default=None)
+_not_given: ContextVar[list[NotGiven] | None] = ContextVar("archlog_env_not_given", default=None)
 
 
 def current() -> Sandbox:
@@ -143,17 +179,27 @@ def getenv(name: str) -> str | None:
     return current().getenv(name)
 
 
-def not_given(name: str) -> None:
-    """Note that the input read `name`, a variable the run was not given."""
+def shell_value(name: str) -> str | None:
+    """A variable a launch file's own environment lacks, read from the shell (--env-from-shell)."""
+    return current().shell_value(name)
+
+
+def not_given(name: str, defaulted: bool = False) -> None:
+    """Note that the input read `name`, a variable the run was not given (`defaulted`: and used
+    its own default); a read without default outweighs one with."""
     names = _not_given.get()
-    if names is not None and name not in names:
-        names.append(name)
+    if names is None:
+        return
+    if NotGiven(name, True) in names and not defaulted:
+        names.remove(NotGiven(name, True))
+    if NotGiven(name, False) not in names and NotGiven(name, True) not in names:
+        names.append(NotGiven(name, defaulted))
 
 
 @contextmanager
-def reads_not_given() -> Iterator[list[str]]:
+def reads_not_given() -> Iterator[list[NotGiven]]:
     """The variables read but not given while inside (an inner collection keeps its own)."""
-    names: list[str] = []
+    names: list[NotGiven] = []
     token = _not_given.set(names)
     try:
         yield names

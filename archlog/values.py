@@ -60,6 +60,13 @@ class FullNodeName(str):
 
 
 @dataclass(frozen=True)
+class OverBudget(Unknown):
+    """A value that would stand for more alternatives than archlog follows (MAX_ALTERNATIVES for
+    one value, the budget's `alternatives` for all combinations); a port named by it is a
+    budget-exceeded diagnostic at the call."""
+
+
+@dataclass(frozen=True)
 class ParamRef:
     """A value read from a ROS parameter (`name` as written in the source) with its default."""
 
@@ -115,7 +122,19 @@ class Namespace:
     cut: int = 0
 
 
-Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives | Namespace
+@dataclass(frozen=True)
+class Switch:
+    """A value a test of another value chooses: `when_equal` where `subject` is `equals`, else
+    `otherwise` (Python's `if x != '': x = '/' + x` after `x` was read from a parameter: which one
+    holds is decided per node instance, when the parameter's value is known)."""
+
+    subject: Value
+    equals: str
+    when_equal: Value
+    otherwise: Value
+
+
+Value = str | Unknown | ParamRef | ParamList | Concat | Alternatives | Namespace | Switch
 MAX_ALTERNATIVES = 16
 
 
@@ -131,8 +150,8 @@ def concat(*parts: Value) -> Value:
     """Join values; literal neighbours fold into one string; alternatives distribute (unless they
     would stand for more combinations than the budget's alternatives: then the value is unknown)."""
     combinations = math.prod(len(p.options) for p in parts if isinstance(p, Alternatives))
-    if combinations > budget.current().limits["alternatives"]:
-        return Unknown(f"{combinations} alternatives, more than the budget allows", "", 0)
+    if combinations > (limit := budget.current().limits["alternatives"]):
+        return OverBudget(f"{combinations} alternatives, more than the budget allows ({limit})", "", 0)
     for index, part in enumerate(parts):
         if isinstance(part, Alternatives):
             every, options = part.every, list[Value]()
@@ -144,7 +163,7 @@ def concat(*parts: Value) -> Value:
                 else:
                     options.append(joined)
             if len(options) > MAX_ALTERNATIVES:
-                return Unknown("more than 16 alternatives", "", 0)
+                return OverBudget(f"more than {MAX_ALTERNATIVES} alternatives", "", 0)
             return Alternatives(tuple(dict.fromkeys(options)), every)
     folded: list[Value] = []
     for part in parts:

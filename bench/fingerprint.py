@@ -1,6 +1,6 @@
 """Behavior fingerprint: every fact, finding and diagnostic of every corpus system, as one JSON file.
 
-    python bench/fingerprint.py OUT.json [--compare BEFORE.json]
+    python bench/fingerprint.py OUT.json [--compare BEFORE.json] [--systems corpus/ros1/CASE/buggy ...]
 
 Run before and after a change that must not change behavior (a refactoring): the two files are
 equal when nothing changed; `--compare` prints the systems and relations that differ.
@@ -40,8 +40,10 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("output", type=Path)
     parser.add_argument("--compare", type=Path, help="a fingerprint to compare with")
+    parser.add_argument("--systems", nargs="+", type=Path, help="only these systems (corpus/ros1/topic_typo/buggy...)")
     options = parser.parse_args()
-    variants = sorted(p.parent for p in (ROOT / "corpus").glob("*/*/*/case.json"))
+    variants = [ROOT / v for v in options.systems] if options.systems else \
+        sorted(p.parent for p in (ROOT / "corpus").glob("*/*/*/case.json"))
     prints = {str(v.relative_to(ROOT)): system(v) for v in variants}
     options.output.write_text(json.dumps(prints, indent=1, sort_keys=True))
     print(f"{len(prints)} systems, {sum(len(rows) for p in prints.values() for rows in p.values())} rows")

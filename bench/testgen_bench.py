@@ -4,6 +4,10 @@ examples (launches of the nodes under test, shrinking included) until the failur
 
     python bench/testgen_bench.py [--seeds 5] [--examples 30] [--shrink-seconds 60] [SYSTEM...]
     python bench/testgen_bench.py --debian N [--debsrc /work/debsrc]
+    python bench/testgen_bench.py --ros2 N   # the corpus/ros2 clean twins on rclpy, N examples each
+
+The last line of the corpus table is the soundness summary (issue 32): false failures on the fixed
+twins (must be 0), defects found, and the most messages a shrunk failure sends (at most 3).
 
 Needs Debian's ROS 1 (roslaunch, rospy) and g++. Prints a Markdown table. With --debian, runs the
 generated test of Debian's robot_state_publisher and joint_state_publisher (their source packages
@@ -24,6 +28,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
 
 from support.testgen_corpus import prepare, run_generated, systems  # noqa: E402
+from test_testgen_ros2 import CASES, run_case  # noqa: E402
 
 DEBIAN = {"robot_state_publisher": "ros-robot-state-publisher-*", "joint_state_publisher": "ros-joint-state-publisher-*"}
 
@@ -37,10 +42,15 @@ def main() -> None:
     parser.add_argument("--shrink-seconds", type=int, default=60)
     parser.add_argument("--debian", type=int, metavar="N", help="examples of each Debian node instead")
     parser.add_argument("--debsrc", type=Path, default=Path("/work/debsrc"))
+    parser.add_argument("--ros2", type=int, metavar="N", help="examples of each corpus/ros2 clean twin instead")
     options = parser.parse_args()
     if options.debian:
         debian(options.debian, options.debsrc)
         return
+    if options.ros2:
+        ros2(options.ros2)
+        return
+    false_failures, found_all, worst_all = 0, 0, 0
     chosen = [s for s in systems() if not options.names or s.name in options.names]
     print("| system | fixed twin: examples/s | defect found (seeds) | median s to report | median examples "
           "| max messages after shrinking |")
@@ -58,6 +68,23 @@ def main() -> None:
         worst = max((r.messages() for r in found), default=0)
         print(f"| {system.name} | {rate} | {len(found)}/{len(runs)} | {seconds:.1f} | {examples:.0f} | {worst} |",
               flush=True)
+        false_failures += not clean.passed
+        found_all += len(found) == len(runs)
+        worst_all = max(worst_all, worst)
+    print(f"\nsoundness: {false_failures} false failure(s) on {len(chosen)} fixed twins; defect found on every seed in "
+          f"{found_all}/{len(chosen)} systems; at most {worst_all} message(s) after shrinking")
+
+
+def ros2(examples: int) -> None:
+    """The generated test of each corpus/ros2 clean twin (as tests/test_testgen_ros2.py picks them)."""
+    print("| system | nodes | outcome | examples/s |")
+    print("|---|---|---|---|")
+    for system, nodes, _expected in CASES:
+        with tempfile.TemporaryDirectory() as tmp:
+            result, seconds = run_case(system, nodes, Path(tmp), examples)
+        outcome = "passed" if result.returncode == 0 else "skipped" if result.returncode == 5 else "FAILED"
+        rate = f"{examples / seconds:.2f}" if outcome == "passed" else "-"
+        print(f"| {system} | {' '.join(nodes) or 'all'} | {outcome} | {rate} |", flush=True)
 
 
 def debian(examples: int, debsrc: Path) -> None:

@@ -5,6 +5,7 @@ declaration fails here, not on a new user's machine."""
 from __future__ import annotations
 
 import ast
+import fnmatch
 import importlib.metadata
 import re
 import subprocess
@@ -25,8 +26,8 @@ DEBIAN_PYTHON = {
     "tests/support/roslaunch_oracle.py",
     "tests/support/topic_monitor.py",
 }
-LOCAL = {"archlog", "support", "conftest", "python_bench", "scale_bench",  # this repository's own modules
-         "rosidl_standin"}  # tests/support/ros2_standin: a stand-in for ROS 2's Python API
+LOCAL = {"archlog", "support", "rosidl_standin",  # tests/support/ros2_standin: a stand-in for ROS 2's Python API
+         *(p.stem for folder in ("tests", "bench") for p in (ROOT / folder).glob("*.py"))}  # modules beside each other
 
 
 def _normal(dist: str) -> str:
@@ -140,3 +141,15 @@ def test_installed_package_imports_with_only_its_declared_requirements(tmp_path:
                           text=True, timeout=120)
     assert done.returncode == 0, done.stderr[-3000:]
     assert int(done.stdout.split()[-1]) > 50
+
+
+def test_every_data_file_of_archlog_is_installed() -> None:
+    """Files archlog reads at run time beside its modules (rules, models, stand-in headers, rule
+    fixtures that `archlog rule ID` quotes) match a package-data glob, so `pip install .` ships
+    them, not only an editable checkout."""
+    globs = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["package-data"]["archlog"]
+    tracked = subprocess.run(["git", "ls-files", "archlog"], cwd=ROOT, capture_output=True, text=True,
+                             check=True).stdout.split()
+    data = [Path(f).relative_to("archlog").as_posix() for f in tracked if not f.endswith(".py")]
+    missing = [f for f in data if not any(fnmatch.fnmatch(f, g) and f.count("/") == g.count("/") for g in globs)]
+    assert data and not missing, missing

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from conftest import CORPUS, CORPUS_ROS2, load_case
 
-from archlog.reports.fixes import _python_remap, _xml_remap
+from archlog.reports.fixes import _python_remap, _rename, _xml_remap
 from archlog.reports.rule_help import hint
 from archlog.rules.ruleset import RuleError, load_rules
 
@@ -60,6 +60,31 @@ def test_unsafe_fix_needs_unsafe_fixes(variant: Path, tmp_path: Path) -> None:
     unsafe = archlog(*check, "--fix", "--unsafe-fixes", cwd=ws)
     assert "applied 1 fix in 1 file" in unsafe.stderr, unsafe.stderr
     assert findings(ws, check) == []
+
+
+@pytest.mark.parametrize("variant", [CORPUS / "param_name_typo", CORPUS_ROS2 / "param_name_typo_py",
+                                     CORPUS_ROS2 / "param_name_typo_cpp"], ids=["ros1-xml", "ros2-yaml", "ros2-python"])
+def test_fix_renames_the_parameter_to_the_declared_one(variant: Path, tmp_path: Path) -> None:
+    """AL403's fix renames the misspelled parameter where it is set (a <param>, a parameter file's
+    key, a parameters= dictionary): the fixed buggy twin is its clean twin, and checks clean."""
+    ws, check = copy(variant / "buggy", tmp_path)
+    assert "AL403" in [f["rule"] for f in findings(ws, check)]
+    fixed = archlog(*check, "--fix", cwd=ws)
+    assert "applied 1 fix in 1 file" in fixed.stderr and "fixed: AL403 rename" in fixed.stderr, fixed.stderr
+    assert findings(ws, check) == load_case(variant / "clean")["findings"] == []
+    clean = variant / "clean" / "src"
+    assert {p.relative_to(clean): p.read_bytes() for p in clean.rglob("*") if p.is_file()} == \
+        {p.relative_to(ws / "src"): p.read_bytes() for p in (ws / "src").rglob("*") if p.is_file()}
+
+
+def test_a_rename_edits_one_written_name_in_its_namespace_only() -> None:
+    yaml = "a:\n  ros__parameters:\n    scan_topc: scan_topc_x\n"
+    start, end, text = _rename(yaml, 3, "scan_topc", "scan_topic")
+    assert yaml[:start] + text + yaml[end:] == "a:\n  ros__parameters:\n    scan_topic: scan_topc_x\n"
+    assert _rename('<param name="~gain" value="1"/>\n', 1, "~gain", "~gains") == (14, 18, "gains")
+    assert _rename('{"gain": "gain"}\n', 1, "gain", "gains") is None  # written twice: which one?
+    assert _rename('<param name="pid/gain"/>\n', 1, "pid/gain", "other/gain") is None  # another namespace
+    assert _rename("x\n", 5, "x", "y") is None
 
 
 def test_xml_and_python_edits_keep_the_element_whole() -> None:

@@ -105,3 +105,82 @@ def test_html_page_in_chromium_as_a_person_uses_it(tmp_path: Path) -> None:
     assert seen["dimmed"] >= 2 and seen["refocused"]
     assert seen["findingPanel"].startswith("AL102 error") and "pure_pursuit.cpp:45" in seen["findingPanel"]
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 10_000
+
+
+FIXTURES = ROOT / "archlog" / "rules" / "builtin" / "tests"
+
+
+def fixture_graph(case: str, extra: dict[str, list[list]] | None = None):
+    """The graph of a rule fixture's facts (with `extra` rows), and its findings."""
+    from archlog.queries.rule_tests import load_facts
+    from archlog.queries.session import Session
+    from archlog.reports import graph as views
+    from archlog.rules.ruleset import load_rules
+
+    facts = json.loads((FIXTURES / case / "facts.json").read_text())
+    for relation, rows in (extra or {}).items():
+        facts.setdefault(relation, []).extend(rows)
+    path = Path(os.environ.get("TMPDIR", "/tmp")) / f"archlog-graph-{os.getpid()}-{case}.json"
+    path.write_text(json.dumps(facts))
+    try:
+        store = load_facts(path)
+    finally:
+        path.unlink()
+    return views.build(store, Session(store, load_rules([])).findings())
+
+
+def test_a_starved_input_gets_a_dashed_edge_to_its_candidate_which_is_not_drawn_faulty() -> None:
+    """AL601 names a near-miss candidate publisher: a dashed edge joins the two topics, the
+    candidate's topic is the other side (a dashed grey outline), not coloured as the fault."""
+    from archlog.reports import graph as views
+
+    g = fixture_graph("AL601_required_input_unreachable")
+    dot = views.to_dot(views.shown(g, set()))
+    assert '"t:/odom_pose" -> "t:/odom_pos" [style=dashed, color="#d62728", label="near miss?"' in dot
+    assert '"t:/odom_pose" [label="/odom_pose", shape=ellipse, color="#d62728", penwidth=2.5,' in dot
+    assert '"t:/odom_pos" [label="/odom_pos", shape=ellipse, color="#555555", penwidth=1.5, style=dashed,' in dot
+    assert g.graph.nodes["t:/odom_pos"]["severity"] is None and g.graph.nodes["t:/odom_pos"]["other"]
+
+
+def test_infrastructure_is_hidden_unless_asked_for_or_named() -> None:
+    """tf, dynamic_reconfigure, rosout and ROS 2 built-in ports, and topics with one side only,
+    are left out by default (as rqt_graph does) and drawn when their group is asked for; a topic
+    a finding names stays whatever its group."""
+    from archlog.reports import graph as views
+
+    extra = {"publisher": [["x1", "/base", "/tf", "tf2_msgs/msg/TFMessage"],
+                           ["x2", "/base", "/base/parameter_updates", "dynamic_reconfigure/Config"],
+                           ["x3", "/base", "/rosout", "rosgraph_msgs/Log"],
+                           ["x4", "/localizer", "/parameter_events", "rcl_interfaces/msg/ParameterEvent"]],
+             "service_server": [["x5", "/base", "/base/set_parameters", "dynamic_reconfigure/Reconfigure"]],
+             "infrastructure_port": [["x4", "parameter_events"]]}
+    g = fixture_graph("AL601_required_input_unreachable", extra)
+    groups = {ident: data["group"] for ident, data in g.graph.nodes(data=True) if data["group"]}
+    assert {ident: group for ident, group in groups.items() if group != "leaf topics"} == {
+        "t:/tf": "tf", "t:/base/parameter_updates": "dynamic_reconfigure", "s:/base/set_parameters": "dynamic_reconfigure",
+        "t:/rosout": "rosout", "t:/parameter_events": "built-in"}
+    assert groups["t:/odom"] == "leaf topics" and "t:/trajectory" not in groups  # /trajectory has both sides
+    default = set(views.shown(g, set()).graph)
+    assert not default & {"t:/tf", "t:/base/parameter_updates", "s:/base/set_parameters", "t:/rosout",
+                          "t:/parameter_events", "t:/odom"}
+    assert {"t:/odom_pose", "t:/odom_pos", "n:/base", "t:/trajectory"} <= default  # named by AL601, or both sides
+    assert "t:/tf" in views.shown(g, {"tf"}).graph and "t:/rosout" not in views.shown(g, {"tf"}).graph
+    everything = views.shown(g, set(views.GROUPS)).graph
+    assert set(everything) == set(g.graph)
+
+
+def test_show_draws_the_hidden_groups_of_a_ros2_system() -> None:
+    """Every rclpy node's built-in ports (parameter services, /parameter_events), /rosout and a
+    topic nothing subscribes are left out of the default drawing, and --show draws each group."""
+    case = ["graph", str(ROOT / "corpus" / "ros2" / "param_name_typo_py" / "clean"), "--launch",
+            "follow_me/launch/follow.launch.py", "--format", "dot"]
+    drawn = lambda *show: {line.split('"')[1] for line in archlog(*case, *show).stdout.splitlines()  # noqa: E731
+                           if "shape=" in line}
+    default = drawn()
+    assert {"n:/follower", "n:/scan_filter", "t:/scan_filtered"} <= default
+    assert not {"t:/rosout", "t:/parameter_events", "s:/follower/get_parameters", "t:/cmd_vel"} & default
+    assert drawn("--show", "rosout") == default | {"t:/rosout"}
+    assert drawn("--show", "leaf topics") == default | {"t:/cmd_vel"}
+    assert {"t:/parameter_events", "s:/follower/get_parameters", "s:/scan_filter/set_parameters"} <= \
+        drawn("--show", "built-in") - default
+    assert drawn("--show", "all") == drawn("--show", "rosout", "--show", "leaf topics", "--show", "built-in")

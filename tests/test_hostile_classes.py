@@ -4,6 +4,7 @@ time that grows no faster than the input, or grows until the budget stops it wit
 
 from __future__ import annotations
 
+import resource
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -12,6 +13,7 @@ import pytest
 from support import hostile_classes as hostile
 
 from archlog import budget
+from archlog.analysis import analyse
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.workspace.cmake import commands
@@ -97,3 +99,42 @@ def test_near_names_of_many_numbered_instances_take_linear_time() -> None:
         assert near_names(names, names) == []
         seconds[count] = time.process_time() - begin
     assert seconds[5_000] < 5.0, seconds
+
+
+def test_an_xml_include_fan_grows_until_the_node_budget_stops_it(tmp_path: Path) -> None:
+    """Each file including the next twice: 2**levels nodes, until the node budget stops them at the
+    include that crossed it (the rest of the run is linear in the nodes: AL301 pairs each later
+    node with the first of its name only)."""
+    for levels in range(2, 31, 4):
+        count, crossed = _launch(tmp_path / str(levels), hostile.xml_include_fan(levels), {"nodes": 1_000})
+        if 2 ** levels <= 1_000:
+            assert (count, crossed) == (2 ** levels, [])
+        else:
+            assert count == 1_000 and crossed == [(f"l{levels}.launch.xml", 2)]  # the node that crossed
+            break
+    assert levels == 10
+
+
+def test_concatenated_alternatives_grow_until_the_budget_stops_them(tmp_path: Path) -> None:
+    """A C++ topic added together from parts of six values each: one part is six names; from two
+    parts on (36 combinations, more than one value's 16 alternatives) the port is a budget-exceeded
+    diagnostic at the call, and the file's other publisher is still read."""
+    for parts in (1, 2, 12):
+        root = tmp_path / str(parts)
+        files = hostile.cpp_concatenation(parts)
+        hostile.write(root, files)
+        before = _cpu()
+        analysis = analyse([root], [str(root / hostile.launch_of(files))], {}, [])
+        seconds = _cpu() - before
+        crossed = [(Path(d.file).name, d.line) for d in analysis.diagnostics.items if d.code == "budget-exceeded"]
+        names = {str(row[2]) for row in analysis.store.rows("publisher")}
+        assert "/honest" in names
+        call = 7 + 6 * parts + 1  # the create_publisher line
+        assert crossed == ([] if parts == 1 else [("talker.cpp", call)]), (parts, crossed)
+        assert seconds < 10.0, (parts, seconds)
+
+
+def _cpu() -> float:
+    """CPU seconds of this process and of its children that ended (the C++ workers)."""
+    own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime

@@ -110,6 +110,9 @@ CASES: dict[str, Callable[[str], Case]] = {
     "py_name_built": python("name = 'ARCHLOG_CANARY' + '_SECRET'\nvalue = os.environ[name]  # READ", "'pkg_' + value"),
 }
 
+DEFAULTED = {"ros1_optenv", "ros1_eval_optenv", "ros2_yaml_env", "py_environment_variable", "py_opaque_function",
+             "py_environ_get"}  # the variable is read with a default written next to it
+
 
 def build_workspace(root: Path) -> dict[str, Case]:
     launch = root / "src" / "demo" / "launch"
@@ -132,6 +135,7 @@ class Runs:
     cases: dict[str, Case]
     hidden: dict[str, Run]  # format -> run without the variable
     given: Run  # json, with --env ARCHLOG_CANARY_SECRET=given
+    plain: Run  # json, without --verbose
 
 
 @pytest.fixture(scope="module")
@@ -142,9 +146,10 @@ def runs(tmp_path_factory: pytest.TempPathFactory) -> Runs:
     launches = [f"--launch=src/demo/launch/{file}" for file in [*(c.file for c in cases.values()), "allowed.launch"]]
     with pytest.MonkeyPatch.context() as patch:
         patch.setenv("ROS_DISTRO", DISTRO)
-        hidden = {fmt: run_check(workspace, outside, *launches, fmt=fmt) for fmt in ("text", "json", "sarif")}
+        hidden = {fmt: run_check(workspace, outside, *launches, "--verbose", fmt=fmt) for fmt in ("text", "json", "sarif")}
+        plain = run_check(workspace, outside, *launches, fmt="json")
         given = run_check(workspace, outside, *launches, f"--env={CANARY_ENV}=given", fmt="json")
-    return Runs(outside, cases, hidden, given)
+    return Runs(outside, cases, hidden, given, plain)
 
 
 def diagnostics(run: Run) -> list[dict]:
@@ -159,11 +164,17 @@ def test_the_secret_reaches_no_report(runs: Runs, fmt: str) -> None:
 
 @pytest.mark.parametrize("name", list(CASES))
 def test_each_read_is_reported_at_its_line_naming_the_variable(runs: Runs, name: str) -> None:
+    """With --verbose every read is listed: env-default where the input's own default was used,
+    env-not-given where there was none; without --verbose only the latter."""
     case = runs.cases[name]
-    found = [d for d in diagnostics(runs.hidden["json"]) if d["code"] == "env-not-given"
+    code = "env-default" if name in DEFAULTED else "env-not-given"
+    found = [d for d in diagnostics(runs.hidden["json"]) if d["code"].startswith("env-")
              and d["file"] == f"src/demo/launch/{case.file}"]
-    assert [d["line"] for d in found] == [case.line], found
+    assert [(d["line"], d["code"]) for d in found] == [(case.line, code)], found
     assert CANARY_ENV in found[0]["message"] and f"--env {CANARY_ENV}=" in found[0]["message"]
+    plain = [d["code"] for d in diagnostics(runs.plain) if d["file"] == f"src/demo/launch/{case.file}"
+             and d["code"].startswith("env-")]
+    assert plain == ([] if name in DEFAULTED else ["env-not-given"])
 
 
 @pytest.mark.parametrize("name", list(CASES))

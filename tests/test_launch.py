@@ -112,6 +112,9 @@ def test_bad_launch_input_becomes_diagnostics(tmp_path: Path) -> None:
     found = {(d.file, d.line, d.code) for d in sink.items}
     assert ("main.launch", 2, "launch-include") in found
     assert ("main.launch", 4, "launch-unresolved") in found
+    # the skipped include and node are holes of the recovery, with a hint that can fix the cause
+    assert [(file, line) for file, line, _why in config.holes] == [("main.launch", 2), ("main.launch", 4)]
+    assert "add the folder of package no_such_package_xyz" in config.holes[1][2]
     assert any(f == "broken.launch" and code == "launch-xml" for f, _l, code in found)
 
 

@@ -65,7 +65,7 @@ def test_the_three_dialects_of_one_system_agree() -> None:
         sink = DiagnosticSink()
         path = WS / "demo_bringup" / "launch" / f"system.launch.{suffix}"
         views[suffix] = view(LaunchInterpreter(Workspace([WS], sink), sink).load([path], {}))
-        assert sorted(d.code for d in sink.items) == ["env-not-given", "launch-arg-unknown", "launch-condition"], \
+        assert sorted(d.code for d in sink.items) == ["env-default", "launch-arg-unknown", "launch-condition"], \
             sink.items
     assert views["xml"] == views["yaml"] == views["py"]
 
@@ -313,7 +313,7 @@ def test_substitutions(tmp_path: Path) -> None:
     assert isinstance(values["missing_pkg"], Unknown) and "nowhere" in values["missing_pkg"].expr
     assert isinstance(values["command"], Unknown) and values["command"].line == 10
     assert values["content"] == "x" and isinstance(values["device"], Unknown)
-    assert sorted(codes(sink)) == [("main.xml", 3, "env-not-given"), ("main.xml", 12, "not-a-file")]  # no /dev/zero
+    assert sorted(codes(sink)) == [("main.xml", 3, "env-default"), ("main.xml", 12, "not-a-file")]  # no /dev/zero
     assert any("ARCHLOG_TEST_UNSET" in d.message for d in sink.items)
 
 

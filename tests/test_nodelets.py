@@ -177,7 +177,8 @@ def test_a_nodelet_that_hands_its_handle_to_an_object_of_its_file() -> None:
     assert ports == [("publisher", "/smoother/parameter_descriptions"), ("publisher", "/smoother/parameter_updates"),
                      ("publisher", "/smoother/smooth_cmd_vel"), ("service_server", "/smoother/set_parameters"),
                      ("subscriber", "/smoother/raw_cmd_vel")]
-    assert [d.code for d in result.diagnostics.items] == ["cpp-compile"]
+    # a note where pluginlib/class_list_macros.h (deprecated) is not installed: a stand-in is read
+    assert [d.code for d in result.diagnostics.items if d.code != "cpp-ros1-stand-in"] == ["cpp-compile"]
 
 
 ROTATE = """#include <dynamic_reconfigure/server.h>

@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import jsonschema
@@ -114,15 +115,28 @@ def test_a_macro_that_drops_its_argument_does_not_stop_the_nesting_check() -> No
     assert nested_calls([(path, text)], defines(path, text)) == (path, 4, "F")
 
 
+def package(root: Path, name: str, buildtool: str) -> Path:
+    """A package `name` under root/src with a launch folder."""
+    pkg = root / "src" / name
+    (pkg / "launch").mkdir(parents=True)
+    (pkg / "package.xml").write_text(f"<package format='3'><name>{name}</name><version>1.0.0</version>"
+                                     "<description>d</description><maintainer email='a@example.com'>a</maintainer>"
+                                     f"<license>MIT</license><buildtool_depend>{buildtool}</buildtool_depend>"
+                                     "</package>\n")
+    return pkg
+
+
+def checker(root: Path, launch: str) -> Callable[..., subprocess.CompletedProcess]:
+    """`archlog check ROOT --launch LAUNCH --source-root ROOT ARGS...`."""
+    return lambda *args: subprocess.run([sys.executable, "-m", "archlog", "check", str(root), "--launch", launch,
+                                         "--source-root", str(root), *args],
+                                        capture_output=True, text=True, cwd=ROOT, timeout=300)
+
+
 def test_a_launch_part_not_read_makes_the_report_partial(tmp_path: Path) -> None:
     # a while loop, an include of a missing file, and an action whose value is not known: each one
     # is counted in the recovery summary at its file:line, and --fail-on-incomplete fails on them
-    pkg = tmp_path / "src" / "bringup"
-    (pkg / "launch").mkdir(parents=True)
-    (pkg / "package.xml").write_text("<package format='3'><name>bringup</name><version>1.0.0</version>"
-                                     "<description>d</description><maintainer email='a@example.com'>a</maintainer>"
-                                     "<license>MIT</license><buildtool_depend>ament_cmake</buildtool_depend>"
-                                     "</package>\n")
+    pkg = package(tmp_path, "bringup", "ament_cmake")
     (pkg / "launch" / "holes.launch.py").write_text(
         "import os\n"
         "from launch import LaunchDescription\n"
@@ -136,10 +150,7 @@ def test_a_launch_part_not_read_makes_the_report_partial(tmp_path: Path) -> None
         "        IncludeLaunchDescription(PythonLaunchDescriptionSource('/nowhere/missing.launch.py')),\n"
         "    ])\n")
     launch = "src/bringup/launch/holes.launch.py"
-    run = lambda *args: subprocess.run([sys.executable, "-m", "archlog", "check", str(tmp_path), "--launch",  # noqa: E731
-                                        "bringup/launch/holes.launch.py",
-                                        "--source-root", str(tmp_path), *args],
-                                       capture_output=True, text=True, cwd=ROOT, timeout=300)
+    run = checker(tmp_path, "bringup/launch/holes.launch.py")
     document = json.loads(run("--format", "json").stdout)
     jsonschema.validate(document, JSON_SCHEMA)
     holes = document["coverage"]["holes"]
@@ -148,5 +159,35 @@ def test_a_launch_part_not_read_makes_the_report_partial(tmp_path: Path) -> None
     text = run().stdout
     assert "2 parts of the configuration not read" in text
     assert f"not read: {holes[0]['message']} ({launch}:7)" in text
+    assert run("--fail-on", "never").returncode == 0
+    assert run("--fail-on", "never", "--fail-on-incomplete").returncode == 1
+
+
+def test_a_ros1_include_skipped_makes_the_report_partial(tmp_path: Path) -> None:
+    # an <include> of a package that is not in the workspace (roslaunch would fail on this machine
+    # too): the report is partial at the include's file:line, with a hint that can fix the cause;
+    # an include of a package that is here is read and leaves no hole
+    pkg = package(tmp_path, "sim", "catkin")
+    (pkg / "launch" / "inner.launch").write_text("<launch>\n  <param name='x' value='1'/>\n</launch>\n")
+    (pkg / "launch" / "world.launch").write_text(
+        "<launch>\n"
+        "  <include file=\"$(find sim)/launch/inner.launch\"/>\n"
+        "  <include file=\"$(find absent_world_pkg)/launch/empty.launch\">\n"
+        "    <arg name=\"paused\" value=\"true\"/>\n"
+        "  </include>\n"
+        "</launch>\n")
+    launch = "src/sim/launch/world.launch"
+    run = checker(tmp_path, "sim/launch/world.launch")
+    document = json.loads(run("--format", "json").stdout)
+    jsonschema.validate(document, JSON_SCHEMA)
+    holes = document["coverage"]["holes"]
+    assert [(h["file"], h["line"]) for h in holes] == [(launch, 3)]
+    assert "package 'absent_world_pkg' not found" in holes[0]["message"]
+    assert "add the folder of package absent_world_pkg to the analysed paths" in holes[0]["message"]
+    assert "--arg" not in holes[0]["message"]
+    assert "1 part of the configuration not read" in run().stdout
+    sarif = json.loads(run("--format", "sarif").stdout)
+    assert any("absent_world_pkg" in str(n) for n in sarif["runs"][0]["invocations"][0].get(
+        "toolExecutionNotifications", [])), sarif["runs"][0]["invocations"]
     assert run("--fail-on", "never").returncode == 0
     assert run("--fail-on", "never", "--fail-on-incomplete").returncode == 1

@@ -86,3 +86,15 @@ def test_json_codequality_and_text_use_the_same_place(system: tuple[Path, str, s
     concise = report(system, "concise")
     per_spawner = 4 if launch == ROS2_LAUNCH else 3  # as in the SARIF test above
     assert all(concise.count(f"{launch}:{n}:1: AL201 ") == per_spawner for n in lines)
+
+
+def test_the_graph_page_shows_the_same_place(system: tuple[Path, str, set[int]]) -> None:
+    # the HTML page lists each finding with its file:line (relative to the analysed folder): the user's
+    # launch file, not the shipped model
+    root, launch, lines = system
+    page = root / "graph.html"
+    result = archlog("graph", root / "src", "--launch", Path(launch).relative_to("src"), "--output", page, cwd=root)
+    assert result.returncode == 0, result.stderr
+    places = set(re.findall(r'"where": "([^"]*)"', page.read_text()))
+    assert {f"{Path(launch).relative_to('src')}:{n}" for n in lines} <= places
+    assert not [p for p in places if "archlog/models/" in p]

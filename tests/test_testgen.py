@@ -181,7 +181,10 @@ def test_ros2_module_uses_rclpy_and_the_ros2_message_classes(ros2_module) -> Non
     assert ros2_module.MODEL["inputs"] == {"/robot1/cmd_vel": "geometry_msgs/msg/Twist"}
     assert ros2_module.MODEL["outputs"] == {"/robot1/cmd_vel_smoothed": "geometry_msgs/msg/Twist"}
     command = run_command(ros2_module.MODEL["commands"][0], {"/robot1/smoother/max_step": 0.5})
-    assert command == ["ros2", "run", "teleop", "velocity_smoother", "--ros-args", "-r", "__node:=smoother",
+    assert command is not None  # the entry point, under this Python: no ros2cli needed
+    assert command[:3] == [sys.executable, "-c", "import sys; from teleop.velocity_smoother import main as main; "
+                                                 "sys.exit(main())"]
+    assert command[3:] == ["--ros-args", "-r", "__node:=smoother",
                        "-r", "__ns:=/robot1", "-r", "/robot1/cmd_vel_in:=/robot1/cmd_vel",
                        "-r", "/robot1/cmd_vel_out:=/robot1/cmd_vel_smoothed", "-p", "max_step:=0.5"]
 

@@ -89,6 +89,7 @@ class Publish:
     source: Site | None = None
     guards: tuple[Guard, ...] = ()
     period: Value | None = None  # a loop's period in seconds (trigger "loop")
+    decided: bool = False  # its guards are all that decides whether this path reaches the call (python's walk)
 
 
 @dataclass(frozen=True)
@@ -101,6 +102,7 @@ class StateWrite:
     source: Site | None
     file: str
     line: int
+    decided: bool = False  # every path to it writes it, once per callback or at start-up (python's walk)
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ _SOURCE_KINDS = ("subscriber", "service_server", "action_server", "timer")
 
 def add_behavior(store: FactStore, node: str, summary: NodeSummary, sites: Sites,
                  bind: Callable[[Value], str | Unknown]) -> None:
-    """publish_call / publish_trigger / publish_guard / loop_period / state_write facts; ports are
+    """publish_call / publish_trigger / publish_guard / loop_period / state_write / decided facts; ports are
     found by their site among those the instance has (a port absent from this configuration, for
     example behind a parameter condition, takes its publish calls with it); `bind` evaluates a
     value (a loop period read from a parameter) for this instance."""
@@ -34,6 +34,8 @@ def add_behavior(store: FactStore, node: str, summary: NodeSummary, sites: Sites
                     store.add("publish_trigger", call, path.trigger, source)
                 if path.trigger == "loop" and path.period is not None:
                     store.add("loop_period", call, bind(path.period))
+            if all(p.decided for p in paths) and len({frozenset((g.var, g.value) for g in p.guards) for p in paths}) == 1:
+                store.add("decided", call)
             for guard in _common_guards(paths):
                 gid = store.new_id("g")
                 store.locate(gid, guard.file, guard.line)
@@ -43,6 +45,8 @@ def add_behavior(store: FactStore, node: str, summary: NodeSummary, sites: Sites
         store.locate(wid, write.file, write.line)
         for source in _ports(sites, write.source, _SOURCE_KINDS) if write.source else ["none"]:
             store.add("state_write", wid, node, write.var, write.value, source)
+        if write.decided:
+            store.add("decided", wid)
 
 
 def _ports(sites: Sites, site: Site, kinds: tuple[str, ...]) -> list[str]:

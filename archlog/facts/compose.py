@@ -16,7 +16,19 @@ from archlog.facts.parameters import add_param_spec, add_parameters
 from archlog.facts.store import FactStore
 from archlog.system.link import System
 from archlog.system.node_models import UNSET
-from archlog.values import Alternatives, Concat, Namespace, ParamList, ParamRef, Unknown, Value, concat, partly_known
+from archlog.values import (
+    Alternatives,
+    Concat,
+    Namespace,
+    OverBudget,
+    ParamList,
+    ParamRef,
+    Switch,
+    Unknown,
+    Value,
+    concat,
+    partly_known,
+)
 
 QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
 _MAX_INT = 2**31 - 1  # clingo's integers are 32-bit
@@ -90,6 +102,10 @@ def _unknown_port_names(store: FactStore, diagnostics: DiagnosticSink) -> None:
             if isinstance(name, Unknown):
                 file, line, column = store.location(str(port)) or (name.file, name.line, 0)
                 what = rel.replace("_", " ")
+                if isinstance(name, OverBudget):
+                    diagnostics.add(file, line, "budget-exceeded", f"the name of this {what} would be one of "
+                                    f"{name.expr}; it is not read", "warning", column=column)
+                    continue
                 known = " and ".join(part for part in (name.prefix and f"starts with {name.prefix}",
                                                        name.suffix and f"ends with {name.suffix}") if part)
                 consequence = f"it may connect to any name that {known}" if known else "its connections are not checked"
@@ -327,6 +343,11 @@ def _bind(value: Value, node: LaunchNode, config: LaunchConfig) -> str | Unknown
         return _bind(value.default, node, config)
     if isinstance(value, Namespace):
         return _namespace(value, node, config)
+    if isinstance(value, Switch):
+        subject = _single(_bind(value.subject, node, config))
+        if isinstance(subject, Unknown):
+            return subject
+        return _bind(value.when_equal if subject == value.equals else value.otherwise, node, config)
     if isinstance(value, Alternatives):
         bound = [_bind(option, node, config) for option in value.options]
         flat = [o for b in bound for o in _options(b)]

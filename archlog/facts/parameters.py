@@ -37,11 +37,11 @@ def value_type(value: object) -> str:
 
 def add_parameters(store: FactStore, system: System) -> None:
     """param_of, param_value_type and params_dynamic facts of a linked system."""
-    instances = sorted({i.launch.name for i in system.instances}, key=len, reverse=True)  # innermost node first
+    owners = _owners_by_prefix({i.launch.name for i in system.instances})
     for name, (value, _elem) in system.config.params.items():
         if (kind := value_type(value)) != "":
             store.add("param_value_type", name, kind)
-        owner = next((node for node in instances if name.startswith(node.rstrip("/") + "/")), None)
+        owner = _owner(name, owners)
         if owner is not None:
             store.add("param_of", name, owner, name[len(owner.rstrip("/")) + 1:])
     for elem, why in system.config.params_unknown:
@@ -50,6 +50,20 @@ def add_parameters(store: FactStore, system: System) -> None:
     for instance in system.instances:
         if instance.summary is not None and instance.summary.params_dynamic:
             store.add("params_dynamic", instance.launch.name, instance.summary.params_dynamic)
+
+
+def _owners_by_prefix(nodes: set[str]) -> dict[str, str]:
+    """Each node name by the prefix a parameter of it starts with (the name without trailing slashes, then one)."""
+    owners: dict[str, str] = {}
+    for node in sorted(nodes, key=len):  # of two names with one prefix, the longer wins, as in _owner
+        owners[node.rstrip("/") + "/"] = node
+    return owners
+
+
+def _owner(name: str, owners: dict[str, str]) -> str | None:
+    """The innermost (longest) node name whose prefix the parameter name starts with."""
+    found = [owners[name[:end + 1]] for end, char in enumerate(name) if char == "/" and name[:end + 1] in owners]
+    return max(found, key=len, default=None)
 
 
 def add_param_near(store: FactStore, threshold: float) -> None:

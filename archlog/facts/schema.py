@@ -107,7 +107,8 @@ RELATIONS: tuple[Relation, ...] = (
          _PORT, _NODE, ("action", "name", "resolved, remapped action namespace"), ("type", "type", "action type")),
     _rel("ports", "action_client", "A node instance is a client of an action.",
          _PORT, _NODE, ("action", "name", "resolved, remapped action namespace"), ("type", "type", "action type")),
-    _rel("ports", "param_read", "A node instance reads a parameter.",
+    _rel("ports", "param_read", "A node instance reads or declares a parameter (in its code, or in the "
+         "generate_parameter_library definition its executable links, located at the parameter's key).",
          _PORT, _NODE, ("param", "name", "resolved parameter name"), ("default", "str", "default value, or unknown")),
     _rel("ports", "param_write", "A node instance sets (or deletes) a parameter.",
          _PORT, _NODE, ("param", "name", "resolved parameter name"), ("value", "str", "value set, or 'delete'")),
@@ -117,13 +118,16 @@ RELATIONS: tuple[Relation, ...] = (
                  "double_array or string_array")),
     _rel("ports", "param_required", "A parameter declared (ROS 2) or read (rospy.get_param, outside a try block) "
          "without any default: the node fails, or holds no value, unless the configuration sets it.", _PORT),
-    _rel("ports", "param_read_only", "A parameter its declaration makes read-only (ParameterDescriptor read_only).",
+    _rel("ports", "param_read_only", "A parameter its declaration makes read-only (ParameterDescriptor read_only in "
+         "rclpy or rclcpp, read_only: true in a generate_parameter_library definition).",
          _PORT),
     _rel("ports", "param_bound", "A bound its declaration puts on a parameter's value (a ParameterDescriptor's "
-         "floating_point_range or integer_range); ROS 2 rejects a value outside it at start-up.",
+         "floating_point_range or integer_range, rclpy or rclcpp; a generate_parameter_library validator: bounds, "
+         "lower_bounds, upper_bounds, gt, lt, gt_eq, lt_eq); ROS 2 rejects a value outside it at start-up.",
          _PORT, ("op", "str", ">=, <=, > or <"), ("value", "str", "the bound, a number as written")),
     _rel("ports", "param_choice", "A value a parameter's declaration accepts, when its validator lists them (the "
-         "parameter takes one of the listed values).", _PORT, ("value", "str", "an accepted value as text")),
+         "parameter takes one of the listed values: generate_parameter_library's one_of).", _PORT,
+         ("value", "str", "an accepted value as text")),
     _rel("ports", "timer", "A periodic trigger in a node: a timer or a loop rate (for behavioral rules).",
          _PORT, _NODE, ("period", "str", "period in seconds as written or folded, or unknown")),
     _rel("ports", "queue_size", "The message queue of a ROS 1 publisher or subscriber.",
@@ -194,6 +198,10 @@ RELATIONS: tuple[Relation, ...] = (
          ("write", "id", "the assignment, for its location"), _NODE, ("var", "str", "the state variable"),
          ("value", "str", "the value it gets: true, false, set, unset, empty, nonempty, a constant, or ? when unknown"),
          ("source", "id", "the subscriber or service port whose callback writes it; `none` at start-up")),
+    _rel("behavior", "decided", "A publish call or state write that its trigger and guards alone decide: every "
+         "condition on every path to it is one of its guards (or, for a write, there is none), all paths to a call "
+         "have the same guards. Only Python's walk tells; a call or write without it may depend on more.",
+         ("id", "id", "the publish call or the state write")),
     _rel("behavior", "loop_period", "The period of the loop a periodic publish call sits in.",
          ("call", "id", "the publish call"), ("period", "str", "seconds, or unknown")),
     _rel("transforms", "tf_broadcast", "A transform a node instance broadcasts on tf (its model's `tf_broadcasts`, "
@@ -322,6 +330,9 @@ DERIVED: tuple[Relation, ...] = (
     _derived(_PRELUDE, "opaque_many", "For a port of a finding that names the uncertainty left, how many nodes are "
              "opaque when there are more than five (they are then counted, not named).", _PORT,
              ("count", "int", "the number of opaque nodes")),
+    _derived(_PRELUDE, "unread_part", "For a port of a finding that names the uncertainty left, a part of the "
+             "configuration not read (launch_hole) that may start what it misses.", _PORT,
+             ("where", "str", "the part's file:line")),
     _derived(_PRELUDE, "uncertain_port", "The port (and its node) of a finding of AL103, AL104, AL201, AL203 or AL601, "
              "whose message names the opaque nodes it still depends on.", _PORT, _NODE),
     _derived(_PRELUDE, "outside_by", "A subscriber or client whose counterpart only a modelled node outside the "

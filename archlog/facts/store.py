@@ -15,6 +15,7 @@ from archlog.facts.schema import BY_NAME, RELATIONS
 from archlog.values import Unknown
 
 Cell = str | int | Unknown
+_ARITY: dict[str, int] = {name: rel.arity for name, rel in BY_NAME.items()}  # (looked up once per row added)
 
 
 class FactStore:
@@ -34,9 +35,8 @@ class FactStore:
         return f"{prefix}{self._counters[prefix]:05d}"
 
     def add(self, relation: str, *row: Cell) -> None:
-        rel = BY_NAME[relation]
-        if len(row) != rel.arity:
-            raise ValueError(f"{relation} takes {rel.arity} columns, got {len(row)}")
+        if len(row) != _ARITY[relation]:
+            raise ValueError(f"{relation} takes {_ARITY[relation]} columns, got {len(row)}")
         rows = self._rows[relation]
         if row in rows:
             return
@@ -44,7 +44,7 @@ class FactStore:
         if relation == "location":
             self._locations.setdefault(str(row[0]), (str(row[1]), int(str(row[2])), int(str(row[3]))))
         for cell in row:
-            if isinstance(cell, str):
+            if type(cell) is str or isinstance(cell, str):  # (the first test is the quick one, for most cells)
                 if "\0" in cell:
                     self._nul.add(relation)
             elif isinstance(cell, Unknown) and cell not in self._unknowns:

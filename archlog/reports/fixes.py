@@ -6,6 +6,11 @@ ROS 2 alike). In launch XML (ROS 1, ROS 2) the element gets `<remap from=... to=
 launch file the `Node(...)` call gets `remappings=[(...)]` (or one more pair in its literal list).
 A node declared elsewhere (YAML launch, a computed remappings list) gets no fix. Two fixes of
 one element in one run: the first is applied, the second waits for the next run.
+
+A rule's `fix: {rename: [at, from, to], safe: BOOL}` renames a parameter where the configuration
+sets it (the line of the column `at`: a `<param>`, a key of a parameter file, a `parameters=`
+dictionary, `-p name:=`): the last segment of `from` becomes that of `to` when both have the same
+namespace and that segment is written exactly once on the line; anything else gets no fix.
 """
 
 from __future__ import annotations
@@ -99,30 +104,48 @@ def _python_remap(text: str, line: int, source: str, target: str) -> tuple[int, 
     return len(before), len(before), f"{lead}remappings=[{pair}]"
 
 
+def _rename(text: str, line: int, source: str, target: str) -> tuple[int, int, str] | None:
+    """The edit renaming the parameter `source` to `target` (relative names) on `line`."""
+    old_ns, _, old = source.lstrip("~").rpartition("/")
+    new_ns, _, new = target.lstrip("~").rpartition("/")
+    lines = text.split("\n")
+    if old_ns != new_ns or not 0 < line <= len(lines):
+        return None
+    found = list(re.finditer(rf"(?<![\w/]){re.escape(old)}(?![\w])", lines[line - 1]))
+    if len(found) != 1:
+        return None
+    start = sum(len(part) + 1 for part in lines[:line - 1]) + found[0].start()
+    return start, start + len(old), new
+
+
 def plan(findings: list[Finding], store, absolute: Callable[[str], Path]) -> list[Fix]:
-    """The fix of each finding whose rule has one and whose node is declared in a launch file
-    archlog can edit (XML or Python); `absolute` turns a fact's file into a path."""
+    """The fix of each finding whose rule has one and whose node (a remap) or parameter (a rename)
+    is written in a file archlog can edit; `absolute` turns a fact's file into a path."""
     elements = {str(name): str(elem) for name, _pkg, _exe, elem in store.rows("node")}
     fixes, seen = [], set()
     for finding in findings:
         if finding.rule.fix is None or finding.suppression is not None:
             continue
-        node, source, target = (finding.values.get(c) for c in finding.rule.fix)
-        if any(isinstance(v, Unknown) or v is None for v in (node, source, target)) or source == target:
+        first, source, target = (finding.values.get(c) for c in finding.rule.fix)
+        if any(isinstance(v, Unknown) or v is None or v == "none" for v in (first, source, target)) \
+                or source == target:
             continue
-        where = store.location(elements.get(str(node), ""))
-        if not where or (str(node), str(source)) in seen:
+        rename = finding.rule.fix_kind == "rename"
+        where = store.location(str(first) if rename else elements.get(str(first), ""))
+        if not where or (where[0], where[1], str(source)) in seen:
             continue
         path = absolute(where[0])
         try:
             text = path.read_text(encoding="utf-8")
         except OSError:
             continue
-        make = _python_remap if path.suffix == ".py" else _xml_remap if path.suffix in (".launch", ".xml") else None
+        make = _rename if rename else _python_remap if path.suffix == ".py" \
+            else _xml_remap if path.suffix in (".launch", ".xml") else None
         edit = make(text, where[1], str(source), str(target)) if make else None
         if edit is not None:
-            seen.add((str(node), str(source)))
-            fixes.append(Fix(finding, Edit(path, *edit), f"remap {source} to {target} on {node}"))
+            seen.add((where[0], where[1], str(source)))
+            what = f"rename {source} to {target}" if rename else f"remap {source} to {target} on {first}"
+            fixes.append(Fix(finding, Edit(path, *edit), what))
     return fixes
 
 

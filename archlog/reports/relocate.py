@@ -5,6 +5,10 @@ ships, or one outside the repository), which GitHub and GitLab cannot show on a 
 finding is moved to where the user configured the node: the remap that gave the port its name,
 else the parameter that names it, else the node's launch element (`<node>`, `Node(...)`). The
 model's line becomes the first related location, labelled as such.
+
+A finding of a name rule (tagged `names`: a near miss) about a port whose name is the value of a
+parameter the configuration sets (`<param name="scan_topic" value="scna"/>`) is where that value
+is written: the parameter's line, with the code that reads it as the first related location.
 """
 
 from __future__ import annotations
@@ -70,12 +74,27 @@ class Relocator:
         return finding, ""
 
 
+    def named_by_parameter(self, finding: Finding) -> tuple[Finding, str]:
+        """A name rule's finding on a port a configured parameter names, located at that parameter."""
+        port = str(finding.values.get(finding.rule.location, ""))
+        param = self.name_param.get(port)
+        elem = self.param_elem.get(param) if param is not None and "names" in finding.rule.tags else None
+        where = self._where(elem) if elem else None
+        if where is None or not where.file:
+            return finding, ""
+        return replace(finding, location=where, related=[finding.location, *finding.related]), \
+            f"the code that reads the name from parameter {param}"
+
+
 def relocate(findings: list[Finding], store, foreign: Callable[[str], bool]) -> tuple[list[Finding], dict]:
-    """Each finding located in the repository; the labels of the model locations they left, by
-    (file, line, column)."""
+    """Each finding located in the repository (a name rule's at the parameter that names its port);
+    the labels of the locations they left, by (file, line, column)."""
     mover = Relocator(store)
     moved, labels = [], {}
-    for finding in findings:
+    for found in findings:
+        finding, label = mover.named_by_parameter(found)
+        if label:
+            labels[(found.location.file, found.location.line, found.location.column)] = label
         new, label = mover.finding(finding, foreign)
         moved.append(new)
         if label:

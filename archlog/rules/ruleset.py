@@ -28,6 +28,7 @@ from archlog.diagnostics import SEVERITIES
 BUILTIN = Path(__file__).resolve().parent / "builtin"
 REQUIRED = ("id", "name", "severity", "finding", "location", "message", "summary")
 OPTIONAL = ("related", "description", "help", "tags", "precision", "lists", "url", "fix")
+FIX_KINDS = ("remap", "rename")  # what a rule's `fix` edits: a node's remaps, a name where it is set
 KEYS = REQUIRED + OPTIONAL  # a closed set: any other key is an error (docs/writing-rules.md documents each)
 PRECISIONS = ("high", "medium", "low")
 _HEAD = re.compile(r"^\s*(\w+)\s*\(([^()]*)\)\s*$")
@@ -68,9 +69,12 @@ class Rule:
     # metadata key -> its line in the file (errors about a key point at it)
     lines: dict[str, int] = field(default_factory=dict)
     # `fix: {remap: [node, from, to], safe: BOOL}`: the columns of the node whose launch element gets
-    # `<remap from= to=/>` (archlog check --fix), and whether --fix applies it without --unsafe-fixes
+    # `<remap from= to=/>` (archlog check --fix), and whether --fix applies it without --unsafe-fixes;
+    # `fix: {rename: [at, from, to], ...}`: the name `from` renamed to `to` on the line of the column
+    # `at` (where the configuration sets a parameter)
     fix: tuple[str, str, str] | None = None
     fix_safe: bool = False
+    fix_kind: str = "remap"
 
 
 @dataclass
@@ -210,10 +214,12 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
             raise fail("lists", f"list '{name}' must look like relation(column), with a column of {head.group(1)}")
         lists[str(name)] = (match.group(1), match.group(2).strip())
     fix = meta.get("fix")
-    if fix is not None and not (isinstance(fix, dict) and set(fix) <= {"remap", "safe"}
-                                and isinstance(fix.get("remap"), list) and len(fix["remap"]) == 3
-                                and all(c in columns for c in fix["remap"]) and isinstance(fix.get("safe", False), bool)):
-        raise fail("fix", f"`fix` must be {{remap: [node, from, to], safe: true|false}} with columns of {head.group(1)}")
+    kinds = [k for k in FIX_KINDS if isinstance(fix, dict) and k in fix]
+    if fix is not None and not (isinstance(fix, dict) and len(kinds) == 1 and set(fix) <= {*kinds, "safe"}
+                                and isinstance(fix[kinds[0]], list) and len(fix[kinds[0]]) == 3
+                                and all(c in columns for c in fix[kinds[0]]) and isinstance(fix.get("safe", False), bool)):
+        raise fail("fix", "`fix` must be {remap: [node, from, to], safe: true|false} or {rename: [at, from, to], "
+                   f"safe: true|false}} with columns of {head.group(1)}")
     try:
         str(meta["message"]).format(**dict.fromkeys([*columns, *lists], ""))
     except (KeyError, IndexError, ValueError, AttributeError) as exc:
@@ -224,5 +230,6 @@ def _rule(header: list[str], file: str, line: int) -> Rule:
         related=list(related), description=str(meta.get("description", "")).strip(),
         help=str(meta.get("help", "")).strip(), url=str(meta.get("url", "")).strip(), tags=list(meta.get("tags") or []),
         precision=precision, file=file, line=line, lists=lists, list_phrases=phrases, lines=lines,
-        fix=tuple(fix["remap"]) if fix else None, fix_safe=bool(fix and fix.get("safe", False)),
+        fix=tuple(fix[kinds[0]]) if fix else None, fix_safe=bool(fix and fix.get("safe", False)),
+        fix_kind=kinds[0] if fix else "remap",
     )

@@ -162,12 +162,12 @@ def _xacro(source: Path, mappings: dict[str, str], workspace: Workspace, elem: E
     try:
         expanded = expand(source, mappings, workspace.find)
     except XacroFailure as failure:
-        for name, place in failure.unseen:
-            diagnostics.add(*at(place), "env-not-given", sandbox.not_given_message(name))
+        for read, place in failure.unseen:
+            diagnostics.add(*at(place), *sandbox.env_note(read))
         diagnostics.add(*at(failure.place), failure.code, str(failure))
         return None
-    for name, place in expanded.unseen:
-        diagnostics.add(*at(place), "env-not-given", sandbox.not_given_message(name))
+    for read, place in expanded.unseen:
+        diagnostics.add(*at(place), *sandbox.env_note(read))
     for name, place in dict.fromkeys(expanded.legacy):
         diagnostics.add(*at(place), "xacro-legacy", f"<{name}> calls the macro {name} without the xacro: prefix "
                         "(deprecated; xacro 2 leaves it unexpanded); archlog expands it")

@@ -70,7 +70,7 @@ class Expanded:
 
     text: str
     files: list[Path]
-    unseen: list[tuple[str, Place]]
+    unseen: list[tuple[sandbox.NotGiven, Place]]
     legacy: list[tuple[str, Place]] = field(default_factory=list)  # macros called without xacro:, with places
 
 
@@ -78,7 +78,7 @@ class XacroFailure(Exception):
     """An expansion that stopped: the diagnostic code, the place that stopped it, and the
     variables read but not given before it did."""
 
-    def __init__(self, code: str, message: str, place: Place, unseen: list[tuple[str, Place]]) -> None:
+    def __init__(self, code: str, message: str, place: Place, unseen: list[tuple[sandbox.NotGiven, Place]]) -> None:
         super().__init__(message)
         self.code, self.place, self.unseen = code, place, unseen
 
@@ -103,7 +103,7 @@ class Expansion:
         self.xacro = xacro
         self.find = find
         self.needle: str | None = None  # text of the innermost failing piece, to find its line by
-        self.unseen: list[tuple[str, Place]] = []
+        self.unseen: list[tuple[sandbox.NotGiven, Place]] = []
         self.legacy: list[tuple[str, Place]] = []
         self.names = self._names()
 
@@ -217,7 +217,7 @@ class Expansion:
             try:
                 return substitute(f"$({inner})", context)
             finally:
-                self.unseen += [(name, self._located(name)) for name in unseen]
+                self.unseen += [(read, self._located(read.name)) for read in unseen]
 
     def load_yaml(self, filename: object) -> object:
         """`xacro.load_yaml`: a YAML file of the workspace (its units tags too), within budget."""

@@ -20,9 +20,9 @@ Do not edit: regenerating overwrites this file. Write properties in {properties}
 (fields, parameters, switches) go in the settings file given to `archlog testgen --settings`.
 Run with pytest; ARCHLOG_TESTGEN_EXAMPLES sets the number of examples (default {examples}),
 ARCHLOG_TESTGEN_STEPS the steps per example, ARCHLOG_TESTGEN_SHRINK_SECONDS the time spent shrinking
-a failure (default 300). Each example starts the nodes under test afresh on a private {private}
+a failure (default 60). Each example starts the nodes under test afresh on a private {private}
 (about 1-3 s an example) unless reuse is set.
-"""
+{undecided}"""
 
 import os
 from pathlib import Path
@@ -71,6 +71,12 @@ def _run_the_system():
     close_sessions()
 '''
 
+UNSTARTABLE = '''
+
+if unstartable(MODEL):
+    pytest.skip(unstartable(MODEL), allow_module_level=True)
+'''
+
 PROPERTIES = '''"""Properties of {what} that the generated test_{name}.py checks (archlog testgen writes this
 file once and never overwrites it). Each hook is called with every message received on its topic
 (an Event: topic, time, msg as a dict); `invariant` after every step. self.history holds every
@@ -90,9 +96,11 @@ from archlog.testgen.runtime import ArchitectureMachine"""
 ROS2_IMPORTS = """
 rclpy = pytest.importorskip("rclpy", reason="a ROS 2 test: source ROS 2's setup first")
 import rclpy.context  # noqa: E402
+import rclpy.duration  # noqa: E402
 import rclpy.executors  # noqa: E402
+import rclpy.qos  # noqa: E402
 {modules}
-from archlog.testgen.ros2 import Ros2Machine"""
+from archlog.testgen.ros2 import Ros2Machine, unstartable"""
 
 HOOK = '''    def {hook}(self, event: Event) -> None:
         """{topic} ({type})"""
@@ -111,18 +119,23 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     ros2 = model.get("ros") == 2
     types = sorted({*model["inputs"].values(), *model["outputs"].values()})
     modules = sorted({t.split("/")[0] for t in types})
-    imports = ROS2_IMPORTS.format(modules="\n".join(f"import {m}.msg  # noqa: E402" for m in modules)) if ros2 \
+    imports = ROS2_IMPORTS.format(modules="\n".join(
+        f'{m}_msg = pytest.importorskip("{m}.msg", reason="the message package {m} is not installed")'
+        for m in modules)) if ros2 \
         else ROS1_IMPORTS
-    classes = ", ".join(f'"{t}": {t.replace("/", ".")}' for t in types)
+    classes = ", ".join(f'"{t}": {t.split("/")[0]}_msg.{t.split("/")[-1]}' for t in types)
     classes = f"\n    rclpy = rclpy\n    classes = {{{classes}}}" if ros2 else ""
     text = HEADER.format(what=what, properties=properties, model=pformat(model, width=110),
                          settings=pformat(settings.to_dict(), width=110), cls=cls, name=name,
                          examples=examples, imports=imports, base="Ros2Machine" if ros2 else "ArchitectureMachine",
-                         classes=classes, private="DDS domain" if ros2 else "master")
+                         classes=classes, private="DDS domain" if ros2 else "master",
+                         undecided=_undecided(model))
     for topic, type_ in model["inputs"].items():
         if not model["specs"].get(type_, {}).get("missing"):
             text += RULE.format(type=type_, ident=hook_name(topic).removeprefix("on_"), topic=topic)
     text += FOOTER.format(cls=cls, examples=examples)
+    if ros2:
+        text += UNSTARTABLE
     written = [output / f"test_{name}.py"]
     written[0].write_text(text, encoding="utf-8")
     user = output / properties
@@ -131,3 +144,12 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
         user.write_text(PROPERTIES.format(what=what, name=name, hooks=hooks), encoding="utf-8")
         written.append(user)
     return written
+
+
+def _undecided(model: dict[str, Any]) -> str:
+    """The header's note of the properties not generated because the model cannot decide them."""
+    notes = [f"- {topic}: {why}" for topic, why in sorted(model.get("undecided", {}).items())]
+    if not notes:
+        return ""
+    return ("\nNot generated (undecided): that these outputs follow their required inputs; only that they stay\n"
+            "silent until those inputs came is checked.\n" + "\n".join(notes) + "\n")

@@ -1,10 +1,11 @@
 """What a generated test needs to know of the recovered configuration, as plain JSON-able data:
 the nodes under test, their open inputs and outputs with types, the recovered interface, the
-periodic outputs and the inputs each output requires, the parameters the nodes read, and the
+periodic outputs, the inputs each output requires and those it must follow (liveness.py), the parameters the nodes read, and the
 message definitions of the inputs' types (outputs are recorded by the bridge with the installed
 message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
 also holds how to start each node under test (package, executable, remaps, the configuration's
-parameters), as a ROS 2 test starts them with `ros2 run`."""
+parameters, its Python script or entry point), as a ROS 2 test starts them itself, and the QoS its
+publishers must offer."""
 
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ from archlog.analysis import Analysis, resolve_launch
 from archlog.facts.store import FactStore
 from archlog.observe import Architecture, from_facts
 from archlog.reports.behavior import behavior_model
+from archlog.testgen.liveness import Output, follows, seconds
 from archlog.testgen.msgspec import message_specs
 from archlog.values import Unknown
 
@@ -52,13 +54,14 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
             where.setdefault(str(ty), (store.location(pid) or ("", 0, 0))[:2])
     part = from_facts(store).restricted(set(chosen))
     interface = Architecture(frozenset(chosen), part.publishers, part.subscribers, part.services)
-    periodic, requires = _behavior(analysis, ctl, chosen, outputs, inputs)
+    periodic, requires, follow, undecided = _behavior(analysis, ctl, chosen, outputs, inputs)
     params = {str(name): (None if isinstance(default, Unknown) else str(default))
               for _p, n, name, default in store.rows("param_read") if str(n) in chosen and not isinstance(name, Unknown)}
     ros = 2 if any("/msg/" in ty for ty in (*inputs.values(), *outputs.values())) else 1
     return {
         "ros": ros,
-        "commands": _commands(store, chosen) if ros == 2 else [],
+        "commands": _commands(analysis, chosen) if ros == 2 else [],
+        "qos": _qos(store, chosen, inputs) if ros == 2 else {},
         "paths": [str(p.resolve()) for p in paths],
         "launch": [str(resolve_launch(spec, analysis.workspace).resolve()) for spec in launches],
         "args": dict(args),
@@ -69,31 +72,71 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
         "interface": interface.to_json(),
         "periodic": periodic,
         "requires": requires,
+        "follows": follow,
+        "undecided": undecided,
         "params": dict(sorted(params.items())),
         "specs": message_specs(analysis.workspace, where, analysis.diagnostics),
     }
 
 
-def _commands(store: FactStore, chosen: list[str]) -> list[dict[str, Any]]:
-    """How to start each node under test: package, executable, remaps and the configuration's
-    parameters of the node (resolved names; those with unknown parts left out)."""
-    known = (str, int, float)
+def _commands(analysis: Analysis, chosen: list[str]) -> list[dict[str, Any]]:
+    """How to start each node under test: package, executable, remaps, the configuration's parameters
+    of the node with their types (resolved names; those with unknown parts left out), and for a Python
+    executable of the workspace its script or console_scripts entry point (run without ros2cli)."""
+    store, known = analysis.store, (str, int, float)
     remaps: dict[str, list[list[str]]] = {}
     for _e, node, source, target in store.rows("remap"):
         if isinstance(source, str) and isinstance(target, str):
             remaps.setdefault(str(node), []).append([source, target])
     params = [(name, value) for name, value, _e in store.rows("param") if isinstance(name, str) and isinstance(value, known)]
     return [{"name": str(node), "pkg": str(pkg), "exe": str(exe), "remaps": remaps.get(str(node), []),
-             "params": {name: str(value) for name, value in params if name.startswith(f"{node}/")}}
+             "params": {name: value for name, value in params if name.startswith(f"{node}/")},
+             **_python_start(analysis, str(pkg), str(exe))}
             for node, pkg, exe, _e in store.rows("node") if str(node) in chosen]
 
 
+def _python_start(analysis: Analysis, pkg: str, exe: str) -> dict[str, str]:
+    """{"script": path} or {"entry": "module:function", "root": the folder it imports from}, or {}."""
+    executable = analysis.workspace.executable(pkg, exe)
+    if executable is None or executable.lang != "python" or not executable.sources:
+        return {}
+    source = executable.sources[0].resolve()
+    if not executable.entry:
+        return {"script": str(source)}
+    depth = len(executable.entry.partition(":")[0].split(".")) + (source.name == "__init__.py")
+    return {"entry": executable.entry, "root": str(source.parents[depth - 1])}
+
+
+def _qos(store: FactStore, chosen: list[str], inputs: dict[str, str]) -> dict[str, dict[str, Any]]:
+    """For each open input, the QoS the test's publisher must offer to match every subscriber of the
+    nodes under test: transient_local and a manual liveliness when one asks for it, the shortest
+    deadline and liveliness lease asked for (seconds)."""
+    subscribers = {str(pid): str(topic) for pid, node, topic, _ty in store.rows("subscriber")
+                   if str(node) in chosen and str(topic) in inputs}
+    offered: dict[str, dict[str, Any]] = {}
+    for pid, policy, value in store.rows("qos"):
+        topic = subscribers.get(str(pid))
+        if topic is not None and (policy, value) in (("durability", "transient_local"), ("liveliness", "manual_by_topic")):
+            offered.setdefault(topic, {})[str(policy)] = str(value)
+    for pid, policy, microseconds in store.rows("qos_duration"):
+        topic = subscribers.get(str(pid))
+        if topic is not None and policy in ("deadline", "liveliness_lease_duration") and isinstance(microseconds, int):
+            wanted = offered.setdefault(topic, {})
+            wanted[str(policy)] = min(wanted.get(str(policy), microseconds / 1e6), microseconds / 1e6)
+    return dict(sorted(offered.items()))
+
+
 def _behavior(analysis: Analysis, ctl: clingo.Control, chosen: list[str], outputs: dict[str, str],
-              inputs: dict[str, str]) -> tuple[dict[str, float], dict[str, list[str]]]:
+              inputs: dict[str, str]) -> tuple[dict[str, float], dict[str, list[str]], dict[str, float], dict[str, str]]:
     """Watched outputs published only by timers or loops of known period, with no guard and no
-    required input (topic -> the slowest period); and the open inputs each watched output requires."""
+    required input (topic -> the slowest period); the open inputs each watched output requires; the
+    outputs that must follow them (topic -> within which period, see liveness.py); and why the others
+    need not (topic -> reason)."""
     periodic: dict[str, float] = {}
     requires: dict[str, list[str]] = {}
+    follow: dict[str, float] = {}
+    undecided: dict[str, str] = {}
+    ports = {(str(n), str(t)): str(p) for p, n, t, _ty in analysis.store.rows("publisher")}
     for node in behavior_model(analysis.store, ctl):
         if node["node"] not in chosen:
             continue
@@ -104,25 +147,23 @@ def _behavior(analysis: Analysis, ctl: clingo.Control, chosen: list[str], output
             required = [t for t in output["requires"] if t in inputs]
             if required:
                 requires[topic] = required
+                within = follows(analysis.store, Output(node["node"], ports.get((node["node"], topic), ""), topic, required))
+                if isinstance(within, str) or set(output["requires"]) - set(required):
+                    undecided[topic] = within if isinstance(within, str) else \
+                        f"{topic} also requires inputs of nodes not under test"
+                else:
+                    follow[topic] = within
             periods = [_trigger_period(t) for call in output["calls"] for t in call["triggers"]]
             if periods and None not in periods and not output["requires"] \
                     and not any(call["guards"] for call in output["calls"]):
                 periodic[topic] = max(p for p in periods if p is not None)
-    return periodic, requires
+    return periodic, requires, follow, undecided
 
 
 def _trigger_period(trigger: dict) -> float | None:
     """A loop's period, or a timer's (its port is named "PERIOD s" in the behavior model)."""
     if trigger["kind"] == "loop":
-        return _seconds(trigger.get("period"))
+        return seconds(trigger.get("period"))
     if trigger["kind"] == "timer":
-        return _seconds(str(trigger.get("by", "")).removesuffix(" s"))
+        return seconds(str(trigger.get("by", "")).removesuffix(" s"))
     return None
-
-
-def _seconds(value: object) -> float | None:
-    try:
-        seconds = float(str(value))
-    except ValueError:
-        return None
-    return seconds if seconds > 0 else None

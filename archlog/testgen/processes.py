@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import random
 import re
 import signal
 import socket
@@ -19,6 +20,15 @@ _ANSI = re.compile(r"\x1b(\[[0-9;]*[A-Za-z]|\][^\x07]*\x07)")  # colours, termin
 
 
 def free_port() -> int:
+    """A port on 127.0.0.1 that binds now, below Linux's ephemeral range (32768-60999): a port the
+    kernel picked would be handed out again to any outgoing connection before the master binds it."""
+    for port in random.SystemRandom().sample(range(20000, 32768), 200):  # not the seeded `random` of a test
+        with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+            try:
+                s.bind(("127.0.0.1", port))
+            except OSError:
+                continue
+            return port
     with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
         s.bind(("127.0.0.1", 0))
         return s.getsockname()[1]

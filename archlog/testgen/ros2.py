@@ -1,5 +1,6 @@
-"""The ROS 2 side of a generated test: the nodes under test started with `ros2 run` (their package,
-executable, name, namespace, remaps and parameters as recovered) on a private DDS domain, fed and
+"""The ROS 2 side of a generated test: the nodes under test started as processes (a Python node's
+entry point or script, else `ros2 run`; name, namespace, remaps and typed parameters as recovered) on
+a private DDS domain, fed and
 watched by an rclpy node inside the test process, with the message classes the generated module
 imports. `Ros2Session` has the interface of runtime.Session, so the state machine, its steps and
 its properties are the same for ROS 1 and ROS 2.
@@ -18,6 +19,7 @@ import queue
 import shutil
 import signal
 import subprocess
+import sys
 import tempfile
 import threading
 import time
@@ -29,6 +31,7 @@ from archlog.testgen import processes
 from archlog.testgen.runtime import ArchitectureMachine
 
 _POLL = 0.05
+MAX_DOMAIN = 232
 
 
 def message_class(type_: str) -> type:
@@ -78,18 +81,69 @@ def to_json(value: Any) -> Any:
     return value
 
 
-def run_command(node: dict[str, Any], params: dict[str, Any]) -> list[str]:
-    """`ros2 run` for a node under test: its name, namespace, remaps, and parameters (the
-    configuration's, then the drawn ones, given as /node/name and set as the node's own)."""
+def run_command(node: dict[str, Any], params: dict[str, Any]) -> list[str] | None:
+    """How to start a node under test without ros2cli: its console_scripts entry point or script under
+    this Python, else `ros2 run` where ros2 is installed (None: neither); then its name, namespace,
+    remaps, and parameters with their types (the configuration's, then the drawn ones, given as
+    /node/name and set as the node's own)."""
+    if node.get("entry"):
+        module, _, function = node["entry"].partition(":")
+        command = [sys.executable, "-c", f"import sys; from {module} import {function} as main; sys.exit(main())"]
+    elif node.get("script"):
+        command = [sys.executable, node["script"]]
+    elif shutil.which("ros2"):
+        command = ["ros2", "run", node["pkg"], node["exe"]]
+    else:
+        return None
     namespace, _, base = node["name"].rpartition("/")
-    command = ["ros2", "run", node["pkg"], node["exe"], "--ros-args", "-r", f"__node:={base}",
-               "-r", f"__ns:={namespace or '/'}"]
+    command += ["--ros-args", "-r", f"__node:={base}", "-r", f"__ns:={namespace or '/'}"]
     for source, target in node["remaps"]:
         command += ["-r", f"{source}:={target}"]
     for name, value in {**node["params"], **params}.items():
         if name.startswith(node["name"] + "/"):
-            command += ["-p", f"{name[len(node['name']) + 1:].replace('/', '.')}:={json.dumps(value)}"]
+            command += ["-p", f"{name[len(node['name']) + 1:].replace('/', '.')}:={_typed(value)}"]
     return command
+
+
+def _typed(value: Any) -> str:
+    """A parameter value for `-p`, which reads it as YAML: a number or boolean as itself; a text as
+    written, so that the node reads it typed as launch_ros would (`false` a boolean, `0.8` a double)."""
+    return value if isinstance(value, str) and value.strip() else json.dumps(value)
+
+
+def unstartable(model: dict[str, Any]) -> str | None:
+    """Why a node under test cannot be started here (no Python source and no ros2 executable), or None."""
+    missing = [node["name"] for node in model["commands"] if run_command(node, {}) is None]
+    return f"cannot start {', '.join(missing)}: not a Python node of the workspace, and no ros2 executable" \
+        if missing else None
+
+
+def private_domain() -> int:
+    """A DDS domain for this test process, in ARCHLOG_TESTGEN_DOMAINS (LOW-HIGH, default 1-99; at
+    most 232, the highest whose ports the DDS port formula keeps in range)."""
+    low, high = (int(x) for x in os.environ.get("ARCHLOG_TESTGEN_DOMAINS", "1-99").split("-"))
+    low, high = min(low, MAX_DOMAIN), min(high, MAX_DOMAIN)
+    return low + os.getpid() % (high - low + 1)
+
+
+def qos_profile(rclpy: Any, wanted: dict[str, Any]) -> Any:
+    """The QoS a test publisher offers: what the subscribers under test ask for (see model._qos)."""
+    from_seconds = rclpy.duration.Duration
+    qos = rclpy.qos.QoSProfile(depth=100)
+    if wanted.get("durability") == "transient_local":
+        qos.durability = rclpy.qos.DurabilityPolicy.TRANSIENT_LOCAL
+    if wanted.get("liveliness") == "manual_by_topic":
+        qos.liveliness = rclpy.qos.LivelinessPolicy.MANUAL_BY_TOPIC
+    if "deadline" in wanted:
+        qos.deadline = from_seconds(seconds=wanted["deadline"])
+    if "liveliness_lease_duration" in wanted:
+        qos.liveliness_lease_duration = from_seconds(seconds=wanted["liveliness_lease_duration"])
+    return qos
+
+
+def watching_qos(rclpy: Any) -> Any:
+    """A test subscriber matches any publisher: best effort, volatile, no deadline."""
+    return rclpy.qos.QoSProfile(depth=100, reliability=rclpy.qos.ReliabilityPolicy.BEST_EFFORT)
 
 
 class Ros2Session:
@@ -103,9 +157,10 @@ class Ros2Session:
         self.procs: dict[str, subprocess.Popen] = {}  # node under test -> its process
         self.launched_params: dict[str, Any] | None = None
         self.launches = 0
-        self.domain = 1 + os.getpid() % 100  # a domain of its own (ROS_DOMAIN_ID 1-101)
-        self.env = dict(os.environ, ROS_DOMAIN_ID=str(self.domain), ROS_LOCALHOST_ONLY="1", ROS_HOME=str(self.tmp),
-                        ROS_LOG_DIR=str(self.tmp / "log"), PYTHONUNBUFFERED="1")
+        self.domain = private_domain()
+        self.env = dict(os.environ, ROS_DOMAIN_ID=str(self.domain), ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST",
+                        ROS_HOME=str(self.tmp), ROS_LOG_DIR=str(self.tmp / "log"), PYTHONUNBUFFERED="1")
+        self.env.pop("ROS_LOCALHOST_ONLY", None)  # deprecated; it would override the discovery range
 
     @property
     def log(self) -> Path:
@@ -113,14 +168,16 @@ class Ros2Session:
 
     def start(self) -> None:
         rclpy = self.rclpy
+        os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"  # read when the context starts
         self.context = rclpy.context.Context()
         rclpy.init(context=self.context, domain_id=self.domain)
         self.node = rclpy.create_node("archlog_testgen_bridge", context=self.context)
         inputs, outputs = self.model["inputs"], self.model["outputs"]
-        self.publishers = {t: self.node.create_publisher(self.classes[ty], t, 100) for t, ty in inputs.items()}
+        self.publishers = {t: self.node.create_publisher(self.classes[ty], t, qos_profile(rclpy, self.model["qos"].get(t, {})))
+                           for t, ty in inputs.items()}
         for topic, type_ in outputs.items():
             self.node.create_subscription(self.classes[type_], topic, lambda m, t=topic: self.events.put(
-                {"ev": "msg", "topic": t, "t": time.time(), "msg": to_json(m)}), 100)
+                {"ev": "msg", "topic": t, "t": time.time(), "msg": to_json(m)}), watching_qos(rclpy))
         self.executor = rclpy.executors.SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         threading.Thread(target=self.executor.spin, daemon=True).start()
@@ -149,10 +206,13 @@ class Ros2Session:
         self.launches += 1
         self.launched_params = params
         with open(self.log, "ab") as out:
-            self.procs = {node["name"]: subprocess.Popen(run_command(node, params), env=self.env, stdout=out,
-                                                         stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                                                         start_new_session=True)
-                          for node in self.model["commands"]}
+            for node in self.model["commands"]:
+                command = run_command(node, params)
+                if command is None:
+                    raise RuntimeError(unstartable(self.model))
+                env = dict(self.env, PYTHONPATH=os.pathsep.join(p for p in (node.get("root"), self.env.get("PYTHONPATH")) if p))
+                self.procs[node["name"]] = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT,
+                                                            stdin=subprocess.DEVNULL, start_new_session=True, cwd=self.tmp)
         deadline = time.monotonic() + timeout
         while not all(self.node_alive(n) for n in self.model["nodes"]):
             if any(p.poll() is not None for p in self.procs.values()):

@@ -50,7 +50,7 @@ STEP_SETTLE = 0.1  # seconds after a step's messages before the properties are c
 @contextlib.contextmanager
 def bounded_shrinking() -> Iterator[None]:
     """Shrinking fit for examples that each run real processes (a second or more), while a generated
-    test runs: bounded by ARCHLOG_TESTGEN_SHRINK_SECONDS (default 300), and starting with the steps.
+    test runs: bounded by ARCHLOG_TESTGEN_SHRINK_SECONDS (default 60), and starting with the steps.
     Hypothesis's coarse first pass tries to lower every rule choice of the example with up to three
     re-randomised runs each, and its next pass makes every part of the example trivial in turn (a
     needed step's every field too); with a run of the system per attempt that used the whole budget
@@ -59,7 +59,7 @@ def bounded_shrinking() -> Iterator[None]:
     from hypothesis.internal.conjecture import engine, shrinker
 
     saved = engine.MAX_SHRINKING_SECONDS, shrinker.Shrinker.initial_coarse_reduction
-    engine.MAX_SHRINKING_SECONDS = int(os.environ.get("ARCHLOG_TESTGEN_SHRINK_SECONDS", "300"))
+    engine.MAX_SHRINKING_SECONDS = int(os.environ.get("ARCHLOG_TESTGEN_SHRINK_SECONDS", "60"))
     shrinker.Shrinker.initial_coarse_reduction = _trivial_steps  # type: ignore[method-assign]
     try:
         yield
@@ -533,12 +533,13 @@ def check_properties(machine: ArchitectureMachine, final: bool) -> None:
     now = time.time()
     for topic, period in machine.periodic.items():
         _check_period(machine, topic, period, now)
-    if settings.properties["requires"] and final:
-        for topic, inputs in model["requires"].items():
+    if settings.properties["requires"] and final:  # liveness: only where the behavior model decides it
+        for topic, period in model.get("follows", {}).items():
+            inputs = model["requires"][topic]
             sent = [machine.first_sent[i] for i in inputs if i in machine.first_sent]
             if len(sent) < len(inputs):
                 continue
-            bound = settings.response_bound + model["periodic"].get(topic, 0.0)
+            bound = settings.response_bound + period
             after = [e for e in machine.properties.history if e.topic == topic and e.time >= max(sent)]
             if now - max(sent) >= bound and not after:
                 raise Violation(f"{topic} requires {', '.join(inputs)}, which was published, but nothing came "

@@ -30,16 +30,15 @@ class FromCaller(Unknown):
 
 def settled_ports(ports: list[Port], sites: Sites) -> list[Port]:
     """Ports whose names, handles, defaults and conditions take their callers' values."""
-    found: list[Port] = []
-    for port in ports:
-        condition = port.condition and (settle(port.condition[0], sites), port.condition[1])
-        also = tuple((settle(value, sites), wanted) for value, wanted in port.also)
-        done = replace(port, name=settle(port.name, sites), handle_ns=settle(port.handle_ns, sites),
-                       default=None if port.default is None else settle(port.default, sites), condition=condition,
-                       also=also)
-        if done not in found:
-            found.append(done)
-    return found
+    return list(dict.fromkeys(_settled(port, sites) for port in ports))  # once each, in order (not quadratic)
+
+
+def _settled(port: Port, sites: Sites) -> Port:
+    condition = port.condition and (settle(port.condition[0], sites), port.condition[1])
+    also = tuple((settle(value, sites), wanted) for value, wanted in port.also)
+    return replace(port, name=settle(port.name, sites), handle_ns=settle(port.handle_ns, sites),
+                   default=None if port.default is None else settle(port.default, sites), condition=condition,
+                   also=also)
 
 
 def settled_loads(loads: list[LoadedNodelet], sites: Sites) -> list[LoadedNodelet]:
@@ -69,7 +68,7 @@ def merged_sites(parts: list[Sites]) -> Sites:
     sites: Sites = {}
     for part in parts:
         for usr, calls in part.items():
-            sites.setdefault(usr, []).extend(c for c in calls if c not in sites.get(usr, []))
+            sites[usr] = list(dict.fromkeys([*sites.get(usr, []), *calls]))
     return sites
 
 

@@ -21,7 +21,7 @@ import shlex
 import shutil
 import subprocess
 import tempfile
-from collections.abc import Collection
+from collections.abc import Callable, Collection
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -36,6 +36,7 @@ from archlog.extract.cpp.callers import merged_sites, settled_loads, settled_por
 from archlog.extract.cpp.macros import MACRO_TOKENS, Macro, defines, macro_bomb, nested_calls
 from archlog.extract.cpp.reach import reached
 from archlog.extract.cpp.result import FileResult
+from archlog.extract.cpp.ros1_stand_ins import MESSAGE_INCLUDE, ros1_library, ros1_stand_in_dir
 from archlog.extract.cpp.roscpp import walk
 from archlog.extract.cpp.stubs import (
     API_DIR,
@@ -45,7 +46,6 @@ from archlog.extract.cpp.stubs import (
     is_ros2,
     library_for,
     library_interfaces,
-    ros1_stand_in_dir,
     spelled_types,
     stand_in_dir,
 )
@@ -86,12 +86,13 @@ class CppEnvironment:
     fingerprint: str = ""
     interfaces: Interfaces = field(default_factory=Interfaces)
     refused: list[str] = field(default_factory=list)  # workspace files clang must never read
+    parameter_headers: Path | None = None  # stand-ins of generate_parameter_library headers (parameter_headers.py)
 
     def __post_init__(self) -> None:
         system = sorted(glob.glob("/opt/ros/*/include")) + ["/usr/include"] + _nested_include_roots() + \
             [d for d in ("/usr/include/eigen3", "/usr/include/opencv4") if Path(d).is_dir()]
         includes = [str(p) for p in self.workspace_includes if p.is_dir() and sandbox.current().inside(p)]
-        includes += [str(self.generated)] if self.generated else []
+        includes += [str(d) for d in (self.generated, self.parameter_headers) if d]
         self.args = ["-x", "c++", "-std=c++17", "-Wno-everything", "-ferror-limit=0",
                      *(f"-I{d}" for d in includes + system)]
         rdir = resource_dir()
@@ -258,6 +259,7 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
     result = walk(tu, source, shown, incomplete_ast=bool(everywhere), cls=cls, ros2=scan.ros2, graph=graph,
                   workspace=tuple(str(root.resolve()) for root in env.roots))
     result.depends = [(inc.include.name, _mtime(inc.include.name)) for inc in tu.get_includes()]
+    result.diagnostics += _ros1_stand_in_note(tu, source, shown, stand_ins) if not scan.ros2 else []
     result.diagnostics += _blocked_includes(tu, source, shown, scan)
     result.missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
     result.missing += [n for n in scan.missing + scan.dual if n not in result.missing]
@@ -280,7 +282,7 @@ def _parse(index: ci.Index, source: Path, shown: str, env: CppEnvironment, cls: 
         first = next((d for d in own if d.location.line in result.fallback_lines), (own or gaps)[0])
         line = first.location.line if own else min(result.fallback_lines)
         result.diagnostics.append(Diagnostic(shown, line, "cpp-stand-in",
-                                             f"archlog's stand-in ROS 2 headers lack what this line uses "
+                                             f"archlog's stand-in ROS {2 if scan.ros2 else 1} headers lack what this line uses "
                                              f"({first.spelling}); its calls were read from the tokens", "note"))
         result.incomplete = f"{shown}:{line}: read from the tokens"
     return result
@@ -292,8 +294,7 @@ def _parse_confined(index: ci.Index, source: Path, env: CppEnvironment,
     includes seen empty by clang: those the scan found beforehand, then any the unit still
     included (through a macro, say), parsed again without them."""
     for _attempt in range(3):
-        tu, stand_ins = _parse_ros2(index, source, env, scan) if scan.ros2 else \
-            (_parse_ros1(index, source, env, scan), [])
+        tu, stand_ins = (_parse_ros2 if scan.ros2 else _parse_ros1)(index, source, env, scan)
         more = [name for inc in tu.get_includes() if not scan.blocks(name := inc.include.name)
                 and not _own(name) and unreadable(name, "source") is not None]
         if not more:
@@ -308,6 +309,20 @@ def _own(path: Path | str) -> bool:
     return str(path).startswith((str(cache_dir()), str(API_DIR), resource_dir() or str(API_DIR)))
 
 
+def _ros1_stand_in_note(tu: ci.TranslationUnit, source: Path, shown: str, stand_ins: list[str]) -> list[Diagnostic]:
+    """A note when ROS 1 library headers were stand-ins, at the line of the source that includes
+    the first of them (directly or through its headers), naming it."""
+    forwarders = [inc for inc in tu.get_includes() if stand_ins and inc.include.name.startswith(stand_ins[0])
+                  and ros1_library(str(Path(inc.include.name).relative_to(stand_ins[0])))]
+    if not forwarders:
+        return []
+    first = min(forwarders, key=lambda inc: inc.depth)  # the source's own include, if it has one
+    line = first.location.line if first.source.name == str(source) else 1
+    name = Path(first.include.name).relative_to(stand_ins[0])
+    return [Diagnostic(shown, line, "cpp-ros1-stand-in", f"{name} is not installed: this file is read with "
+                       "archlog's stand-in ROS 1 headers", "note")]
+
+
 def _blocked_includes(tu: ci.TranslationUnit, source: Path, shown: str, scan: _Scan) -> list[Diagnostic]:
     """A diagnostic for each file the unit includes that clang was given empty, at the line of
     the source that includes it (directly or through its headers)."""
@@ -320,18 +335,23 @@ def _blocked_includes(tu: ci.TranslationUnit, source: Path, shown: str, scan: _S
     return list(dict.fromkeys(found))
 
 
-def _parse_ros1(index: ci.Index, source: Path, env: CppEnvironment, scan: _Scan) -> ci.TranslationUnit:
-    """ROS 1 code: with ros/ros.h precompiled and stand-ins for message headers not installed."""
-    stubs = ros1_stand_in_dir(scan.missing)
-    extra = [f"-I{stubs}"] if stubs else []
-    own = env.file_args(source)
-    tu = _load(index, source, env.parse_args(source) + extra, env.args + own + extra, scan.unsaved)
-    missing = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))]
-    more = ros1_stand_in_dir(missing) if missing else None
-    if more is not None and not extra:  # found only while parsing (included by a header): again
-        tu = _load(index, source, env.parse_args(source) + [f"-I{more}"], env.args + own + [f"-I{more}"],
-                   scan.unsaved)
-    return tu
+def _parse_ros1(index: ci.Index, source: Path, env: CppEnvironment,
+                scan: _Scan) -> tuple[ci.TranslationUnit, list[str]]:
+    """ROS 1 code: with ros/ros.h precompiled when installed, and stand-ins for the library and
+    message headers that are not. Returns the unit and the stand-in folder used."""
+    folders = env.folders(source)
+
+    def exists(name: str) -> bool:
+        return env.find(name, folders) is not None
+
+    def attempt(wanted: list[str]) -> tuple[ci.TranslationUnit, list[str]]:
+        folder = ros1_stand_in_dir(wanted, env.interfaces, exists)
+        used = [str(folder), str(API_DIR)] if folder else []
+        extra = [f"-I{f}" for f in used]
+        return _load(index, source, env.parse_args(source) + extra, env.args + env.file_args(source) + extra,
+                     scan.unsaved), used
+
+    return _with_stand_ins(list(scan.missing), attempt, lambda n: bool(ros1_library(n) or MESSAGE_INCLUDE.match(n)))
 
 
 def _parse_ros2(index: ci.Index, source: Path, env: CppEnvironment,
@@ -344,22 +364,28 @@ def _parse_ros2(index: ci.Index, source: Path, env: CppEnvironment,
     def exists(name: str) -> bool:
         return env.find(name, folders) is not None
 
-    tu, used = None, []
-    for _attempt in range(2):
+    def attempt(wanted: list[str]) -> tuple[ci.TranslationUnit, list[str]]:
         folder = stand_in_dir(wanted, scan.spellings, env.interfaces, exists)
         used = ([str(folder)] if folder else []) + [str(API_DIR)]
         stand_in_rclcpp = any(library_for(n) for n in wanted) and \
             not any(exists(n) for n in ["rclcpp/rclcpp.hpp", *library_interfaces("rclcpp")])
         pch = _rclcpp_pch() if stand_in_rclcpp else None
-        tu = index.parse(str(source), args=[f"-I{f}" for f in used] + env.args + env.file_args(source)
-                         + (["-include-pch", str(pch), "-Xclang", "-fno-validate-pch"] if pch else []),
-                         unsaved_files=scan.unsaved, options=_KEEP_GOING)
-        more = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))
-                and (library_for(m.group(1)) or INTERFACE_INCLUDE.match(m.group(1))) and m.group(1) not in wanted]
-        if not more:  # else: included by an installed header, found only while parsing
-            break
-        wanted += more
-    return tu, used
+        return index.parse(str(source), args=[f"-I{f}" for f in used] + env.args + env.file_args(source)
+                           + (["-include-pch", str(pch), "-Xclang", "-fno-validate-pch"] if pch else []),
+                           unsaved_files=scan.unsaved, options=_KEEP_GOING), used
+
+    return _with_stand_ins(wanted, attempt, lambda n: bool(library_for(n) or INTERFACE_INCLUDE.match(n)))
+
+
+def _with_stand_ins(wanted: list[str], attempt: Callable[[list[str]], tuple[ci.TranslationUnit, list[str]]],
+                    stands_in: Callable[[str], bool]) -> tuple[ci.TranslationUnit, list[str]]:
+    """The unit parsed with stand-ins for the `wanted` includes (and the stand-in folders used); once
+    more with the headers clang did not find that have stand-ins (included by an installed header,
+    found only while parsing)."""
+    tu, used = attempt(wanted)
+    more = [m.group(1) for d in tu.diagnostics if (m := _NOT_FOUND.search(d.spelling))
+            and stands_in(m.group(1)) and m.group(1) not in wanted]
+    return attempt(wanted + list(dict.fromkeys(more))) if more else (tu, used)
 
 
 def is_ros2_source(source: Path, env: CppEnvironment) -> bool:
@@ -483,7 +509,7 @@ def _ros1_system(folder: Path) -> bool:
 @lru_cache(maxsize=1)
 def _stand_in_stamp() -> str:
     """The content of the library stand-ins, so that cached results do not outlive a change."""
-    return key(*[p.read_bytes() for p in sorted(API_DIR.rglob("*.hpp"))])
+    return key(*[p.read_bytes() for p in sorted(API_DIR.rglob("*.h*"))])
 
 
 _KEPT_FLAGS = ("-I", "-D", "-U", "-isystem", "-std=", "-include")
@@ -594,7 +620,8 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
     graph = result.graph
     ports = [p for p in result.ports if running is None or graph is None
              or graph.ports.get((p.file, p.line, p.column), "") in running | {""}]
-    summary.ports += [p for p in ports if p not in summary.ports]  # a header's code is read with each file
+    known = set(summary.ports)
+    summary.ports += [p for p in ports if p not in known]  # a header's code is read with each file
     summary.loads += [n for n in result.loads if n not in summary.loads]
     if result.default_name is not None and summary.default_name is not None and \
             result.default_name != summary.default_name:

@@ -235,11 +235,22 @@ class _Walker:
         found = {evaluate(args[index]) for site in sites if len(args := written_args(site)) > index}
         if len(found) == 1:
             return next(iter(found))
+        if what == "NodeHandle" and len(found) > 1 and self.each_runs(sites) and \
+                not any(isinstance(v, (Unknown, Alternatives)) for v in found):  # one handle per call site
+            return Alternatives(tuple(dict.fromkeys(evaluate(written_args(site)[index]) for site in sites)), True)
         if found or function is None or index < 0:
             return self.unknown(expr, f"call sites pass different values for {what}")
         unknown = self.unknown(expr, f"{param.spelling} comes from a caller in another file: no call site in this "
                                      f"file passes this {what}")  # callers.py looks in the executable's other files
         return FromCaller(unknown.expr, unknown.file, unknown.line, functions=function_keys(function), index=index)
+
+    def each_runs(self, sites: list[ci.Cursor]) -> bool:
+        """Whether no two call sites are in different branches of one if/else (only one of those runs)."""
+        taken: dict[ci.Cursor, set[bool]] = {}
+        for site in sites:
+            for condition, branch in self.branches.around(site):
+                taken.setdefault(condition, set()).add(branch)
+        return all(len(branches) == 1 for branches in taken.values())
 
     def record_call_sites(self, calls: list[ci.Cursor]) -> None:
         """The handle, name and flag arguments of the calls to the workspace's functions, for
@@ -522,6 +533,12 @@ class _Walker:
         if isinstance(name, Alternatives) and name.every:  # a loop makes one port per value
             for option in name.options:
                 self.add(kind, call, option, type_, handle, default, queue, qos, param=param)
+            return
+        if isinstance(handle, Alternatives) and handle.every:  # a handle each call site passes: a port each
+            for option in handle.options:
+                self.add(kind, call, name, type_, option if isinstance(name, str) else
+                         self.unknown(call, "call sites pass different values for NodeHandle"),
+                         default, queue, qos, param=param)
             return
         loc, file = call.location, self.shown(call)
         self.port_calls.setdefault(call, []).append(kind)

@@ -16,9 +16,7 @@ include names (tf2_ros, image_transport, message_filters, diagnostic_updater, bo
 count as present for ROS 2 code. The headers of one translation unit go to a folder named after
 their content.
 
-ROS 1 code: message packages that are not installed get a minimal declaration of the type (and
-of its service or action family), named as the code spells it; the fields are missing
-(ros1_stand_in_dir).
+ROS 1 code: ros1_stand_ins.py.
 """
 
 from __future__ import annotations
@@ -94,6 +92,7 @@ EMBEDDED = {
         "GoalInfo goal_info\n---\nint8 ERROR_NONE=0\nint8 ERROR_REJECTED=1\nint8 ERROR_UNKNOWN_GOAL_ID=2\n"
         "int8 ERROR_GOAL_TERMINATED=3\nint8 return_code\nGoalInfo[] goals_canceling\n"),
     "tf2_msgs/msg/TFMessage": "geometry_msgs/TransformStamped[] transforms\n",
+    "diagnostic_msgs/srv/SelfTest": "---\nstring id\nbyte passed\nDiagnosticStatus[] status\n",
     "std_srvs/srv/Empty": "---\n",
     "std_srvs/srv/Trigger": "---\nbool success\nstring message\n",
     "std_srvs/srv/SetBool": "bool data\n---\nbool success\nstring message\n",
@@ -173,26 +172,38 @@ def stand_in_dir(missing: Iterable[str], spellings: set[str], interfaces: Interf
                  exists: Callable[[str], bool]) -> Path | None:
     """A folder with stand-ins for the missing ROS 2 includes (and the interfaces they need), or
     None when none of them is a ROS 2 library or interface header."""
+
+    def header(include: str) -> tuple[str, Iterable[str]]:
+        library = library_for(include)
+        if library is not None:
+            same = _TF2_SAME_AS_ROS1.match(include)
+            return (f"// archlog stand-in\n#include <tf2/{same.group(1)}.h>\n" if same else
+                    f'// archlog stand-in\n#include "archlog_ros2/{library}.hpp"\n'), library_interfaces(library)
+        match = INTERFACE_INCLUDE.match(include)
+        assert match is not None  # only library and interface includes are asked for
+        pkg, kind, name = match.groups()
+        return _interface_header(pkg, kind, name, spellings, interfaces)
+
+    return stand_ins_folder([n for n in missing if library_for(n) or INTERFACE_INCLUDE.match(n)], header, exists)
+
+
+def stand_ins_folder(missing: list[str], header: Callable[[str], tuple[str, Iterable[str]]],
+                     exists: Callable[[str], bool]) -> Path | None:
+    """A folder with a stand-in for each missing include (`header(include)`: its text and the
+    includes it needs) and for each include they need that does not exist; None when none is missing."""
     files: dict[str, str] = {}
-    pending = [name for name in missing if library_for(name) or INTERFACE_INCLUDE.match(name)]
+    pending = list(missing)
     while pending:
         include = pending.pop()
         if include in files:
             continue
-        library = library_for(include)
-        if library is not None:
-            same = _TF2_SAME_AS_ROS1.match(include)
-            files[include] = f"// archlog stand-in\n#include <tf2/{same.group(1)}.h>\n" if same else \
-                f'// archlog stand-in\n#include "archlog_ros2/{library}.hpp"\n'
-            needed = library_interfaces(library)
-        else:
-            match = INTERFACE_INCLUDE.match(include)
-            assert match is not None  # pending holds library and interface includes only
-            pkg, kind, header = match.groups()
-            files[include], needed = _interface_header(pkg, kind, header, spellings, interfaces)
+        files[include], needed = header(include)
         pending += [n for n in needed if n not in files and not exists(n)]
-    if not files:
-        return None
+    return headers_folder(files) if files else None
+
+
+def headers_folder(files: dict[str, str]) -> Path:
+    """A folder in the cache holding these headers (by include name), named after their content."""
     digest = hashlib.sha256("\0".join(f"{k}\0{v}" for k, v in sorted(files.items())).encode()).hexdigest()[:24]
     folder = cache_dir() / "stand_ins" / digest
     if not (folder / ".done").is_file():
@@ -238,9 +249,9 @@ def _interface_header(pkg: str, kind: str, header: str, spellings: set[str],
     includes: list[str] = []
     body = []
     for index, suffix in enumerate(_PART[kind]):
-        members, nested = _members(sections[index] if index < len(sections) else "", pkg)
+        fields, nested = members(sections[index] if index < len(sections) else "", pkg)
         includes += nested
-        body.append(_struct(f"{name}{suffix}", members))
+        body.append(_struct(f"{name}{suffix}", fields))
     if kind != "msg":
         aliases = "".join(f"  using {suffix[1:]} = {name}{suffix};\n" for suffix in _PART[kind])
         body.append(f"struct {name}\n{{\n{aliases}}};\n")
@@ -268,9 +279,17 @@ def _struct(name: str, members: str) -> str:
             f"{members}}};\nusing {name} = {name}_<std::allocator<void>>;\n")
 
 
-def _members(section: str, pkg: str) -> tuple[str, list[str]]:
+def _ros2_nested(base: str, pkg: str) -> tuple[str, str | None]:
+    owner, _, type_name = base.rpartition("/")
+    owner, type_name = _ROS1_BUILTINS.get(base, (owner or pkg, type_name))
+    return f"{owner}::msg::{type_name}_<ContainerAllocator>", f"{owner}/msg/{snake(type_name)}.hpp"
+
+
+def members(section: str, pkg: str, nested: Callable[[str, str], tuple[str, str | None]] = _ros2_nested,
+            fixed_array: str = "std::array", field_types: bool = False) -> tuple[str, list[str]]:
     """C++ members (fields and constants) of one section of a definition, and the headers of the
-    nested types."""
+    nested types; `nested(type, pkg)` is the C++ type of a non-primitive field and its header;
+    `field_types`: each field's type also named `_<field>_type`, as ROS 1's gencpp does."""
     lines, includes = [], []
     for raw in section.splitlines():
         text = raw.split("#", 1)[0].strip() if '"' not in raw and "'" not in raw else raw.strip()
@@ -281,17 +300,16 @@ def _members(section: str, pkg: str) -> tuple[str, list[str]]:
         if base in _PRIMITIVES:
             cpp = _PRIMITIVES[base]
         else:
-            owner, _, type_name = base.rpartition("/")
-            owner, type_name = _ROS1_BUILTINS.get(base, (owner or pkg, type_name))
-            cpp = f"{owner}::msg::{type_name}_<ContainerAllocator>"
-            includes.append(f"{owner}/msg/{snake(type_name)}.hpp")
+            cpp, include = nested(base, pkg)
+            includes += [include] if include else []
         if match.group("constant") is not None and base in _PRIMITIVES:
             lines.append(_constant(cpp, match.group("name"), match.group("constant").strip()))
             continue
         if match.group("array"):
-            cpp = f"std::array<{cpp}, {match.group('n')}>" if match.group("n") and not match.group("size") \
+            cpp = f"{fixed_array}<{cpp}, {match.group('n')}>" if match.group("n") and not match.group("size") \
                 else f"std::vector<{cpp}>"
-        lines.append(f"  {cpp} {match.group('name')};\n")
+        name = match.group("name")
+        lines.append(f"  typedef {cpp} _{name}_type;\n  _{name}_type {name};\n" if field_types else f"  {cpp} {name};\n")
     return "".join(lines), includes
 
 
@@ -323,64 +341,3 @@ def _remove(folder: Path) -> None:
     for path in sorted(folder.rglob("*"), key=lambda p: len(p.parts), reverse=True):
         path.rmdir() if path.is_dir() else path.unlink()
     folder.rmdir()
-
-
-# ROS 1: `#include <control_msgs/FollowJointTrajectoryAction.h>` of a package not installed
-MESSAGE_INCLUDE = re.compile(r"^(\w+)/([A-Z]\w*)\.h$")
-
-_ROS1_STRUCT = """#ifndef ARCHLOG_STUB_{pkg}_{name}
-#define ARCHLOG_STUB_{pkg}_{name}
-namespace {pkg} {{
-template <class ContainerAllocator> struct {name}_ {{
-  typedef {name}_<ContainerAllocator> Type;
-  typedef boost::shared_ptr<{name}_<ContainerAllocator> > Ptr;
-  typedef boost::shared_ptr<{name}_<ContainerAllocator> const> ConstPtr;
-{members}}};
-typedef {name}_<std::allocator<void> > {name};
-typedef boost::shared_ptr<{name}> {name}Ptr;
-typedef boost::shared_ptr<{name} const> {name}ConstPtr;
-}}
-#endif
-"""
-
-
-def ros1_stand_in_dir(missing: list[str]) -> Path | None:
-    """A folder with stand-ins for the missing message-like includes, or None if there are none."""
-    wanted = [m for name in missing if (m := MESSAGE_INCLUDE.match(name))]
-    if not wanted:
-        return None
-    folder = cache_dir() / "stubs"
-    for match in wanted:
-        target = folder / match.group(1) / f"{match.group(2)}.h"
-        if not target.is_file():
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_text(_ros1_header(match.group(1), match.group(2)))
-    return folder
-
-
-def _ros1_struct(pkg: str, name: str, members: str = "") -> str:
-    return _ROS1_STRUCT.format(pkg=pkg, name=name, members=members)
-
-
-def _ros1_header(pkg: str, name: str) -> str:
-    parts = ["// archlog stand-in: the real header is not installed\n#pragma once\n#include <memory>\n"
-             "#include <boost/shared_ptr.hpp>\n"]
-    if name.endswith("Action"):
-        base = name[: -len("Action")]
-        for part in ("Goal", "Result", "Feedback"):
-            parts.append(_ros1_struct(pkg, base + part))
-            parts.append(_ros1_struct(pkg, f"{base}Action{part}",
-                                 f"  typedef {base}{part}_<ContainerAllocator> _{part.lower()}_type;\n"
-                                 f"  _{part.lower()}_type {part.lower()};\n"))
-        parts.append(_ros1_struct(pkg, name, "".join(
-            f"  typedef {base}Action{part}_<ContainerAllocator> _action_{part.lower()}_type;\n"
-            for part in ("Goal", "Result", "Feedback"))))
-    elif name.endswith(("Request", "Response")):
-        parts.append(_ros1_struct(pkg, name))
-    else:  # a message or a service: provide both shapes
-        parts.append(_ros1_struct(pkg, name + "Request"))
-        parts.append(_ros1_struct(pkg, name + "Response"))
-        parts.append(_ros1_struct(pkg, name, f"  typedef {name}Request_<ContainerAllocator> Request;\n"
-                                        f"  typedef {name}Response_<ContainerAllocator> Response;\n"
-                                        "  Request request;\n  Response response;\n"))
-    return "".join(parts)

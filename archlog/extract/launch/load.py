@@ -25,7 +25,7 @@ def ros2_marker(root: etree._Element) -> etree._Element | None:
         if not isinstance(el.tag, str):
             continue
         if el.tag in _ROS2_TAGS or (el.tag == "node" and el.get("exec") is not None) or \
-                any(v.find(marker) >= 0 for v in el.attrib.values() for marker in _ROS2_SUBST):
+                any("$(" in v and any(marker in v for marker in _ROS2_SUBST) for v in el.attrib.values()):
             return el
     return None
 

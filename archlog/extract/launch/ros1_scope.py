@@ -128,10 +128,10 @@ class Ros1Loader:
         line = el.sourceline if el is not None and el.sourceline else 1
         self.diagnostics.add(self.display(file), line, code, message, severity)
 
-    def _hole(self, file: Path, el: etree._Element, code: str, message: str) -> None:
-        """An error diagnostic for a part of the configuration not read (an include skipped): the
+    def _hole(self, file: Path, el: etree._Element, code: str, message: str, severity: str = "error") -> None:
+        """A diagnostic for a part of the configuration not read (an include or node skipped): the
         recovery summary counts it."""
-        self._diag(file, el, code, message)
+        self._diag(file, el, code, message, severity)
         self.config.holes.append((self.display(file), el.sourceline or 1, message))
 
     @staticmethod
@@ -193,8 +193,8 @@ class Ros1Loader:
         with sandbox.reads_not_given() as unseen, self._crossing_at(path, el):
             budget.spend("elements")
             self._tag(path, el, scope)
-        for name in unseen:
-            self._diag(path, el, "env-not-given", sandbox.not_given_message(name), "note")
+        for read in unseen:
+            self._diag(path, el, *sandbox.env_note(read), "note")
 
     @contextmanager
     def _crossing_at(self, path: Path, el: etree._Element) -> Iterator[None]:
@@ -236,12 +236,12 @@ class Ros1Loader:
         """The diagnostic for an element roslaunch would reject (or that depends on this machine)."""
         if el.tag in ("param", "rosparam"):
             self.config.params_unknown.append((self._element(path, el), f"<{el.tag}> skipped: {exc}"))
+        # a skipped <include> or <node> leaves nodes unseen: a hole in the recovery, not only a warning
+        report = self._hole if el.tag in ("include", "node") else self._diag
         if isinstance(exc, RefusedRead):
-            self._diag(path, el, exc.code, f"<{el.tag}> skipped: {exc}", "warning")
+            report(path, el, exc.code, f"<{el.tag}> skipped: {exc}", "warning")
         elif isinstance(exc, Unresolved):
-            self._diag(path, el, "launch-unresolved",
-                       f"<{el.tag}> skipped: {exc}; pass the value with --arg or --env",
-                       "warning")
+            report(path, el, "launch-unresolved", f"<{el.tag}> skipped: {exc}; {_remedy(exc)}", "warning")
         else:
             self._diag(path, el, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",
                        f"<{el.tag}>: {exc}")
@@ -284,3 +284,17 @@ def ns_join(ns: str, name: str) -> str:
         return name
     return ns + name if ns.endswith("/") else f"{ns}/{name}"
 
+
+
+def _remedy(exc: Unresolved) -> str:
+    """What can fix an unresolved value: the hint for its cause (a missing package is not fixed by
+    --arg)."""
+    text = str(exc)
+    if package := re.match(r"package '([^']+)' not found", text):
+        return (f"add the folder of package {package.group(1)} to the analysed paths (or give the nodes it "
+                "starts models with --model)")
+    if variable := re.match(r"environment variable (\S+) is not given", text):
+        return f"pass it with --env {variable.group(1)}=VALUE"
+    if arg := re.match(r"arg '([^']+)' is unknown", text):
+        return f"pass it with --arg {arg.group(1)}:=VALUE"
+    return "pass the value with --arg or --env"

@@ -53,7 +53,9 @@ class SubstContext:
     def getenv(self, name: str, default: str | None = None) -> str:
         if name in self.env:
             return self.env[name]
-        sandbox.not_given(name)
+        if (shell := sandbox.shell_value(name)) is not None:  # --env-from-shell
+            return shell
+        sandbox.not_given(name, defaulted=bool(default))  # $(optenv X) alone: no default written
         if default is None:
             raise Unresolved(f"environment variable {name} is not given")
         return default

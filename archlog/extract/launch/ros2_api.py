@@ -432,7 +432,9 @@ def environment(interp: Interpreter, name: str, default: object, line: int) -> o
     """An environment variable as os.environ.get(name, default) reads it, from the variables the
     run was given; reading another is reported at `line`."""
     if name not in interp.env:
-        interp.not_given(name, line)
+        if (shell := sandbox.shell_value(name)) is not None:  # --env-from-shell
+            return shell
+        interp.not_given(sandbox.NotGiven(name, default is not None and not isinstance(default, Unread)), line)
         return default
     value = interp.env[name]
     return Unread(f"environment variable {name} is not known ({value.reason})", line) \

@@ -24,6 +24,7 @@ from archlog.extract.launch.ros2_actions import (
     Where,
 )
 from archlog.extract.launch.ros2_subst import Context, Parts, Text, opaque, text
+from archlog.sandbox import NotGiven
 
 MAX_RANGE = 10_000
 
@@ -133,7 +134,7 @@ class Interpreter(Protocol):
 
     def site(self, line: int) -> int: ...
 
-    def not_given(self, name: str, line: int) -> None: ...
+    def not_given(self, read: NotGiven, line: int) -> None: ...
 
     def refused_read(self, exc: RefusedRead, line: int) -> None:
         """Report a file the sandbox will not read, named at `line`."""

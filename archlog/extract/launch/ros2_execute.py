@@ -129,8 +129,8 @@ class Ros2Launch(Ros2Nodes):
                 crossing = budget.crossed(self.host.display(action.where.file), action.where.line, exc)
             except budget.Crossed as exc:
                 crossing = exc
-        for name in unseen:
-            self.diag(action.where, "env-not-given", sandbox.not_given_message(name), "note")
+        for read in unseen:
+            self.diag(action.where, *sandbox.env_note(read), "note")
         if crossing is None:
             return
         if crossing.final:

@@ -78,8 +78,8 @@ class Values(Evaluator, ABC):
     def find(self, pkg: str) -> Path | None:
         return self.launcher.workspace.find(pkg)
 
-    def not_given(self, name: str, line: int) -> None:
-        self.launcher.diag(Where(self.path, line), "env-not-given", sandbox.not_given_message(name), "note")
+    def not_given(self, read: sandbox.NotGiven, line: int) -> None:
+        self.launcher.diag(Where(self.path, line), *sandbox.env_note(read), "note")
 
     def site(self, line: int) -> int:
         """Where an action made at `line` is reported: at the call of the helper function it was

@@ -280,7 +280,7 @@ def _env(args: tuple[Parts, ...], ctx: Context) -> str:
         if isinstance(value, UnknownArg):
             raise Unresolved(f"environment variable {name} is not known ({value.reason})")
         return value
-    sandbox.not_given(name)
+    sandbox.not_given(name, defaulted=len(args) > 1)
     if len(args) > 1:
         return perform(args[1], ctx)
     raise Unresolved(f"environment variable {name} is not given")

@@ -2,6 +2,9 @@
 attributes, f-strings, `%` and `.format`, `+`, parameter reads, the node's namespace, and function or
 `__init__` parameters whose call sites in the file agree (a small function summary). Loop variables
 take the element a walk binds them to (`bound`) or, folded elsewhere, every element of the sequence.
+A variable one function assigns several times is followed through that function in order
+(`in_order`: a parameter read in try/except KeyError, an `if` on the value itself); a function's
+parameters are bound per call site when the walk visits it once per call (node.py).
 Anything else is an explicit Unknown with file:line.
 """
 
@@ -12,11 +15,16 @@ import re
 from dataclasses import dataclass, replace
 
 from archlog.extract.python.index import Assigned, FileIndex, Function, arg, is_self_attr
-from archlog.values import Namespace, ParamList, ParamRef, Unknown, Value, alternatives, concat
+from archlog.values import Namespace, ParamList, ParamRef, Switch, Unknown, Value, alternatives, concat
 
 _PARAMETER_VALUES = {"value", "string_value", "integer_value", "double_value", "bool_value"}
 _KIND = {ast.AugAssign: "augmented assignment", ast.For: "loop variable", ast.With: "with target"}
 _SAME_ELEMENTS = {"list", "tuple", "sorted", "reversed"}  # calls whose result has the elements of their argument
+_MISSING_PARAMETER = {"KeyError", "Exception", "BaseException"}  # what rospy.get_param raises for a parameter not set
+
+
+class _NotInOrder(Exception):
+    """The statements assigning a variable do more than in_order() follows."""
 
 
 @dataclass(frozen=True)
@@ -39,6 +47,7 @@ class ValueFolder(FileIndex):
     def __init__(self, file: str, tree: ast.Module) -> None:
         self.bound: dict[tuple[int | None, str], Element] = {}
         self.scope: Function | None = None
+        self.current: dict[tuple[int, str], Value] = {}  # a variable's value so far, while in_order() runs
         super().__init__(tree)
         self.file = file
 
@@ -85,7 +94,7 @@ class ValueFolder(FileIndex):
             return self.elements(item.expr, item.scope, depth + 1) if item.expr is not None else \
                 self.unknown(expr, "elements of an element not known")
         if isinstance(expr, ast.Name) and scope is not None and expr.id not in scope.assigns and \
-                expr.id in _parameters(scope):
+                expr.id in parameters(scope):
             passed = self.arguments(scope, expr.id)
             if len(passed) == 1 and passed[0][0] is not None:  # the one call site's argument
                 return self.elements(passed[0][0], passed[0][1], depth + 1)
@@ -139,6 +148,8 @@ class ValueFolder(FileIndex):
             return self.unknown(expr)
         if isinstance(expr, ast.Name):
             return self.name_value(expr, depth, scope)
+        if is_self_attr(expr) and scope is not None and (id(scope.node), ast.unparse(expr)) in self.current:
+            return self.current[(id(scope.node), ast.unparse(expr))]
         if isinstance(expr, ast.Attribute) and (found := self.assigned(expr, scope)) is not None:
             return self.single(found[0], expr, depth, found[1])
         if isinstance(expr, ast.BinOp) and isinstance(expr.op, ast.Add):
@@ -171,9 +182,11 @@ class ValueFolder(FileIndex):
                 return self.value(item.expr, depth + 1, item.scope)
             return item.value if item.value is not None else self.unknown(expr)
         if scope is not None:
+            if (id(scope.node), expr.id) in self.current:
+                return self.current[(id(scope.node), expr.id)]
             if expr.id in scope.assigns:
                 return self.single(scope.assigns[expr.id], expr, depth, scope)
-            if expr.id in _parameters(scope):
+            if expr.id in parameters(scope):
                 return self.parameter(scope, expr.id, expr, depth)
         return self.single(self.module_assigns.get(expr.id, []), expr, depth, None)
 
@@ -187,11 +200,68 @@ class ValueFolder(FileIndex):
                                                                                    "statically")
             return alternatives([self.value(i.expr, depth + 1, i.scope) if i.expr is not None else self.unknown(at)
                                  for i in items], True, self.unknown(at, "loop over values not known statically"))
+        if (flowed := self.in_order(exprs, at, depth, scope)) is not None:
+            return flowed
         values = [self.value(e, depth + 1, self.attr_scope.get(id(e), scope)) if isinstance(e, ast.expr)
                   else self.unknown(at, _KIND[type(e)]) for e in exprs]
         if not values:
             return self.unknown(at, "not assigned in this file")
         return alternatives(values, False, self.unknown(at, "assigned values not all known"))
+
+    def in_order(self, exprs: list[Assigned], at: ast.expr, depth: int, scope: Function | None) -> Value | None:
+        """The value a local name or self attribute that one function assigns several times holds
+        after that function's statements, followed in order: a parameter read in `try` whose `except
+        KeyError` assigns a default, and `if` on the value itself (`if x != '': x = '/' + x`, a
+        Switch decided per node instance). None when that does not apply: a use before the last
+        assignment, or statements it does not follow (loops, other tests)."""
+        if len(exprs) < 2 or not all(isinstance(e, ast.expr) for e in exprs) or scope is None:
+            return None
+        owners = {id(self.attr_scope.get(id(e))) for e in exprs} if is_self_attr(at) else {id(scope)}
+        owner = self.attr_scope.get(id(exprs[0])) if is_self_attr(at) else scope
+        if len(owners) != 1 or owner is None or not isinstance(at, ast.Name) and not is_self_attr(at):
+            return None
+        if self.function_of(at) is owner and at.lineno <= max(getattr(e, "lineno", 0) for e in exprs):
+            return None
+        if not _followable(owner.node.body, ast.unparse(at)):  # checked before anything is folded
+            return None
+        try:
+            return self._flow(owner.node.body, None, owner, ast.unparse(at), depth)
+        except _NotInOrder:
+            return None
+
+    def _flow(self, stmts: list[ast.stmt], state: Value | None, owner: Function, text: str, depth: int) -> Value | None:
+        """The value of `text` after `stmts` (None: not assigned yet); _NotInOrder when not followed."""
+        for stmt in stmts:
+            if not any(_assigns(node, text) for node in ast.walk(stmt)):
+                continue
+            if isinstance(stmt, (ast.Assign, ast.AnnAssign)) and stmt.value is not None and \
+                    all(isinstance(t, (ast.Name, ast.Attribute)) for t in _targets(stmt)):
+                state = self._assigned_now(stmt.value, state, owner, text, depth)
+            elif isinstance(stmt, ast.Try) and not any(_assigns(n, text) for s in stmt.finalbody for n in ast.walk(s)):
+                tried = self._flow(stmt.orelse, self._flow(stmt.body, state, owner, text, depth), owner, text, depth)
+                state = _caught(tried, [(h, self._flow(h.body, state, owner, text, depth)) for h in stmt.handlers])
+            elif isinstance(stmt, ast.If):
+                then = self._flow(stmt.body, state, owner, text, depth)
+                other = self._flow(stmt.orelse, state, owner, text, depth)
+                test = _equality(stmt.test, text)
+                if then == other:
+                    state = then
+                elif test is None or state is None or then is None or other is None:
+                    raise _NotInOrder
+                else:
+                    state = Switch(state, test[0], then if test[1] else other, other if test[1] else then)
+            else:
+                raise _NotInOrder
+        return state
+
+    def _assigned_now(self, expr: ast.expr, state: Value | None, owner: Function, text: str, depth: int) -> Value:
+        """The value of an assignment in order: the variable in it holds its value so far."""
+        key = (id(owner.node), text)
+        self.current[key] = state if state is not None else self.unknown(expr, "used before it is assigned")
+        try:
+            return self.value(expr, depth + 1, owner)
+        finally:
+            del self.current[key]
 
     def parameter(self, scope: Function, name: str, at: ast.expr, depth: int) -> Value:
         """A parameter takes the value all call sites in the file pass (or its default)."""
@@ -264,8 +334,78 @@ class ValueFolder(FileIndex):
         return concat(*parts)
 
 
-def _parameters(scope: Function) -> list[str]:
-    """The names of a function's parameters (positional and keyword-only)."""
+def _targets(stmt: ast.Assign | ast.AnnAssign) -> list[ast.expr]:
+    return stmt.targets if isinstance(stmt, ast.Assign) else [stmt.target]
+
+
+def _assigns(node: ast.AST, text: str) -> bool:
+    """Whether a node assigns the variable spelt `text` (as a target, or a part of one)."""
+    if isinstance(node, (ast.Assign, ast.AnnAssign)):
+        targets = _targets(node)
+    elif isinstance(node, (ast.AugAssign, ast.For, ast.AsyncFor)):
+        targets = [node.target]
+    elif isinstance(node, (ast.With, ast.AsyncWith)):
+        targets = [i.optional_vars for i in node.items if i.optional_vars is not None]
+    else:
+        return False
+    return any(ast.unparse(part) == text for target in targets for part in ast.walk(target))
+
+
+def _followable(stmts: list[ast.stmt], text: str) -> bool:
+    """Whether the statements assigning the variable spelt `text` are only ones in_order() follows:
+    plain assignments, try/except for a missing parameter, and `if` tests of the variable itself."""
+    for stmt in stmts:
+        if not any(_assigns(node, text) for node in ast.walk(stmt)):
+            continue
+        if isinstance(stmt, (ast.Assign, ast.AnnAssign)):
+            if stmt.value is None or not all(isinstance(t, (ast.Name, ast.Attribute)) for t in _targets(stmt)):
+                return False
+        elif isinstance(stmt, ast.Try):
+            if not (_followable(stmt.body, text) and _followable(stmt.orelse, text) and
+                    all(_catches_missing(h) and _followable(h.body, text) for h in stmt.handlers) and
+                    not any(_assigns(n, text) for s in stmt.finalbody for n in ast.walk(s))):
+                return False
+        elif not (isinstance(stmt, ast.If) and _equality(stmt.test, text) is not None and
+                  _followable(stmt.body, text) and _followable(stmt.orelse, text)):
+            return False
+    return True
+
+
+def _equality(test: ast.expr, text: str) -> tuple[str, bool] | None:
+    """A test of the variable spelt `text` against a string: (the string, whether the test holds when
+    they are equal). `if x:` is `x != ''`, `if not x:` is `x == ''`."""
+    if ast.unparse(test) == text:
+        return "", False
+    if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not) and ast.unparse(test.operand) == text:
+        return "", True
+    if isinstance(test, ast.Compare) and len(test.ops) == 1 and isinstance(test.ops[0], (ast.Eq, ast.NotEq)):
+        sides = [test.left, test.comparators[0]]
+        literal = [s.value for s in sides if isinstance(s, ast.Constant) and isinstance(s.value, str)]
+        if literal and any(ast.unparse(s) == text for s in sides):
+            return literal[0], isinstance(test.ops[0], ast.Eq)
+    return None
+
+
+def _caught(tried: Value | None, caught: list[tuple[ast.ExceptHandler, Value | None]]) -> Value | None:
+    """The value after try/except: a parameter read without default whose handlers for a missing
+    parameter all assign one value reads with that value as its default."""
+    if all(value == tried for _h, value in caught):
+        return tried
+    values = {value for _h, value in caught if value is not None}
+    if isinstance(tried, ParamRef) and isinstance(tried.default, Unknown) and len(values) == len(caught) == 1 and \
+            all(_catches_missing(h) for h, _v in caught):
+        return replace(tried, default=values.pop())
+    raise _NotInOrder
+
+
+def _catches_missing(handler: ast.ExceptHandler) -> bool:
+    """An except clause that catches the KeyError of a parameter not set."""
+    kinds = handler.type.elts if isinstance(handler.type, ast.Tuple) else [handler.type]
+    return any(k is None or isinstance(k, ast.Name) and k.id in _MISSING_PARAMETER for k in kinds)
+
+
+def parameters(scope: Function) -> list[str]:
+    """The names of a function's parameters (positional and keyword-only; a method's self too)."""
     return [a.arg for a in scope.node.args.args + scope.node.args.kwonlyargs]
 
 

@@ -21,7 +21,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.builtin_ports import builtin
 from archlog.extract.cpp.cache import ResultCache, key
 from archlog.extract.python.behavior.triggers import recover_behavior
-from archlog.extract.python.fold import Element, ValueFolder
+from archlog.extract.python.fold import Element, ValueFolder, parameters
 from archlog.extract.python.imports import Module, imported_calls, package_modules
 from archlog.extract.python.index import Function, arg
 from archlog.extract.python.parameters import ParamReader, declared_pair
@@ -204,6 +204,8 @@ class NodeReader(ValueFolder):
         self.notes: list[tuple[int, str, str, str]] = []  # diagnostics: line, code, message, severity
         self.seen: set[Port] = set()
         self.params = ParamReader(tree, self.qualified, self.value)
+        self.branch_of: dict[int, tuple[ast.AST, int]] | None = None  # see branches_around()
+        self.parent_of: dict[int, ast.AST] = {}
 
     def run(self, only: set[str] | None = None) -> None:
         """Read the ROS calls of every scope (or only of the module's classes and functions named),
@@ -235,21 +237,13 @@ class NodeReader(ValueFolder):
     def _visit(self, node: ast.AST) -> None:
         """Visit a node in its function scope (methods in their class)."""
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            outer = self.scope
-            cls = outer.cls if outer else self.class_of.get(id(node))
-            self.scope = self.functions.get((cls, node.name)) or Function(node, cls)
-            for child in node.body:
-                self._visit(child)
-            self.scope = outer
+            cls = self.scope.cls if self.scope else self.class_of.get(id(node))
+            self._walk_function(self.functions.get((cls, node.name)) or Function(node, cls))
             return
         if isinstance(node, ast.ClassDef):
             for child in node.body:
                 if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                    outer = self.scope
-                    self.scope = self.functions.get((node.name, child.name)) or Function(child, node.name)
-                    for stmt in child.body:
-                        self._visit(stmt)
-                    self.scope = outer
+                    self._walk_function(self.functions.get((node.name, child.name)) or Function(child, node.name))
                 else:
                     self._visit(child)
             return
@@ -267,6 +261,69 @@ class NodeReader(ValueFolder):
             self._call(node)
         for sub in ast.iter_child_nodes(node):
             self._visit(sub)
+
+    def _walk_function(self, function: Function) -> None:
+        """Visit a function's body in its scope: once per call site of the file when they pass
+        different values (each call runs its own ports: a helper called with one name per call), its
+        parameters bound to that call's arguments; once, unbound, otherwise."""
+        outer, self.scope = self.scope, function
+        sites = self.per_call_site(function)
+        for site in sites or [{}]:
+            saved = dict(self.bound)
+            self.bound.update({self.key_of(name, function): item for name, item in site.items()})
+            for stmt in function.node.body:
+                self._visit(stmt)
+            self.bound = saved
+        self.scope = outer
+
+    def per_call_site(self, function: Function) -> list[dict[str, Element]]:
+        """The arguments of each call site of a function, by parameter, when call sites pass different
+        literals for a parameter (`self.listen("gripper")`, `self.listen("wrist")`), no two of them in
+        different branches of one `if` (only one of those runs), and the steps budget pays for the
+        walks; else no call site."""
+        names = [name for name in parameters(function) if name not in function.assigns and
+                 not (function.cls and name in ("self", "cls"))]
+        passed = {name: self.arguments(function, name) for name in names}
+        sites = self.call_sites(function.cls, function.node.name)
+        if len(sites) < 2 or not any(_literals_differ([e for e, _c in args]) for args in passed.values()
+                                     if len(args) == len(sites)):
+            return []
+        if self.exclusive(sites):
+            return []
+        try:
+            budget.charge("steps", len(sites) * sum(1 for stmt in function.node.body for _ in ast.walk(stmt)))
+        except budget.BudgetExceeded:
+            return []
+        return [{name: Element(args[index][0], args[index][1]) if args[index][0] is not None else
+                 Element(None, None, Unknown(f"{name} (not passed)", self.file, function.node.lineno))
+                 for name, args in passed.items() if len(args) == len(sites)} for index in range(len(sites))]
+
+    def exclusive(self, nodes: list[ast.Call]) -> bool:
+        """Whether two of the nodes are in different branches of one `if` (or try/except)."""
+        branches: dict[int, set[int]] = {}
+        for node in nodes:
+            for statement, branch in self.branches_around(node):
+                branches.setdefault(statement, set()).add(branch)
+        return any(len(taken) > 1 for taken in branches.values())
+
+    def branches_around(self, target: ast.AST) -> list[tuple[int, int]]:
+        """The (if or try statement, branch index) pairs a node is inside."""
+        if self.branch_of is None:  # each node's innermost enclosing branch, indexed at the first question
+            self.branch_of = {}
+            for node in ast.walk(self.tree):
+                for index, part in enumerate(_branches(node)):
+                    for stmt in part:
+                        self.branch_of[id(stmt)] = (node, index)
+                for child in ast.iter_child_nodes(node):
+                    self.parent_of.setdefault(id(child), node)
+        found: list[tuple[int, int]] = []
+        at: ast.AST | None = target
+        while at is not None:
+            if id(at) in self.branch_of:
+                statement, index = self.branch_of[id(at)]
+                found.append((id(statement), index))
+            at = self.parent_of.get(id(at))
+        return found
 
     def _loop(self, walks: list[tuple[ast.expr, ast.expr]], body: list[ast.expr] | list[ast.stmt]) -> None:
         """Visit `body` once per element of the first (target, sequence) walk, its target bound to the
@@ -496,6 +553,24 @@ class NodeReader(ValueFolder):
             self.seen.add(port)
             self.summary.ports.append(port)
             self.nodes.owners.setdefault(port, self.owner())
+
+
+def _literals_differ(passed: list[ast.expr | None]) -> bool:
+    """Call sites that all pass a literal for a parameter, not all the same one (told apart without
+    folding: folding each call site's argument through its callers' call sites grows exponentially)."""
+    return all(isinstance(e, ast.Constant) for e in passed) and \
+        len({e.value for e in passed if isinstance(e, ast.Constant)}) > 1
+
+
+def _branches(node: ast.AST) -> list[list[ast.AST]]:
+    """The branches of an if (statement or expression) or a try (its body and each handler), of which one runs."""
+    if isinstance(node, ast.IfExp):
+        return [[node.body], [node.orelse]]
+    if isinstance(node, ast.If):
+        return [list[ast.AST](node.body), list[ast.AST](node.orelse)]
+    if isinstance(node, ast.Try):
+        return [list[ast.AST](node.body), *[list[ast.AST](h.body) for h in node.handlers]]
+    return []
 
 
 def _listed(value: Value) -> list[ParamList]:

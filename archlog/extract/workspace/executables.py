@@ -73,6 +73,8 @@ class ExecutableFinder:
 linked ones count only where the executable's own code reaches them (extract/cpp/reach.py)."""
         words = _Words([package.path / "include", *package.include_dirs])
         for exe in package.executables.values():
+            exe.parameter_files = [package.parameter_libraries[library] for library in _libraries(package, exe.target)
+                                   if library in package.parameter_libraries]
             if exe.lang != "cpp" or exe.cls is not None:
                 continue
             own = "\n".join(_text(s) for s in exe.sources)
@@ -141,6 +143,9 @@ linked ones count only where the executable's own code reaches them (extract/cpp
                 exe = package.executables.get(output_names.get(c.args[0], c.args[0]))
                 if exe is not None and exe.cls is None:
                     exe.sources += extra
+            elif c.name == "generate_parameter_library" and len(c.args) >= 2:
+                package.parameter_libraries[c.args[0]] = _under(folder, c.args[1])
+                package.libraries.setdefault(c.args[0], [])
             elif c.name == "target_link_libraries" and c.args:
                 package.links.setdefault(c.args[0], []).extend(a for a in c.args[1:] if a not in _LINK_WORDS)
             elif c.name in ("rclcpp_components_register_node", "rclcpp_components_register_nodes") and c.args:
@@ -270,14 +275,21 @@ linked ones count only where the executable's own code reaches them (extract/cpp
 
 def _linked(package: Package, target: str) -> list[Path]:
     """The sources of the package's libraries a target links, transitively."""
-    pending, seen, linked = list(package.links.get(target, [])), set(), list[Path]()
+    linked: list[Path] = []
+    for library in _libraries(package, target):
+        linked += [s for s in package.libraries[library] if s not in linked]
+    return linked
+
+
+def _libraries(package: Package, target: str) -> list[str]:
+    """The package's libraries a target links, transitively, in order."""
+    pending, seen = list(package.links.get(target, [])), list[str]()
     while pending:
         library = pending.pop(0)
         if library in package.libraries and library not in seen and library != target:
-            seen.add(library)
-            linked += [s for s in package.libraries[library] if s not in linked]
+            seen.append(library)
             pending += package.links.get(library, [])
-    return linked
+    return seen
 
 
 def _text(path: Path) -> str:

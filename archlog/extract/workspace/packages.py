@@ -27,6 +27,8 @@ class Executable:
     target: str = ""  # the CMake target it is built from
     plugin: str = ""  # a nodelet's name as its plugin description declares it (pkg/Type)
     linked: list[Path] = field(default_factory=list)  # those of `sources` from libraries it links
+    # the generate_parameter_library definitions (YAML) of the libraries it links
+    parameter_files: list[Path] = field(default_factory=list)
     entry: str = ""  # a console_scripts entry point's `module:function`, what runs it
 
     @property
@@ -48,6 +50,7 @@ class Package:
     libraries: dict[str, list[Path]] = field(default_factory=dict)
     ament: bool = False  # a ROS 2 package (built with ament_cmake or ament_python)
     links: dict[str, list[str]] = field(default_factory=dict)  # CMake target -> libraries it links
+    parameter_libraries: dict[str, Path] = field(default_factory=dict)  # generate_parameter_library target -> YAML
     version: str = ""  # package.xml's <version>
     depends: frozenset[str] = frozenset()  # the packages its package.xml depends on (build, exec, run)
 

@@ -100,9 +100,11 @@ class Parameters:
             return ParamSpec(kind[len("PARAMETER_"):].lower() if kind != "PARAMETER_NOT_SET" else "", required=True,
                              declared=True)
         returned = cpp_param_type(call.type.get_canonical().spelling)
+        described = next((a for a in args[1:] if "ParameterDescriptor" in a.type.spelling), None)
+        read_only, bounds = descriptor(described) if described is not None else (False, ())
         if len(args) < 2 or "ParameterDescriptor" in second:
-            return ParamSpec(returned, required=True, declared=True)
-        return ParamSpec(returned or self._type_of(args[1]), declared=True)
+            return ParamSpec(returned, required=True, read_only=read_only, bounds=bounds, declared=True)
+        return ParamSpec(returned or self._type_of(args[1]), read_only=read_only, bounds=bounds, declared=True)
 
     def _type_of(self, value: ci.Cursor) -> str:
         """The parameter type of a default: its own type, or the one a ParameterValue is built from."""
@@ -164,3 +166,53 @@ class Parameters:
         if owner in NODE_CLASSES and name in ("get_name", "get_fully_qualified_name"):
             return "~"
         return None
+
+
+_RANGES = ("floating_point_range", "integer_range")
+_ENDS = {"from_value": ">=", "to_value": "<=", "set__from_value": ">=", "set__to_value": "<="}
+
+
+def descriptor(arg: ci.Cursor) -> tuple[bool, tuple[tuple[str, str], ...]]:
+    """read_only and the range bounds of a ParameterDescriptor variable passed to
+    declare_parameter, from the statements of its function that set them: `d.read_only = true;`,
+    `d.floating_point_range[0].from_value = 0.0;`, and a FloatingPointRange/IntegerRange variable
+    `r` (`r.from_value = 0.0;`, `r.set__from_value(0.0).set__to_value(1.0);`) that
+    `d.floating_point_range.push_back(r)` or `d.integer_range = {r}` adds. Anything else (a
+    descriptor built elsewhere, a bound that is not a number literal) adds nothing."""
+    ref = next((c.referenced for c in arg.walk_preorder() if c.kind == K.DECL_REF_EXPR), None)
+    if ref is None or ref.kind != K.VAR_DECL or ref.semantic_parent is None:
+        return False, ()
+    name, statements = ref.spelling, _statements(ref.semantic_parent)
+    read_only = any(s[:5] == [name, ".", "read_only", "=", "true"] for s in statements)
+    added = {word for s in statements if s[:2] == [name, "."] and len(s) > 2 and s[2] in _RANGES
+             for word in s[3:] if word.isidentifier() and word not in ("push_back", "emplace_back", "resize")}
+    bounds = [bound for s in statements if (s[:2] == [name, "."] and len(s) > 2 and s[2] in _RANGES)
+              or (s and s[0] in added) for bound in _bounds(s)]
+    return read_only, tuple(dict.fromkeys(bounds))
+
+
+def _statements(function: ci.Cursor) -> list[list[str]]:
+    """The token spellings of a function's statements (split at `;`)."""
+    statements: list[list[str]] = [[]]
+    for token in function.get_tokens():
+        if token.spelling == ";":
+            statements.append([])
+        else:
+            statements[-1].append(token.spelling)
+    return statements
+
+
+def _bounds(statement: list[str]) -> list[tuple[str, str]]:
+    """`from_value = N`, `to_value = N`, `set__from_value(N)`, `set__to_value(N)` in a statement."""
+    found = []
+    for i, word in enumerate(statement[:-2]):
+        if word in _ENDS and statement[i + 1] in ("=", "("):
+            sign = "-" if statement[i + 2] == "-" else ""
+            number = statement[i + 3] if sign and i + 3 < len(statement) else statement[i + 2]
+            literal = number.rstrip("fFlLuU")
+            try:
+                float(literal)
+            except ValueError:
+                continue
+            found.append((_ENDS[word], sign + literal))
+    return found

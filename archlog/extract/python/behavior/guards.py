@@ -162,6 +162,34 @@ class Guards(Resolver):
         var = self.state_var(test, frame)
         return [self.guard(var, self.truthy(var, truth), test)] if var else []
 
+    def exact(self, test: ast.expr, truth: bool, frame: Frame, depth: int = 0) -> bool:
+        """Whether the guards `condition` gives for `test` are all it takes: they hold exactly when
+        `test` evaluates to `truth` (a comparison of a message's field, `a or b`, an unknown call: no)."""
+        if running(test) is truth or (truth and _main_guard(test)):
+            return True
+        if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not):
+            return self.exact(test.operand, not truth, frame, depth)
+        if isinstance(test, ast.BoolOp):
+            rest = [v for v in test.values if running(v) is not truth]
+            if isinstance(test.op, ast.And) == truth:
+                return all(self.exact(v, truth, frame, depth) for v in rest)
+            return len(rest) == 1 and self.exact(rest[0], truth, frame, depth)
+        if isinstance(test, ast.Compare) and len(test.ops) == 1:
+            length = test.left if isinstance(test.left, ast.Call) else test.comparators[0]
+            if isinstance(length, ast.Call) and isinstance(length.func, ast.Name) and length.func.id == "len":
+                return _emptiness(test) is not None and bool(self.condition(test, truth, frame, depth))
+            return bool(self.condition(test, truth, frame, depth))
+        if isinstance(test, ast.Call):
+            func = test.func
+            if isinstance(func, ast.Name) and func.id == "bool" and len(test.args) == 1:
+                return self.exact(test.args[0], truth, frame, depth)
+            targets = self.callables(func, frame) if depth < 3 else []
+            if len(targets) == 1 and not isinstance(targets[0].func, ast.Lambda):
+                body = [s for s in targets[0].func.body if not is_docstring(s)]
+                if len(body) == 1 and isinstance(body[0], ast.Return) and body[0].value is not None:
+                    return self.exact(body[0].value, truth, self.bind(targets[0], test, frame), depth + 1)
+        return bool(self.condition(test, truth, frame, depth))
+
     def guard(self, var: str, value: str, at: ast.AST) -> Guard:
         """A guard on `var` at the line of `at`."""
         return Guard(var, value, self.file, getattr(at, "lineno", 0))
@@ -207,3 +235,20 @@ class Guards(Resolver):
             if len(body) == 1 and isinstance(body[0], ast.Return) and body[0].value is not None:
                 return self.condition(body[0].value, truth, self.bind(targets[0], test, frame), depth + 1)
         return []
+
+
+def _emptiness(test: ast.Compare) -> bool | None:
+    """For `len(x) OP n` (either side): True when it tests exactly that x is non-empty, False
+    exactly empty, None when it tests a length in between (len(x) > 2)."""
+    op, other = test.ops[0], test.comparators[0] if isinstance(test.left, ast.Call) else test.left
+    if not isinstance(other, ast.Constant) or type(other.value) is not int or type(op) not in _COMPARE:
+        return None
+    holds = _COMPARE[type(op)] if isinstance(test.left, ast.Call) else _COMPARE[type(_FLIPPED[type(op)]())]
+    positive = {holds(n, other.value) for n in range(1, max(other.value, 0) + 3)}
+    return None if len(positive) != 1 or positive == {holds(0, other.value)} else positive.pop()
+
+
+def _main_guard(test: ast.expr) -> bool:
+    """`__name__ == "__main__"`: true where a node runs as a script."""
+    return isinstance(test, ast.Compare) and len(test.ops) == 1 and isinstance(test.ops[0], ast.Eq) and \
+        {ast.unparse(test.left), ast.unparse(test.comparators[0])} == {"__name__", "'__main__'"}

@@ -54,6 +54,7 @@ class Context:
     guards: tuple[Guard, ...] = ()
     loop: tuple[Value] | None = None
     stack: tuple[int, ...] = ()
+    opaque: frozenset[int] = frozenset()  # the statements whose unmodelled outcome the path depends on
 
     def guarded(self, guards: list[Guard]) -> Context:
         """The path with further guards (those not on it yet)."""
@@ -61,15 +62,22 @@ class Context:
         new = {(g.var, g.value): g for g in guards if (g.var, g.value) not in known}
         return replace(self, guards=self.guards + tuple(new.values())) if new else self
 
+    def depending(self, statement: ast.AST, exact: bool = False) -> Context:
+        """The path past a branch of `statement` whose outcome the guards do not (or, `exact`, do) model."""
+        return self if exact else replace(self, opaque=self.opaque | {id(statement)})
+
     def keeping(self, others: list[Context]) -> Context:
         """After branches that join again: the guards every branch has."""
         common = set.intersection(*({(g.var, g.value) for g in c.guards} for c in others))
-        return replace(self, guards=tuple(g for g in others[0].guards if (g.var, g.value) in common))
+        return replace(self, guards=tuple(g for g in others[0].guards if (g.var, g.value) in common),
+                       opaque=frozenset().union(*(c.opaque for c in others)))
 
 
-def join(before: Context, ends: list[Context]) -> Context | None:
-    """The path state where branches meet (None when none of them reaches it)."""
+def join(before: Context, ends: list[Context], statement: ast.AST | None = None, alternatives: int = 0) -> Context | None:
+    """The path state where branches meet (None when none of them reaches it). When all
+    `alternatives` branches of `statement` reach it, it no longer depends on which one ran."""
     if not ends:
         return None
-    return ends[0] if len(ends) == 1 else before.keeping(ends)
+    after = ends[0] if len(ends) == 1 else before.keeping(ends)
+    return replace(after, opaque=after.opaque - {id(statement)}) if len(ends) == alternatives else after
 

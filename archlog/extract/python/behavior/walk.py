@@ -63,21 +63,21 @@ class Walk(Guards):
         """One statement; returns the path state after it (None when it always leaves)."""
         if isinstance(stmt, ast.If):
             self.expression(stmt.test, frame, ctx)
-            yes = self.walk(stmt.body, frame, ctx.guarded(self.condition(stmt.test, True, frame)))
-            no = self.walk(stmt.orelse, frame, ctx.guarded(self.condition(stmt.test, False, frame)))
-            return join(ctx, [c for c in (yes, no) if c is not None])
+            yes, no = (self.walk(body, frame, self.branch(stmt, truth, frame, ctx))
+                       for body, truth in ((stmt.body, True), (stmt.orelse, False)))
+            return join(ctx, [c for c in (yes, no) if c is not None], stmt, 2)
         if isinstance(stmt, ast.While):
             self.expression(stmt.test, frame, ctx)
-            inner = ctx.guarded(self.condition(stmt.test, True, frame))
+            inner = self.branch(stmt, True, frame, ctx)
             if periodic(stmt.test) or (self.state_only(stmt.test, frame) and any(
                     self.sleep(c, frame) is not None for c in in_scope(stmt.body) if isinstance(c, ast.Call))):
                 inner = replace(inner, loop=(self.period(stmt, frame),))
             self.walk(stmt.body, frame, inner)
             self.walk(stmt.orelse, frame, ctx)
-            return ctx if breaks(stmt.body) else ctx.guarded(self.condition(stmt.test, False, frame))
+            return ctx if breaks(stmt.body) else self.branch(stmt, False, frame, ctx)
         if isinstance(stmt, (ast.For, ast.AsyncFor)):
             self.expression(stmt.iter, frame, ctx)
-            self.walk(stmt.body, frame, ctx)
+            self.walk(stmt.body, frame, ctx.depending(stmt))  # runs only for a non-empty iterable
             self.walk(stmt.orelse, frame, ctx)
             return ctx
         if isinstance(stmt, (ast.With, ast.AsyncWith)):
@@ -85,15 +85,16 @@ class Walk(Guards):
                 self.expression(item.context_expr, frame, ctx)
             return self.walk(stmt.body, frame, ctx)
         if isinstance(stmt, (ast.Try, ast.TryStar)):
-            body = self.walk(stmt.body, frame, ctx)
+            raised = ctx.depending(stmt, exact=not stmt.handlers)  # whether the body raised
+            body = self.walk(stmt.body, frame, raised)
             ends = [self.walk(stmt.orelse, frame, body) if body is not None else None]
-            ends += [self.walk(h.body, frame, ctx) for h in stmt.handlers]
+            ends += [self.walk(h.body, frame, raised) for h in stmt.handlers]
             self.walk(stmt.finalbody, frame, ctx)
-            return join(ctx, [c for c in ends if c is not None])
+            return join(ctx, [c for c in ends if c is not None], stmt, len(ends))
         if isinstance(stmt, ast.Match):
             self.expression(stmt.subject, frame, ctx)
-            ends = [self.walk(case.body, frame, ctx) for case in stmt.cases]
-            return join(ctx, [c for c in ends if c is not None] + [ctx])
+            ends = [self.walk(case.body, frame, ctx.depending(stmt)) for case in stmt.cases]
+            return join(ctx, [c for c in ends if c is not None] + [ctx.depending(stmt)], stmt, len(ends) + 1)
         if isinstance(stmt, (ast.Return, ast.Raise)):
             for part in (stmt.value,) if isinstance(stmt, ast.Return) else (stmt.exc, stmt.cause):
                 if part is not None:
@@ -120,6 +121,10 @@ class Walk(Guards):
                 self.folder.qualified(stmt.value.func) in _EXITS:
             return None
         return self.received(stmt.value, ctx) if isinstance(stmt, ast.Expr) else ctx
+
+    def branch(self, stmt: ast.If | ast.While, truth: bool, frame: Frame, ctx: Context) -> Context:
+        """The path where `stmt`'s test is `truth`: its guards, and whether they are all it takes."""
+        return ctx.guarded(self.condition(stmt.test, truth, frame)).depending(stmt, self.exact(stmt.test, truth, frame))
 
     def received(self, expr: ast.expr, ctx: Context) -> Context:
         """After rospy.wait_for_message(topic) a message has arrived: a state of its own
@@ -156,7 +161,8 @@ class Walk(Guards):
     def write(self, var: str, value: str, ctx: Context, line: int) -> None:
         """Record a state write (its source when a callback or timer runs it)."""
         source = ctx.source if ctx.trigger in ("timer", "callback") else None
-        self.writes[StateWrite(var, value, source, self.file, line)] = None
+        decided = not ctx.opaque and not ctx.guards and (source is not None or ctx.loop is None)  # not a loop's reset
+        self.writes[StateWrite(var, value, source, self.file, line, decided)] = None
 
     def expression(self, expr: ast.expr, frame: Frame, ctx: Context) -> None:
         """The calls an expression makes (not those inside its lambdas)."""
@@ -200,7 +206,8 @@ class Walk(Guards):
         if trigger not in ("timer", "callback") and ctx.loop is not None:
             trigger, source, period = "loop", None, ctx.loop[0]
         for site in sites:
-            self.publishes[Publish(site, self.file, call.lineno, trigger, source, ctx.guards, period)] = None
+            self.publishes[Publish(site, self.file, call.lineno, trigger, source, ctx.guards, period,
+                                   not ctx.opaque)] = None
 
 
     # -- loops ----------------------------------------------------------------------------
