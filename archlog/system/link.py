@@ -206,6 +206,8 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     if summary is not None and any(p.info_of is not None for p in summary.ports):
         summary = replace(summary, ports=[placed_camera_info(p, node) for p in summary.ports])
     slots = summary.plugins if summary is not None and summary.plugins else model.plugins if model else ()
+    if slots and summary is not None and summary.plugin_loads:  # the slots say what its plugins create
+        summary = replace(summary, plugin_loads=[])
     extra = configured_ports(node, config, workspace, diagnostics) + loader_ports(node) + \
         plugin_ports(node, slots, models.classes, config, diagnostics)
     if extra:

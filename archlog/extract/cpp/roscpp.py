@@ -46,6 +46,7 @@ from archlog.extract.cpp.handles import (
 )
 from archlog.extract.cpp.loader import LOADER, loaded_nodelets
 from archlog.extract.cpp.param_guards import Branches, initial_value, required
+from archlog.extract.cpp.plugin_loads import creates_plugin, plugin_load_lines
 from archlog.extract.cpp.rclcpp.durations import Durations
 from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
 from archlog.extract.cpp.rclcpp.walker import RclcppWalker
@@ -117,8 +118,7 @@ def _dynamic_params(owner: str, name: str, ref: ci.Cursor) -> str | None:
     its config's, a pluginlib class its own, getParamNames lists them all), or None."""
     if ref.kind == K.CONSTRUCTOR and owner == "dynamic_reconfigure::Server":
         return "a dynamic_reconfigure server reads the parameters of its config"
-    if owner.startswith("pluginlib::ClassLoader") and name in ("createInstance", "createUniqueInstance",
-                                                                "createUnmanagedInstance"):
+    if creates_plugin(owner, name):
         return "a pluginlib class it loads reads parameters of its own"
     if owner in (NODE_HANDLE, "ros::param") and name in ("getParamNames", "searchParam", "search"):
         return f"{name}() reads parameters by names the code does not spell"
@@ -418,6 +418,8 @@ class _Walker:
         elif (why := _dynamic_params(owner, name, ref)) is not None:
             self.result.params_dynamic = self.result.params_dynamic or \
                 f"{self.shown(call)}:{call.location.line}: {why}"
+            if creates_plugin(owner, name):
+                self.result.plugin_loads.append((self.shown(call), call.location.line))
         elif owner == NODE_HANDLE and name in TIMERS and args:
             self.add("timer", call, self.duration(args[0]), "", self.handles.handle_of(next(call.get_children())))
         elif owner == "ros::service" and name in ("call", "waitForService", "exists") and args:
@@ -569,9 +571,13 @@ class _Walker:
 
     # -- when the AST is incomplete -------------------------------------------------------------
     def token_fallback(self, tu: ci.TranslationUnit) -> None:
-        """Read NodeHandle calls from the text of lines where the AST produced no port."""
+        """Read NodeHandle calls from the text of lines where the AST produced no port, and the
+        pluginlib loads whose loader's type the AST lost."""
         covered = {p.line for p in self.result.ports if p.file == self.file}
         text = blank_comments(sandbox.read_text(self.source, "source"))
+        loaded = {line for file, line in self.result.plugin_loads if file == self.file}
+        self.result.plugin_loads += [(self.file, line) for line in plugin_load_lines(text, self.spans)
+                                     if line not in loaded]
         if self.ros2:
             ros2_fallback(self, text, covered, tu)
             return
