@@ -48,7 +48,8 @@ from archlog.extract.cpp.loader import LOADER, loaded_nodelets
 from archlog.extract.cpp.param_guards import Branches, initial_value, required
 from archlog.extract.cpp.plugin_loads import creates_plugin, plugin_load_lines
 from archlog.extract.cpp.rclcpp.durations import Durations
-from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
+from archlog.extract.cpp.rclcpp.fallback import ros2_fallback, workspace_header_texts
+from archlog.extract.cpp.rclcpp.type_adapters import adapted, adapters, not_interfaces
 from archlog.extract.cpp.rclcpp.walker import RclcppWalker
 from archlog.extract.cpp.rclcpp.wrappers import definitions, summaries
 from archlog.extract.cpp.reach import Functions, build
@@ -108,6 +109,9 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     walker.members(walker.scope.members)
     if incomplete_ast:
         walker.token_fallback(tu)
+    if ros2 and not_interfaces(walker.result.ports):
+        texts = [sandbox.read_text(source, "source"), *workspace_header_texts(tu)]
+        walker.result.ports = adapted(walker.result.ports, adapters(texts))
     walker.result.behavior = read_behavior(walker, walker.kept, walker.port_calls, walker.named_callbacks,
                                            sandbox.read_bytes(source, "source") if incomplete_ast else None)
     return walker.result
