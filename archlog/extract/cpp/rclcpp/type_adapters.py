@@ -1,6 +1,6 @@
 """Type adaptation (rclcpp::TypeAdapter, REP 2007): a publisher or subscription of a custom C++
 type that a TypeAdapter specialisation maps onto a ROS message carries that message on the wire
-(`RCLCPP_USING_CUSTOM_TYPE_AS_ROS_MESSAGE_TYPE(image_tools::ROSCvMatContainer,
+(`RCLCPP_USING_CUSTOM_TYPE_AS_ROS_MESSAGE_TYPE(vision::CvImage,
 sensor_msgs::msg::Image)`): the port's type is the message, as the graph shows it."""
 
 from __future__ import annotations
