@@ -319,10 +319,11 @@ def test_model_schema_names_every_qos_preset() -> None:
     assert set(schema["$defs"]["preset"]["enum"]) == set(PRESETS) - {"unknown"}
 
 
-def _map_server_source(tmp_path: Path, body: str) -> Path:
+def _map_server_source(tmp_path: Path, body: str, version: str = "1.17.0") -> Path:
+    """map_server's source at `version` (1.17.0: of the release lines archlog's model describes)."""
     pkg = tmp_path / "src" / "map_server"
     (pkg / "scripts").mkdir(parents=True)
-    (pkg / "package.xml").write_text(PACKAGE_XML.format("map_server"))
+    (pkg / "package.xml").write_text(PACKAGE_XML.format("map_server").replace("0.1.0", version))
     (pkg / "scripts" / "map_server").write_text("#!/usr/bin/env python3\nimport rospy\nfrom nav_msgs.msg import "
                                                 "OccupancyGrid\nfrom nav_msgs.srv import GetMap\n"
                                                 "rospy.init_node('map_server')\n" + body)
@@ -336,11 +337,26 @@ def test_a_source_resolving_fewer_ports_than_the_shipped_model_does_not_win(tmp_
     launch = _map_server_source(tmp_path, "rospy.Publisher('grid', OccupancyGrid)\n"
                                           "rospy.Service(rospy.get_name() + compute(), GetMap, print)\n")
     analysis = analyse([tmp_path], [str(launch)], {}, [])
-    # (not change_map: the model has it since navigation 1.17.2, and this package is 0.1.0)
+    # (not change_map: the model has it since navigation 1.17.2, and this package is 1.17.0)
     assert {t for _p, _n, t, _ty in analysis.store.rows("service_server")} == {"/static_map"}
     assert {t for _p, _n, t, _ty in analysis.store.rows("publisher")} == {"/map", "/map_metadata"}
     drift = [d for d in analysis.diagnostics.items if d.code == "model-drift"]
     assert len(drift) == 1 and "publisher grid" in drift[0].message and "the model is used" in drift[0].message
+
+
+def test_a_source_of_another_release_than_the_model_describes_wins(tmp_path: Path) -> None:
+    """The same incomplete source at a release outside the model's release lines (its `distros`): the model
+    describes another release of the node, so the source is used, and the note says why. The model only
+    names what the source has without a name: a GetMap service, not the publishers the source names itself."""
+    launch = _map_server_source(tmp_path, "rospy.Publisher('grid', OccupancyGrid)\n"
+                                          "rospy.Service(rospy.get_name() + compute(), GetMap, print)\n", "2.3.0")
+    analysis = analyse([tmp_path], [str(launch)], {}, [])
+    assert {t for _p, _n, t, _ty in analysis.store.rows("publisher")} == {"/grid"}
+    services = {t if isinstance(t, str) else t.expr for _p, _n, t, _ty in analysis.store.rows("service_server")}
+    assert services == {"rospy.get_name() + compute()", "/static_map"}
+    drift = [d for d in analysis.diagnostics.items if d.code == "model-drift"]
+    assert len(drift) == 1 and "the source is used (the model describes release line 1.14, 1.15, 1.16, 1.17, " \
+        "the source is 2.3.0)" in drift[0].message
 
 
 def test_a_source_resolving_as_many_ports_wins_and_its_drift_is_noted(tmp_path: Path) -> None:

@@ -7,8 +7,10 @@ from pathlib import Path
 from catkin_pkg.package import parse_package
 
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.summary import NodeSummary
 from archlog.extract.workspace.index import Workspace
 from archlog.extract.workspace.packages import share_dirs
+from archlog.system.rosrun import rosrun_config
 
 MANIFEST = ("<package format='2'><name>{}</name><version>0.1.0</version><description>d</description>"
             "<maintainer email='dev@example.com'>m</maintainer><license>MIT</license></package>")
@@ -120,6 +122,10 @@ def test_ros2_components_ament_executables_and_cmake_functions(tmp_path: Path) -
         "fleet::Charger": ("fleet::Charger", ["odometer.cpp", "common.cpp"], 13),
         "fleet::Probe": ("fleet::Probe", ["probe.cpp"], 3),
     }
+    # rosrun runs the programs: the component's EXECUTABLE is one, the components themselves are not
+    summaries = {("fleet", name): NodeSummary("fleet", name, "cpp") for name in executables}
+    config = rosrun_config(summaries, Workspace([tmp_path], DiagnosticSink()), DiagnosticSink())
+    assert sorted(node.type for node in config.nodes) == ["dispatcher", "monitor", "odometer"]
 
 
 def test_ament_executables_get_the_sources_of_the_libraries_they_link(tmp_path: Path) -> None:

@@ -180,6 +180,8 @@ class NodeSummary:
     writes: list[StateWrite] = field(default_factory=list)
     plugins: tuple[PluginSlot, ...] = ()
     loads: list[LoadedNodelet] = field(default_factory=list)  # nodelets run in this process
+    # (file, line) of each call creating pluginlib classes whose code is not read (extract/cpp/plugin_loads.py)
+    plugin_loads: list[tuple[str, int]] = field(default_factory=list)
     # tf (node models): what it broadcasts, with `tf_declared` when that is all it broadcasts (besides the
     # transforms of the robot description parameter `tf_description`, or of its command line with
     # `tf_args`, as robot_state_publisher and static_transform_publisher), and what it waits for

@@ -82,6 +82,10 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
         store.add("node_source", node.name, summary.origin)
         if summary.incomplete:
             store.add("node_incomplete", node.name, summary.incomplete)
+        for index, (file, line) in enumerate(summary.plugin_loads, 1):
+            hole = f"{node.elem.id}.plugins{index}"
+            store.add("plugin_hole", hole, node.name, f"the pluginlib classes {node.name} creates here (not read)")
+            store.locate(hole, file, line)
         _instance(store, node, summary, config, following)
     for index, (file, line, why) in enumerate(config.holes, 1):
         store.add("launch_hole", f"h{index}", why)

@@ -60,6 +60,10 @@ RELATIONS: tuple[Relation, ...] = (
     _rel("configuration", "launch_hole", "A part of the configuration archlog could not read (an include skipped, a "
          "launch action not interpreted or skipped): the nodes it starts are not known; the report is partial.",
          ("hole", "id", "its id; `location` gives the launch file and line"), ("reason", "str", "why")),
+    _rel("configuration", "plugin_hole", "Where a node instance creates pluginlib classes chosen at run time whose "
+         "code archlog does not read (no node model's `plugins:` slot describes them): the ports they create "
+         "are not known; the report is partial.",
+         ("hole", "id", "its id; `location` gives the file and line of the call"), _NODE, ("reason", "str", "why")),
     _rel("configuration", "outside_port", "A name a modelled executable the configuration does not run would provide "
          "(system/outside.py): a package the configuration runs depends on it, or, without a launch file, any.",
          ("kind", "str", "publisher, service_server or action_server"), ("name", "name", "resolved under its default "
@@ -335,7 +339,7 @@ DERIVED: tuple[Relation, ...] = (
              "opaque when there are more than five (they are then counted, not named).", _PORT,
              ("count", "int", "the number of opaque nodes")),
     _derived(_PRELUDE, "unread_part", "For a port of a finding that names the uncertainty left, a part of the "
-             "configuration not read (launch_hole) that may start what it misses.", _PORT,
+             "configuration not read (launch_hole, plugin_hole) that may start what it misses.", _PORT,
              ("where", "str", "the part's file:line")),
     _derived(_PRELUDE, "uncertain_port", "The port (and its node) of a finding of AL103, AL104, AL201, AL203 or AL601, "
              "whose message names the opaque nodes it still depends on.", _PORT, _NODE),

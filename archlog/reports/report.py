@@ -63,9 +63,10 @@ def coverage(store) -> list[NodeCoverage]:
 
 
 def holes(store) -> list[tuple[str, str, int]]:
-    """The parts of the configuration not read (launch_hole), as (why, file, line)."""
+    """The parts of the configuration not read (launch_hole, plugin_hole), as (why, file, line)."""
     found = []
-    for hole, why in store.rows("launch_hole"):
+    rows = [*store.rows("launch_hole"), *((hole, why) for hole, _node, why in store.rows("plugin_hole"))]
+    for hole, why in rows:
         file, line, _column = store.location(str(hole)) or ("", 0, 0)
         found.append((str(why), file, line))
     return sorted(found, key=lambda h: (h[1], h[2], h[0]))

@@ -25,7 +25,7 @@ from archlog.system.param_files import file_ports, listed
 from archlog.system.plugin_slots import plugin_ports
 from archlog.system.rosrun import rosrun_config
 from archlog.system.transforms import configured_transforms, spawns
-from archlog.values import FullNodeName, ParamList, ParamRef
+from archlog.values import FullNodeName, ParamList, ParamRef, Unknown
 
 
 @dataclass
@@ -56,7 +56,8 @@ def link(workspace: Workspace, config: LaunchConfig | None, models: NodeModels, 
                if (model := models.shipped(kind, _kind_on_ros2(kind, on_ros2, workspace))) is not None}
     summaries = {**shipped, **extracted, **models.user}
     for kind in extracted.keys() & shipped.keys() - models.user.keys():
-        summaries[kind] = _source_or_model(extracted[kind], shipped[kind], diagnostics)
+        summaries[kind] = _source_or_model(extracted[kind], shipped[kind], diagnostics,
+                                           _other_release(workspace.version(kind[0]), models.lines.get(kind, ())))
     if config is None:
         config = rosrun_config({k: v for k, v in summaries.items() if k[0] in workspace.packages},
                                workspace, diagnostics)
@@ -105,16 +106,27 @@ def _kind_on_ros2(kind: tuple[str, str], on_ros2: bool | None, workspace: Worksp
 _COMPARED = ("publisher", "subscriber", "service_server", "service_client", "action_server", "action_client")
 
 
-def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: DiagnosticSink) -> NodeSummary:
+def _other_release(version: str | None, lines: tuple[str, ...]) -> str:
+    """Why a model describes another release than the source's package (its version is in none of the
+    release lines the model names), "" when it may be the same or it is not known."""
+    if version is None or not lines or ".".join(version.split(".")[:2]) in lines:
+        return ""
+    return f"the model describes release line {', '.join(lines)}, the source is {version}"
+
+
+def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: DiagnosticSink,
+                     other_release: str = "") -> NodeSummary:
     """A node both read from source and modelled by archlog: the source, unless it resolves fewer
-    ports than the model (code in a library not read, names not known, a file that did not compile):
-    then the model. Where the two disagree on a resolved name, a model-drift note. A source that
-    loads nodelets into its process is used: their ports are placed per instance (nodelets.py)."""
+    ports than the model (code in a library not read, names not known, a file that did not compile)
+    and the model describes the source's release (`other_release` says why not): then the model.
+    A source of another release keeps the model's names only for ports it has without a name.
+    Where the two disagree on a resolved name, a model-drift note. A source that loads nodelets into
+    its process is used: their ports are placed per instance (nodelets.py)."""
     if source.loads:
         return source
     ours = _resolved(source)
     theirs = _resolved(model) | {(k, _argv_label(p["name"])) for k, p, _file in model.argv_ports}
-    chosen = model if len(ours) < len(theirs) else source
+    chosen = model if len(ours) < len(theirs) and not other_release else source
     actions = {n for k, n in ours | theirs if k.startswith("action")}  # an action's topics are the action
     only_source, only_model = ([(k, n) for k, n in sorted(a - b) if not _action_topic(k, n, actions)]
                                for a, b in ((ours, theirs), (theirs, ours)))
@@ -126,8 +138,19 @@ def _source_or_model(source: NodeSummary, model: NodeSummary, diagnostics: Diagn
         diagnostics.add(where[0], where[1] or 1, "model-drift",
                         f"{source.package}/{source.executable}: the source ({len(ours)} resolved ports) has "
                         f"{shown(only_source)} that archlog's model ({len(theirs)}) lacks, the model "
-                        f"{shown(only_model)}; the {'model' if chosen is model else 'source'} is used", "note")
-    return chosen
+                        f"{shown(only_model)}; the {'model' if chosen is model else 'source'} is used"
+                        f"{f' ({other_release})' if other_release else ''}", "note")
+    return replace(source, ports=source.ports + _named_by_model(source, model)) if other_release else chosen
+
+
+def _named_by_model(source: NodeSummary, model: NodeSummary) -> list[Port]:
+    """The model's ports that name what the source leaves unnamed: of a kind and type the source
+    has a port of whose name it does not know (an action server a plugin creates under a name
+    from a parameter), and that the source does not have by name."""
+    unnamed = [p for p in source.ports if p.kind in _COMPARED and _port_key(p) is None]
+    named = _resolved(source)
+    return [p for p in model.ports if (key := _port_key(p)) is not None and key not in named and
+            any(u.kind == p.kind and (u.type == p.type or isinstance(u.type, Unknown)) for u in unnamed)]
 
 
 def _argv_label(raw: object) -> str:
@@ -183,6 +206,8 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     if summary is not None and any(p.info_of is not None for p in summary.ports):
         summary = replace(summary, ports=[placed_camera_info(p, node) for p in summary.ports])
     slots = summary.plugins if summary is not None and summary.plugins else model.plugins if model else ()
+    if slots and summary is not None and summary.plugin_loads:  # the slots say what its plugins create
+        summary = replace(summary, plugin_loads=[])
     configured, unread = configured_ports(node, config, workspace, diagnostics)
     extra = configured + loader_ports(node) + plugin_ports(node, slots, models.classes, config, diagnostics)
     if extra:

@@ -106,6 +106,7 @@ class NodeModels:
     user: Summaries = field(default_factory=dict)
     externals: list[tuple[NodeSummary, str, Element]] = field(default_factory=list)
     classes: dict[str, PluginClass] = field(default_factory=dict)
+    lines: dict[tuple[str, str], tuple[str, ...]] = field(default_factory=dict)  # shipped: the release lines described
 
     def shipped(self, kind: tuple[str, str], ros2: bool | None) -> NodeSummary | None:
         """The shipped model of an executable for a node on ROS 2 (True), on ROS 1 (False) or on
@@ -124,7 +125,8 @@ def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: Diagn
             raise ConfigError(f"model file not found: {path}")
         shown = workspace.display(path)
         loader = ShippedLoader if shipped else LineLoader
-        for summary, instance in load_models(path, shown, diagnostics, loader, models.classes, version):
+        lines = models.lines if shipped else None
+        for summary, instance in load_models(path, shown, diagnostics, loader, models.classes, version, lines):
             if instance:
                 line = summary.ports[0].line - 1 if summary.ports else 1
                 element = Element(f"m{index:03d}{len(models.externals):03d}", shown, max(line, 1))
@@ -138,10 +140,12 @@ def load_node_models(paths: list[Path], workspace: Workspace, diagnostics: Diagn
 
 def load_models(path: Path, shown: str, diagnostics: DiagnosticSink, loader: type = LineLoader,
                 classes: dict[str, PluginClass] | None = None,
-                version: Callable[[str], str | None] | None = None) -> list[tuple[NodeSummary, str | None]]:
+                version: Callable[[str], str | None] | None = None,
+                lines: dict[tuple[str, str], tuple[str, ...]] | None = None) -> list[tuple[NodeSummary, str | None]]:
     """(summary, external instance name or None) for every valid model in the file; its valid
-    pluginlib classes go into `classes` by lookup name. `version` gives a package's version, against
-    which ports with `since` are kept or left out (without it, every port is kept)."""
+    pluginlib classes go into `classes` by lookup name, the release lines a model's `distros` names into
+    `lines` by executable. `version` gives a package's version, against which ports with `since` are
+    kept or left out (without it, every port is kept)."""
     try:
         data = yaml.load(sandbox.read_text(path, "config"), Loader=loader)
     except yaml.YAMLError as exc:
@@ -185,6 +189,9 @@ def load_models(path: Path, shown: str, diagnostics: DiagnosticSink, loader: typ
                                            slot["__line__"], tuple(slot.get("after_tf", ())))
                                 for slot in item.get("plugins") or [])
         _transforms(summary, item, shown, diagnostics)
+        if lines is not None and item.get("distros"):
+            lines[(summary.package, summary.executable)] = tuple(sorted({v for k, v in item["distros"].items()
+                                                                        if k != "__line__"}))
         result.append((summary, instance))
     return result
 

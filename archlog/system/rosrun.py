@@ -17,8 +17,8 @@ def rosrun_config(summaries: dict[tuple[str, str], NodeSummary], workspace: Work
     config = LaunchConfig()
     for index, ((pkg, exe), summary) in enumerate(sorted(summaries.items()), 1):
         executable = workspace.executable(pkg, exe)
-        if executable is not None and executable.cls:
-            continue  # a nodelet runs inside a manager, not on its own
+        if executable is not None and executable.cls and not executable.standalone:
+            continue  # a nodelet or component runs inside a manager, unless built as a program of its own
         source = executable.sources[0] if executable and executable.sources else None
         file = summary.name_file or (workspace.display(source) if source else pkg)
         elem = Element(f"x{index:05d}", file, summary.name_line or 1)

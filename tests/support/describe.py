@@ -44,6 +44,7 @@ def describe(summary: NodeSummary, diagnostics: list[Diagnostic]) -> str:
         lines.append(f"{site}: {p.kind} {json.dumps(plain(p.name))} {json.dumps(plain(p.type))}{handle}{extra}")
     lines += [f"{n.line}: load {json.dumps(plain(n.plugin))} as {json.dumps(plain(n.name))}"
               + "".join(f" {json.dumps(plain(k))}:={json.dumps(plain(v))}" for k, v in n.remaps) for n in summary.loads]
+    lines += [f"{file}:{line}: creates pluginlib classes (not read)" for file, line in summary.plugin_loads]
     for other in summary.others:  # further nodes of the same process
         lines += ["also " + line for line in describe(other, []).splitlines()]
     lines += [f"diagnostic {d.line}: {d.severity} {d.code}" for d in diagnostics]

@@ -634,6 +634,7 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
     known = set(summary.ports)
     summary.ports += [p for p in ports if p not in known]  # a header's code is read with each file
     summary.loads += [n for n in result.loads if n not in summary.loads]
+    summary.plugin_loads += [at for at in result.plugin_loads if at not in summary.plugin_loads]
     if result.default_name is not None and summary.default_name is not None and \
             result.default_name != summary.default_name:
         summary.params_dynamic = summary.params_dynamic or f"{result.name_file}:{result.name_line}: the executable " \

@@ -31,6 +31,7 @@ class FileResult:
     missing: list[str] = field(default_factory=list)
     behavior: FileBehavior = field(default_factory=FileBehavior)
     loads: list[LoadedNodelet] = field(default_factory=list)
+    plugin_loads: list[tuple[str, int]] = field(default_factory=list)  # (file, line): pluginlib classes created
     classes: list[str] = field(default_factory=list)  # a nodelet's class and the bases this file knows of
     calls: Sites = field(default_factory=dict)  # the handle and name arguments of its calls (callers.py)
     graph: CallGraph | None = None  # what its functions call (reach.py), for an executable's file

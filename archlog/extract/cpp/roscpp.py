@@ -46,9 +46,12 @@ from archlog.extract.cpp.handles import (
 )
 from archlog.extract.cpp.loader import LOADER, loaded_nodelets
 from archlog.extract.cpp.param_guards import Branches, initial_value, required
+from archlog.extract.cpp.plugin_loads import creates_plugin, plugin_load_lines
 from archlog.extract.cpp.rclcpp.durations import Durations
-from archlog.extract.cpp.rclcpp.fallback import ros2_fallback
+from archlog.extract.cpp.rclcpp.fallback import ros2_fallback, workspace_header_texts
+from archlog.extract.cpp.rclcpp.type_adapters import adapted, adapters, not_interfaces
 from archlog.extract.cpp.rclcpp.walker import RclcppWalker
+from archlog.extract.cpp.rclcpp.wrappers import definitions, summaries
 from archlog.extract.cpp.reach import Functions, build
 from archlog.extract.cpp.result import FileResult
 from archlog.extract.cpp.roscpp_fallback import roscpp_fallback
@@ -106,6 +109,9 @@ def walk(tu: ci.TranslationUnit, source: Path, shown: str, incomplete_ast: bool,
     walker.members(walker.scope.members)
     if incomplete_ast:
         walker.token_fallback(tu)
+    if ros2 and not_interfaces(walker.result.ports):
+        texts = [sandbox.read_text(source, "source"), *workspace_header_texts(tu)]
+        walker.result.ports = adapted(walker.result.ports, adapters(texts))
     walker.result.behavior = read_behavior(walker, walker.kept, walker.port_calls, walker.named_callbacks,
                                            sandbox.read_bytes(source, "source") if incomplete_ast else None)
     return walker.result
@@ -116,8 +122,7 @@ def _dynamic_params(owner: str, name: str, ref: ci.Cursor) -> str | None:
     its config's, a pluginlib class its own, getParamNames lists them all), or None."""
     if ref.kind == K.CONSTRUCTOR and owner == "dynamic_reconfigure::Server":
         return "a dynamic_reconfigure server reads the parameters of its config"
-    if owner.startswith("pluginlib::ClassLoader") and name in ("createInstance", "createUniqueInstance",
-                                                                "createUnmanagedInstance"):
+    if creates_plugin(owner, name):
         return "a pluginlib class it loads reads parameters of its own"
     if owner in (NODE_HANDLE, "ros::param") and name in ("getParamNames", "searchParam", "search"):
         return f"{name}() reads parameters by names the code does not spell"
@@ -216,6 +221,8 @@ class _Walker:
         reads = [c for c in calls if c.spelling in PARAM_READS]  # first: a port's guard may test what they read
         for cursor in reads + [c for c in calls if c.spelling not in PARAM_READS]:
             self.call(cursor)
+        if self.rclcpp is not None:
+            self.rclcpp.wrapped(summaries(definitions(root, self.workspace_code), self.key, self.shown), calls)
         self.record_call_sites(calls)
 
     def workspace_code(self, decl: ci.Cursor) -> bool:
@@ -415,6 +422,8 @@ class _Walker:
         elif (why := _dynamic_params(owner, name, ref)) is not None:
             self.result.params_dynamic = self.result.params_dynamic or \
                 f"{self.shown(call)}:{call.location.line}: {why}"
+            if creates_plugin(owner, name):
+                self.result.plugin_loads.append((self.shown(call), call.location.line))
         elif owner == NODE_HANDLE and name in TIMERS and args:
             self.add("timer", call, self.duration(args[0]), "", self.handles.handle_of(next(call.get_children())))
         elif owner == "ros::service" and name in ("call", "waitForService", "exists") and args:
@@ -566,9 +575,13 @@ class _Walker:
 
     # -- when the AST is incomplete -------------------------------------------------------------
     def token_fallback(self, tu: ci.TranslationUnit) -> None:
-        """Read NodeHandle calls from the text of lines where the AST produced no port."""
+        """Read NodeHandle calls from the text of lines where the AST produced no port, and the
+        pluginlib loads whose loader's type the AST lost."""
         covered = {p.line for p in self.result.ports if p.file == self.file}
         text = blank_comments(sandbox.read_text(self.source, "source"))
+        loaded = {line for file, line in self.result.plugin_loads if file == self.file}
+        self.result.plugin_loads += [(self.file, line) for line in plugin_load_lines(text, self.spans)
+                                     if line not in loaded]
         if self.ros2:
             ros2_fallback(self, text, covered, tu)
             return

@@ -202,7 +202,7 @@ linked ones count only where the executable's own code reaches them (extract/cpp
             package.executables[cls] = Executable(package.name, cls, "cpp", list(sources), line, cls)
         if executable and classes:
             package.executables[executable] = Executable(package.name, executable, "cpp", list(sources), line,
-                                                         classes[0])
+                                                         classes[0], standalone=True)
 
     def _components(self, package: Package) -> None:
         """Components registered in the sources (RCLCPP_COMPONENTS_REGISTER_NODE) but not in

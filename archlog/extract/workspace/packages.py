@@ -30,6 +30,8 @@ class Executable:
     # the generate_parameter_library definitions (YAML) of the libraries it links
     parameter_files: list[Path] = field(default_factory=list)
     entry: str = ""  # a console_scripts entry point's `module:function`, what runs it
+    # a program of its own that runs the component `cls` (rclcpp_components_register_node's EXECUTABLE)
+    standalone: bool = False
 
     @property
     def kinds(self) -> list[tuple[str, str]]:

@@ -24,7 +24,7 @@ def ros2_fallback(ctx: WalkContext, text: str, covered: set[int], tu: ci.Transla
     """Read rclcpp entity calls, action servers/clients and the node's name from the text of
     lines where the AST produced nothing (type aliases from the file and the workspace headers
     it includes)."""
-    aliases = type_aliases([text, *_workspace_header_texts(tu)])
+    aliases = type_aliases([text, *workspace_header_texts(tu)])
     sub_nodes = {m.group(1): unquote(m.group(2)) for m in re.finditer(
         r"(\w+)\s*=\s*(?:this\s*->\s*)?create_sub_node\s*\(\s*(\"[^\"]*\")", text)}
     line_of = line_finder(text)
@@ -80,7 +80,7 @@ def type_aliases(texts: list[str]) -> dict[str, str]:
     return found
 
 
-def _workspace_header_texts(tu: ci.TranslationUnit) -> list[str]:
+def workspace_header_texts(tu: ci.TranslationUnit) -> list[str]:
     """The texts of the headers a unit includes that are not installed ones nor stand-ins."""
     texts = []
     for include in tu.get_includes():

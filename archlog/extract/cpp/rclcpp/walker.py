@@ -8,10 +8,14 @@ so the real headers and archlog's stand-ins (cpp/stubs.py) give the same result.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import clang.cindex as ci
 
+from archlog.extract.cpp.callers import FromCaller
 from archlog.extract.cpp.clang_ast import (
     SKIP,
+    CursorKey,
     K,
     camera_info,
     qualified,
@@ -48,7 +52,9 @@ from archlog.extract.cpp.rclcpp.nodes import Nodes
 from archlog.extract.cpp.rclcpp.parameters import Parameters
 from archlog.extract.cpp.rclcpp.qos import QosReader, builtin_qos
 from archlog.extract.cpp.rclcpp.qos_changes import QosChanges
+from archlog.extract.cpp.rclcpp.wrappers import Wrapper
 from archlog.extract.qos import Qos, number, seconds_text
+from archlog.extract.summary import Port
 from archlog.values import Value
 
 # classes whose construction creates ports: (kind, topic, type, the library's QoS: rclcpp::QoS(depth)
@@ -64,6 +70,22 @@ TF2 = {
                                      Qos({"depth": "1"}))],
 }
 CONSTRUCTED_ROS2 = {*TF2, "message_filters::Subscriber"}
+
+
+def _callees(call: ci.Cursor) -> list[ci.Cursor]:
+    """The definitions a call may run: its function's, or for make_shared<T> T's constructors."""
+    ref = call.referenced
+    if ref is None:
+        return []
+    if call.spelling in FACTORIES and (cls := factory_class(call)) is not None:
+        return [c.get_definition() or c for c in cls.get_children() if c.kind in (K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)]
+    return [ref.get_definition() or ref]
+
+
+def _also_if(port: Port, base: Port) -> Port:
+    """A wrapper's port at its call site, under the conditions of the wrapper's own call as well."""
+    conditions = [c for c in (port.condition, *port.also, base.condition, *base.also) if c is not None]
+    return replace(port, condition=conditions[0], also=tuple(conditions[1:]))
 
 
 class RclcppWalker:
@@ -151,6 +173,49 @@ class RclcppWalker:
         else:
             return False
         return True
+
+    def wrapped(self, wrappers: dict[CursorKey, set[Wrapper]], calls: list[ci.Cursor]) -> None:
+        """One port at each call of a function that creates a port named by its argument
+        (wrappers.py), with the name that call passes; the port of the wrapper's own rclcpp call,
+        whose name no single call decides, is left out then."""
+        made = {(p.file, p.line, p.kind): p for p in self.ctx.result.ports}
+        bases: set[tuple[str, int, str]] = set()
+        for call in dict.fromkeys(calls):  # each call once
+            args = written_args(call)
+            found: dict[tuple[int, str, str | None], list[tuple[str, int, str]]] = {}
+            for callee in _callees(call):
+                for w in wrappers.get(self.ctx.key(callee), ()):  # one port, whatever the ways to its rclcpp call
+                    if w.index < len(args) and not self.passed_on(args[w.index], wrappers, w.kind):
+                        found.setdefault((w.index, w.kind, w.type_), []).append((*w.base, w.kind))
+            chosen = {(index, kind) for index, kind, _written in found}
+            for (index, kind, written), inner in found.items():
+                bases.update(inner)
+                if (self.ctx.shown(call), call.location.line, kind) in made or (index, kind) not in chosen:
+                    continue  # read as rclcpp's own call, or made below with the other types
+                chosen.discard((index, kind))
+                base = next((made[b] for b in inner if b in made), None)  # the rclcpp call as the AST read it
+                type_: Value | None = (type_from_spelling(written) if written else self.entity_type(call)) or \
+                    (base.type if base is not None and isinstance(base.type, str) else None)
+                types = sorted({t for i, k, t in found if (i, k) == (index, kind)}, key=str)
+                if len(types) > 1:  # the wrapper picks one in a branch archlog does not decide
+                    type_ = self.ctx.unknown(call, f"one of {', '.join(str(t) for t in types)}, as the callee decides")
+                self.ctx.add(kind, call, self.ctx.value(args[index]),
+                             type_ or self.ctx.unknown(call, "message type not resolved"),
+                             base.handle_ns if base is not None else "", qos=base.qos if base is not None else ())
+                if base is not None and base.condition is not None:  # the branch the wrapper creates it in
+                    self.ctx.result.ports[-1] = _also_if(self.ctx.result.ports[-1], base)
+        self.ctx.result.ports = [p for p in self.ctx.result.ports if (p.file, p.line, p.kind) not in bases or
+                                 isinstance(p.name, FromCaller)]
+
+    def passed_on(self, arg: ci.Cursor, wrappers: dict[CursorKey, set[Wrapper]], kind: str) -> bool:
+        """The argument is a parameter of a wrapper that names the same kind of port with it: that
+        wrapper's callers give the name."""
+        decl = strip(arg).referenced
+        if decl is None or decl.kind != K.PARM_DECL or decl.semantic_parent is None:
+            return False
+        function = decl.semantic_parent
+        index = parameter_names(function).index(decl.spelling) if decl.spelling in parameter_names(function) else -1
+        return any(w.index == index and w.kind == kind for w in wrappers.get(self.ctx.key(function), ()))
 
     def value(self, expr: ci.Cursor, owner: str, name: str, args: list[ci.Cursor], depth: int) -> Value | None:
         """The value of an rclcpp call (a parameter read, get_name()...), None when it is not one."""
