@@ -1,8 +1,9 @@
 """What a generated test needs to know of the recovered configuration, as plain JSON-able data:
-the nodes under test, their open inputs and outputs with types, the recovered interface, the
+the nodes under test, their open inputs and outputs with types, the services they provide that no
+node of the configuration calls (open services: the test calls them), the recovered interface, the
 periodic outputs, the inputs each output requires and those it must follow (liveness.py), the parameters the nodes read, and the
-message definitions of the inputs' types (outputs are recorded by the bridge with the installed
-message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
+message definitions of the inputs' types and of the services' requests (outputs are recorded by
+the bridge with the installed message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
 also holds how to start each node under test (package, executable, remaps, the configuration's
 parameters, its Python script or entry point), as a ROS 2 test starts them itself, and the QoS its
 publishers must offer."""
@@ -44,6 +45,10 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
              for rel in ("publisher", "subscriber")}
     published = {t for _p, _n, t, _ty in ports["publisher"]}
     subscribed = {t for _p, _n, t, _ty in ports["subscriber"]}
+    called = {str(s) for _p, _n, s, _ty in store.rows("service_client")}
+    services = {str(s): str(ty) for p, n, s, ty in store.rows("service_server")
+                if str(n) in chosen and p not in builtin and isinstance(s, str) and isinstance(ty, str)
+                and (nodes or str(s) not in called)}
     inputs = {str(t): str(ty) for _p, n, t, ty in ports["subscriber"]
               if n in chosen and (nodes or t not in published) and isinstance(ty, str)}
     outputs = {str(t): str(ty) for _p, n, t, ty in ports["publisher"]
@@ -52,12 +57,15 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     for pid, n, t, ty in ports["subscriber"]:
         if t in inputs and n in chosen:
             where.setdefault(str(ty), (store.location(pid) or ("", 0, 0))[:2])
+    for server, node, service, kind in store.rows("service_server"):
+        if service in services and node in chosen:
+            where.setdefault(str(kind), (store.location(str(server)) or ("", 0, 0))[:2])
     part = from_facts(store).restricted(set(chosen))
     interface = Architecture(frozenset(chosen), part.publishers, part.subscribers, part.services)
     periodic, requires, follow, undecided = _behavior(analysis, ctl, chosen, outputs, inputs)
     params = {str(name): (None if isinstance(default, Unknown) else str(default))
               for _p, n, name, default in store.rows("param_read") if str(n) in chosen and not isinstance(name, Unknown)}
-    ros = 2 if any("/msg/" in ty for ty in (*inputs.values(), *outputs.values())) else 1
+    ros = 2 if any("/msg/" in ty or "/srv/" in ty for ty in (*inputs.values(), *outputs.values(), *services.values())) else 1
     return {
         "ros": ros,
         "commands": _commands(analysis, chosen) if ros == 2 else [],
@@ -69,6 +77,7 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
         "isolated": bool(nodes),
         "inputs": dict(sorted(inputs.items())),
         "outputs": dict(sorted(outputs.items())),
+        "services": dict(sorted(services.items())),
         "interface": interface.to_json(),
         "periodic": periodic,
         "requires": requires,

@@ -1,6 +1,6 @@
 """The ROS 2 side of a generated test: the nodes under test started as processes (a Python node's
 entry point or script, else `ros2 run`; name, namespace, remaps and typed parameters as recovered) on
-a private DDS domain, fed and
+a private DDS domain, fed, called and
 watched by an rclpy node inside the test process, with the message classes the generated module
 imports. `Ros2Session` has the interface of runtime.Session, so the state machine, its steps and
 its properties are the same for ROS 1 and ROS 2.
@@ -11,13 +11,12 @@ hands it to the machine with the message classes.
 
 from __future__ import annotations
 
-import contextlib
+import atexit
 import importlib
 import json
 import os
 import queue
 import shutil
-import signal
 import subprocess
 import sys
 import tempfile
@@ -178,6 +177,8 @@ class Ros2Session:
         for topic, type_ in outputs.items():
             self.node.create_subscription(self.classes[type_], topic, lambda m, t=topic: self.events.put(
                 {"ev": "msg", "topic": t, "t": time.time(), "msg": to_json(m)}), watching_qos(rclpy))
+        self.clients = {name: self.node.create_client(self.classes[type_], name)
+                        for name, type_ in self.model.get("services", {}).items()}
         self.executor = rclpy.executors.SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         threading.Thread(target=self.executor.spin, daemon=True).start()
@@ -190,15 +191,37 @@ class Ros2Session:
                 self.publishers[topic].publish(to_message(command["msg"], self.classes[self.model["inputs"][topic]], now))
             except (AssertionError, TypeError, ValueError) as exc:  # a value the message class refuses
                 self.events.put({"ev": "error", "topic": topic, "error": f"{type(exc).__name__}: {exc}"})
+        elif command["op"] == "call":
+            self._call(command)
         elif command["op"] == "wait":
             end = time.monotonic() + command["timeout"]
             while (missing := self._unconnected()) and time.monotonic() < end:
                 time.sleep(_POLL)
             self.events.put({"ev": "ready", "missing": missing})
 
+    def _call(self, command: dict[str, Any]) -> None:
+        """Call a service of the nodes under test; its response (or why the request could not be made)
+        is put on `events` when it comes."""
+        service, number = command["service"], command["id"]
+        client = self.clients[service]
+
+        def answered(future: Any) -> None:
+            self.events.put({"ev": "response", "service": service, "id": number, "t": time.time(),
+                             "response": to_json(future.result())})
+
+        try:
+            now = self.node.get_clock().now().nanoseconds / 1e9
+            request = to_message(command["request"], client.srv_type.Request, now)
+        except (AssertionError, TypeError, ValueError) as exc:  # a value the request class refuses
+            self.events.put({"ev": "response", "service": service, "id": number, "t": time.time(),
+                             "error": f"{type(exc).__name__}: {exc}"})
+            return
+        client.call_async(request).add_done_callback(answered)
+
     def _unconnected(self) -> list[str]:
         return sorted([t for t, p in self.publishers.items() if p.get_subscription_count() == 0]
-                      + [t for t in self.model["outputs"] if self.node.count_publishers(t) == 0])
+                      + [t for t in self.model["outputs"] if self.node.count_publishers(t) == 0]
+                      + [s for s, c in self.clients.items() if not c.service_is_ready()])
 
     def launch(self, params: dict[str, Any], timeout: float = 30.0) -> None:
         """Start the nodes under test with `params`; wait until they are in the graph and connected."""
@@ -222,12 +245,17 @@ class Ros2Session:
             time.sleep(_POLL)
         self.send({"op": "wait", "timeout": 5.0})
 
-    def stop_nodes(self) -> None:
-        for proc in self.procs.values():
-            with contextlib.suppress(ProcessLookupError):
-                os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
+    def stop_nodes(self, grace: float = 3.0) -> None:
+        """Stop the nodes under test cleanly (SIGINT, then SIGKILL after `grace` seconds) and wait, at
+        most `grace` seconds more, until they left the graph: a node killed outright stays in the
+        other participants' discovery data until its lease ends, and the next example's nodes (same
+        names) would look up at once, its requests and messages going to the dead ones."""
+        processes.stop_together(list(self.procs.values()), grace)
+        names = set(self.procs)
         self.procs = {}
+        end = time.monotonic() + grace
+        while names and names & set(self._names()) and time.monotonic() < end:
+            time.sleep(_POLL)
 
     def node_alive(self, node: str) -> bool:
         """The node is in the graph and its process runs."""
@@ -254,6 +282,7 @@ class Ros2Session:
                                     frozenset(found["services"]))
 
     def close(self) -> None:
+        atexit.unregister(self.close)
         self.stop_nodes()
         if hasattr(self, "executor"):
             self.executor.shutdown()

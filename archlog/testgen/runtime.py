@@ -14,6 +14,7 @@ from __future__ import annotations
 import atexit
 import contextlib
 import importlib.util
+import itertools
 import json
 import math
 import os
@@ -143,7 +144,7 @@ class Session:
                 time.sleep(0.1)
         spec = self.tmp / "bridge.json"
         spec.write_text(json.dumps({"inputs": self.model["inputs"], "outputs": self.model["outputs"],
-                                    "nodes": self.model["nodes"]}))
+                                    "services": self.model.get("services", {}), "nodes": self.model["nodes"]}))
         with open(self.tmp / "bridge.log", "ab") as log:
             self.bridge = subprocess.Popen([str(processes.SYSTEM_PYTHON), str(DEBIAN / "bridge.py"), str(spec)],
                                            env=self.env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=log,
@@ -270,6 +271,7 @@ class System(Protocol):
 
 
 _SESSIONS: dict[str, System] = {}
+_CALLS = itertools.count()  # a number for each service call of this process, to match its response
 
 
 def shared_session(model: dict[str, Any], create: Callable[[], System]) -> System:
@@ -291,7 +293,8 @@ def close_sessions() -> None:
 
 class Properties:
     """The user's properties: hooks called with every message received on a watched output
-    (`on_<topic>`, the topic's name with non-word characters as `_`) and after every step
+    (`on_<topic>`, the topic's name with non-word characters as `_`), with every response of an open
+    service (`on_<service>`, the Event's msg the response) and after every step
     (`invariant`). `history` holds every event received so far in the example, `sent` every
     message sent; assert in the hooks."""
 
@@ -319,7 +322,8 @@ def hook_name(topic: str) -> str:
 
 
 class ArchitectureMachine(RuleBasedStateMachine):
-    """The state machine a generated module extends with one `publish_<topic>` rule per open input.
+    """The state machine a generated module extends with one `publish_<topic>` rule per open input
+    and one `call_<service>` rule per open service.
 
     Steps: publish a drawn message; the temporal mutations (drop one message of a topic's
     sequence, resend the last one, send two in swapped order, a burst, a stale stamp); spin. After
@@ -350,6 +354,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
         self.started = 0.0
         self.failure: str | None = None
         self.periodic: dict[str, float] = {}  # the periodic outputs seen at their period after launch
+        self.answered: set[int] = set()  # the calls (their action's index) that got a response
 
     def new_session(self) -> System:
         return Session(self.model)
@@ -378,6 +383,28 @@ class ArchitectureMachine(RuleBasedStateMachine):
     def publish(self, topic: str, msg: Any) -> None:
         """Send `msg` on `topic` as the next of the topic's sequence."""
         self._send(topic, fill_counters(msg, self._next(topic)))
+
+    def call(self, service: str, request: Any) -> None:
+        """Call `service` with `request` and wait for its response (at most the response bound): a
+        response is recorded as an Event of the service; none within the bound, while the nodes under
+        test live, fails the example."""
+        if self.failure is not None:
+            return
+        now = time.time()
+        number = next(_CALLS)
+        self.session.send({"op": "call", "service": service, "request": request, "id": number,
+                           "timeout": self.settings.response_bound})
+        self._act({"op": "call", "service": service, "request": request}, now)
+        self.properties.sent.append({"service": service, "request": request})
+        end = now + self.settings.response_bound
+        while self.failure is None and number not in self.answered and time.time() < end:
+            time.sleep(_POLL)
+            self._check(final=False)
+        if self.failure is None and number not in self.answered:
+            self._check(final=False)  # a node that died meanwhile is the failure, not the silence
+            if self.failure is None and number not in self.answered:
+                self.failure = (f"{service} gave no response within {self.settings.response_bound:.1f} s "
+                                f"(after step {len(self.actions)})")
 
     @precondition(lambda self: bool(self.model["inputs"]))
     @rule(data=st.data())
@@ -561,7 +588,12 @@ def _record(machine: ArchitectureMachine) -> None:
             raise AssertionError(f"the bridge could not publish on {event['topic']}: {event['error']}")
         if event["ev"] == "log" and event["t"] >= machine.started:
             check_log(machine.settings, event)
-        if event["ev"] != "msg" or event["t"] < machine.started:
+        if event["ev"] == "response":
+            machine.answered.add(event["id"])
+            if "error" in event:  # the call failed in the test's client (a request the class refuses)
+                raise AssertionError(f"the call of {event['service']} failed: {event['error']}")
+            event = {**event, "topic": event["service"], "msg": event["response"]}
+        elif event["ev"] != "msg" or event["t"] < machine.started:
             continue
         received = Event(event["topic"], event["t"], event["msg"])
         machine.properties.history.append(received)
@@ -588,7 +620,7 @@ def check_log(settings: Settings, event: dict[str, Any]) -> None:
 
 def _check_requires(machine: ArchitectureMachine, event: Event) -> None:
     """An output that requires an input must be silent until the input was published."""
-    if not machine.settings.properties["requires"]:
+    if not machine.settings.properties["requires"] or event.topic in machine.model.get("services", {}):
         return
     for required in machine.model["requires"].get(event.topic, []):
         sent = machine.first_sent.get(required)
