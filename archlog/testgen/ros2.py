@@ -27,7 +27,7 @@ from typing import Any
 
 from archlog import observe
 from archlog.testgen import processes
-from archlog.testgen.runtime import ArchitectureMachine
+from archlog.testgen.runtime import ArchitectureMachine, write_stats
 
 _POLL = 0.05
 MAX_DOMAIN = 232
@@ -283,6 +283,7 @@ class Ros2Session:
 
     def close(self) -> None:
         atexit.unregister(self.close)
+        write_stats(self.launches)
         self.stop_nodes()
         if hasattr(self, "executor"):
             self.executor.shutdown()

@@ -165,8 +165,7 @@ class Session:
 
     def close(self) -> None:
         atexit.unregister(self.close)
-        if os.environ.get("ARCHLOG_TESTGEN_STATS"):  # for benchmarks: how many examples ran
-            Path(os.environ["ARCHLOG_TESTGEN_STATS"]).write_text(json.dumps({"launches": self.launches}))
+        write_stats(self.launches)
         with contextlib.suppress(OSError, xmlrpc.client.Error):
             self.stop_nodes()
         processes.stop_together([self.launcher, self.bridge, self.core], 2.0)
@@ -283,6 +282,13 @@ def shared_session(model: dict[str, Any], create: Callable[[], System]) -> Syste
         atexit.register(session.close)
         session.start()
     return _SESSIONS[key]
+
+
+def write_stats(launches: int) -> None:
+    """For benchmarks: how many examples ran (launches of the nodes under test), in the file
+    ARCHLOG_TESTGEN_STATS names, if set."""
+    if os.environ.get("ARCHLOG_TESTGEN_STATS"):
+        Path(os.environ["ARCHLOG_TESTGEN_STATS"]).write_text(json.dumps({"launches": launches}))
 
 
 def close_sessions() -> None:
