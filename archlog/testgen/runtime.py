@@ -616,11 +616,13 @@ def _record(machine: ArchitectureMachine) -> None:
 
 def check_log(settings: Settings, event: dict[str, Any]) -> None:
     """An ERROR a node under test logged with a Python traceback fails the `callbacks` property:
-    rospy caught an exception raised in one of the node's callbacks ("bad callback"), logged it to
-    /rosout, and the node lives on (no other property would see it)."""
+    rospy caught an exception raised in one of the node's callbacks ("bad callback") or service
+    handlers, logged it to /rosout, and the node lives on (no other property would see it)."""
     text = event["text"]
     if settings.properties["callbacks"] and "Traceback (most recent call last)" in text:
-        last = text.strip().splitlines()[-1]
+        # a service handler's traceback is logged as the repr of its list of lines
+        lines = [line.strip(" '\"[],") for line in text.replace("\\n", "\n").splitlines()]
+        last = next(line for line in reversed(lines) if line)
         raise Violation(f"{event['node']} raised in a callback: {last}", event["t"])
 
 
