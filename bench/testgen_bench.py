@@ -36,7 +36,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 from rclpy_oracle import Program, programs  # noqa: E402
 from support.ros2_nodes import private_domain  # noqa: E402
 from support.testgen_corpus import Outcome, prepare, run_generated, systems  # noqa: E402
-from test_testgen_ros2 import CASES, SERVICE, run_case  # noqa: E402
+from test_testgen_ros2 import CASES, LIFECYCLE, SERVICE, run_case  # noqa: E402
 
 DEBIAN = {"robot_state_publisher": "ros-robot-state-publisher-*", "joint_state_publisher": "ros-joint-state-publisher-*"}
 
@@ -100,6 +100,11 @@ def ros2(examples: int) -> None:
         outcome = "passed" if result.returncode == 0 else "skipped" if result.returncode == 5 else "FAILED"
         rate = f"{examples / seconds:.2f}" if outcome == "passed" else "-"
         print(f"| {system} | {' '.join(nodes) or 'all'} | {outcome} | {rate} |", flush=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        out, _case = prepare(LIFECYCLE, Path(tmp))
+        lifecycle = run_generated(out, examples, seed=0)
+    rate = f"{lifecycle.examples / lifecycle.seconds:.2f}" if lifecycle.passed else "-"
+    print(f"| testgen_ros2/{LIFECYCLE.parent.name} | all | {'passed' if lifecycle.passed else 'FAILED'} | {rate} |")
     ros2_twins(examples, 3, 15)
 
 

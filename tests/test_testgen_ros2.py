@@ -2,12 +2,14 @@
 as plain processes (no ros2cli), typed parameters, test publishers offering the QoS the nodes ask
 for, on a private domain. A correct system's generated test passes; a system with a node that is
 not a Python node of its workspace (C++ without ros2cli here) is skipped with the reason. A node whose
-only interface is a service gets calls with drawn requests."""
+only interface is a service gets calls with drawn requests, and the line coverage of its file is in
+the report."""
 
 from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -20,6 +22,7 @@ from support.testgen_corpus import prepare, run_generated
 ROOT = Path(__file__).resolve().parents[1]
 CORPUS = ROOT / "corpus" / "ros2"
 SERVICE = ROOT / "corpus" / "testgen_ros2" / "service_division"  # a node whose only interface is a service
+LIFECYCLE = ROOT / "corpus" / "testgen_ros2" / "lifecycle_scaler" / "clean"  # ports made in on_configure
 # (system, nodes under test: all when empty, what the generated test does); each a clean twin
 CASES = [("qos_deadline_watchdog", ["/base/watchdog"], "passed"), ("param_name_typo_py", [], "passed"),
          ("yaml_remap_near_miss", ["/robot1/smoother"], "passed"), ("qos_latched_map", [], "skipped")]
@@ -74,3 +77,16 @@ def test_a_service_under_test_gets_drawn_requests(tmp_path: Path, monkeypatch: p
     out, _case = prepare(SERVICE / "clean", tmp_path / "clean")
     clean = run_generated(out, 6, seed=0, steps=5, timeout=300)
     assert clean.passed and clean.examples >= 6, clean.output
+    covered = re.search(r"/planner ran (\d+) of (\d+) lines", clean.output)  # coverage.py in the node's process
+    assert covered and 0 < int(covered[1]) < int(covered[2]), clean.output  # the guard's early return and more
+
+
+def test_a_lifecycle_node_is_activated_and_its_builtin_ports_left_out(tmp_path: Path,
+                                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    """The scaler makes its ports in on_configure: the test configures and activates it after every
+    start (else its recovered ports are missing live), and its lifecycle services are not compared."""
+    domain = min(private_domain(), 232)
+    monkeypatch.setenv("ARCHLOG_TESTGEN_DOMAINS", f"{domain}-{domain}")
+    out, _case = prepare(LIFECYCLE, tmp_path / "clean")
+    outcome = run_generated(out, 4, seed=0, steps=4, timeout=300)
+    assert outcome.passed and outcome.examples >= 4, outcome.output

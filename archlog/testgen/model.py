@@ -1,7 +1,9 @@
 """What a generated test needs to know of the recovered configuration, as plain JSON-able data:
 the nodes under test, their open inputs and outputs with types, the services they provide that no
 node of the configuration calls (open services: the test calls them), the recovered interface, the
-periodic outputs, the inputs each output requires and those it must follow (liveness.py), the parameters the nodes read, and the
+built-in ports of the nodes under test (not compared with the live graph), the lifecycle nodes
+(configured and activated after each start, as a deployment would), the periodic outputs, the inputs
+each output requires and those it must follow (liveness.py), the parameters the nodes read, and the
 message definitions of the inputs' types and of the services' requests (outputs are recorded by
 the bridge with the installed message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
 also holds how to start each node under test (package, executable, remaps, the configuration's
@@ -39,7 +41,12 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     unknown = sorted(set(chosen) - set(everyone))
     if unknown:
         raise ModelError(f"no node {', '.join(unknown)} in the configuration (nodes: {', '.join(everyone)})")
-    builtin = {r[0] for r in store.rows("infrastructure_port")}  # the client library's own ports: not under test
+    groups = {r[0]: str(r[1]) for r in store.rows("infrastructure_port")}
+    builtin = set(groups)  # the client library's own ports: not under test
+    own = {rel: {(str(n), str(name)) for p, n, name, _ty in store.rows(rel) if p in builtin and str(n) in chosen}
+           for rel in ("publisher", "subscriber", "service_server", "service_client")}
+    lifecycle = sorted({str(n) for p, n, _name, _ty in store.rows("service_server")
+                        if groups.get(p) == "lifecycle" and str(n) in chosen})
     ports = {rel: [(str(p), str(n), t, ty) for p, n, t, ty in store.rows(rel)
                    if not isinstance(t, Unknown) and t not in INFRA_TOPICS and p not in builtin]
              for rel in ("publisher", "subscriber")}
@@ -79,6 +86,8 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
         "outputs": dict(sorted(outputs.items())),
         "services": dict(sorted(services.items())),
         "interface": interface.to_json(),
+        "builtin": sorted([n, name] for ports in own.values() for n, name in ports),
+        "lifecycle": lifecycle,
         "periodic": periodic,
         "requires": requires,
         "follows": follow,
@@ -89,19 +98,30 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
 
 
 def _commands(analysis: Analysis, chosen: list[str]) -> list[dict[str, Any]]:
-    """How to start each node under test: package, executable, remaps, the configuration's parameters
-    of the node with their types (resolved names; those with unknown parts left out), and for a Python
-    executable of the workspace its script or console_scripts entry point (run without ros2cli)."""
+    """How to start each process of the nodes under test (one per launch entity: a program may hold
+    several nodes): its nodes, package, executable, remaps, the configuration's parameters of its nodes
+    with their types (resolved names; those with unknown parts left out), and for a Python executable
+    of the workspace its script or console_scripts entry point (run without ros2cli)."""
     store, known = analysis.store, (str, int, float)
     remaps: dict[str, list[list[str]]] = {}
     for _e, node, source, target in store.rows("remap"):
         if isinstance(source, str) and isinstance(target, str):
             remaps.setdefault(str(node), []).append([source, target])
     params = [(name, value) for name, value, _e in store.rows("param") if isinstance(name, str) and isinstance(value, known)]
-    return [{"name": str(node), "pkg": str(pkg), "exe": str(exe), "remaps": remaps.get(str(node), []),
-             "params": {name: value for name, value in params if name.startswith(f"{node}/")},
-             **_python_start(analysis, str(pkg), str(exe))}
-            for node, pkg, exe, _e in store.rows("node") if str(node) in chosen]
+    processes: dict[str, list[tuple[str, str, str]]] = {}  # launch entity -> its nodes (one process)
+    for node, pkg, exe, entity in store.rows("node"):
+        processes.setdefault(str(entity), []).append((str(node), str(pkg), str(exe)))
+    commands = []
+    for nodes in processes.values():
+        names = [n for n, _pkg, _exe in nodes]
+        if set(names) & set(chosen):
+            _name, pkg, exe = nodes[0]
+            commands.append({"name": names[0], "nodes": names, "pkg": pkg, "exe": exe,
+                             "remaps": [r for n in names for r in remaps.get(n, [])],
+                             "params": {name: value for name, value in params
+                                        if any(name.startswith(f"{n}/") for n in names)},
+                             **_python_start(analysis, pkg, exe)})
+    return commands
 
 
 def _python_start(analysis: Analysis, pkg: str, exe: str) -> dict[str, str]:

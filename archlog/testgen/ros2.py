@@ -12,9 +12,12 @@ hands it to the machine with the message classes.
 from __future__ import annotations
 
 import atexit
+import contextlib
 import importlib
+import importlib.util
 import json
 import os
+import pty
 import queue
 import shutil
 import subprocess
@@ -31,6 +34,8 @@ from archlog.testgen.runtime import ArchitectureMachine, write_stats
 
 _POLL = 0.05
 MAX_DOMAIN = 232
+LIFECYCLE = "lifecycle_msgs/srv/ChangeState"  # the service a lifecycle node is configured and activated by
+TRANSITIONS = (1, 3)  # configure, activate (lifecycle_msgs/msg/Transition)
 
 
 def message_class(type_: str) -> type:
@@ -80,14 +85,20 @@ def to_json(value: Any) -> Any:
     return value
 
 
-def run_command(node: dict[str, Any], params: dict[str, Any]) -> list[str] | None:
+def run_command(node: dict[str, Any], params: dict[str, Any], coverage: Path | None = None) -> list[str] | None:
     """How to start a node under test without ros2cli: its console_scripts entry point or script under
-    this Python, else `ros2 run` where ros2 is installed (None: neither); then its name, namespace,
-    remaps, and parameters with their types (the configuration's, then the drawn ones, given as
-    /node/name and set as the node's own)."""
+    this Python (measured by coverage.py into the folder `coverage`, if given), else `ros2 run` where
+    ros2 is installed (None: neither); then its name, namespace, remaps, and parameters with their
+    types (the configuration's, then the drawn ones, given as /node/name and set as the node's own)."""
+    measure = "" if coverage is None else (
+        f"import atexit, coverage; c = coverage.Coverage(data_file={str(coverage / 'data')!r}, data_suffix=True, "
+        f"source=[{str(Path(node_file(node)).parent)!r}]); c.start(); atexit.register(lambda: (c.stop(), c.save())); ")
     if node.get("entry"):
         module, _, function = node["entry"].partition(":")
-        command = [sys.executable, "-c", f"import sys; from {module} import {function} as main; sys.exit(main())"]
+        command = [sys.executable, "-c", f"{measure}import sys; from {module} import {function} as main; sys.exit(main())"]
+    elif node.get("script") and measure:
+        command = [sys.executable, "-c", f"{measure}import runpy, sys; sys.argv[0] = {node['script']!r}; "
+                   f"runpy.run_path({node['script']!r}, run_name='__main__')"]
     elif node.get("script"):
         command = [sys.executable, node["script"]]
     elif shutil.which("ros2"):
@@ -95,13 +106,40 @@ def run_command(node: dict[str, Any], params: dict[str, Any]) -> list[str] | Non
     else:
         return None
     namespace, _, base = node["name"].rpartition("/")
-    command += ["--ros-args", "-r", f"__node:={base}", "-r", f"__ns:={namespace or '/'}"]
+    nodes = node.get("nodes", [node["name"]])
+    command += ["--ros-args", "-r", f"__ns:={namespace or '/'}"]
+    if len(nodes) == 1:  # `__node` would name every node of a process holding several
+        command += ["-r", f"__node:={base}"]
     for source, target in node["remaps"]:
         command += ["-r", f"{source}:={target}"]
     for name, value in {**node["params"], **params}.items():
-        if name.startswith(node["name"] + "/"):
-            command += ["-p", f"{name[len(node['name']) + 1:].replace('/', '.')}:={_typed(value)}"]
+        owner = next((n for n in nodes if name.startswith(n + "/")), None)
+        if owner is not None:
+            command += ["-p", f"{name[len(owner) + 1:].replace('/', '.')}:={_typed(value)}"]
     return command
+
+
+def node_file(node: dict[str, Any]) -> str:
+    """The Python file of a node under test: its script, or its entry point's module."""
+    if node.get("script"):
+        return str(node["script"])
+    module = Path(node["root"], *node["entry"].partition(":")[0].split("."))
+    return str(module / "__init__.py" if module.is_dir() else module.with_suffix(".py"))
+
+
+def line_coverage(folder: Path, commands: list[dict[str, Any]]) -> dict[str, tuple[int, int]]:
+    """Per Python node under test, the lines of its file run by any of its processes (coverage.py data
+    in `folder`) and the lines of the file: node -> (covered, statements)."""
+    import coverage
+
+    data = coverage.Coverage(data_file=str(folder / "data"))
+    data.combine([str(folder)], keep=True)
+    found: dict[str, tuple[int, int]] = {}
+    for node in commands:
+        if node.get("entry") or node.get("script"):
+            _file, statements, _excluded, missing, _text = data.analysis2(node_file(node))
+            found[node["name"]] = (len(statements) - len(missing), len(statements))
+    return found
 
 
 def _typed(value: Any) -> str:
@@ -153,13 +191,18 @@ class Ros2Session:
         self.model, self.rclpy, self.classes = model, rclpy, classes
         self.tmp = Path(tempfile.mkdtemp(prefix="archlog-testgen-"))
         self.events: queue.Queue = queue.Queue()
-        self.procs: dict[str, subprocess.Popen] = {}  # node under test -> its process
+        self.procs: dict[str, subprocess.Popen] = {}  # node (of a process started) -> its process
         self.launched_params: dict[str, Any] | None = None
         self.launches = 0
         self.domain = private_domain()
         self.env = dict(os.environ, ROS_DOMAIN_ID=str(self.domain), ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST",
                         ROS_HOME=str(self.tmp), ROS_LOG_DIR=str(self.tmp / "log"), PYTHONUNBUFFERED="1")
         self.env.pop("ROS_LOCALHOST_ONLY", None)  # deprecated; it would override the discovery range
+        # the nodes' standard input: a pseudo-terminal, as `ros2 run` in a shell gives them (keyboard
+        # teleops and prompts wait on it; nothing is typed), open until the session closes
+        self.terminal = pty.openpty()
+        measured = importlib.util.find_spec("coverage") is not None and os.environ.get("ARCHLOG_TESTGEN_COVERAGE") != "0"
+        self.coverage = self.tmp / "coverage" if measured else None
 
     @property
     def log(self) -> Path:
@@ -230,12 +273,13 @@ class Ros2Session:
         self.launched_params = params
         with open(self.log, "ab") as out:
             for node in self.model["commands"]:
-                command = run_command(node, params)
+                command = run_command(node, params, self.coverage)
                 if command is None:
                     raise RuntimeError(unstartable(self.model))
                 env = dict(self.env, PYTHONPATH=os.pathsep.join(p for p in (node.get("root"), self.env.get("PYTHONPATH")) if p))
-                self.procs[node["name"]] = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT,
-                                                            stdin=subprocess.DEVNULL, start_new_session=True, cwd=self.tmp)
+                proc = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT,
+                                        stdin=self.terminal[1], start_new_session=True, cwd=self.tmp)
+                self.procs.update(dict.fromkeys(node.get("nodes", [node["name"]]), proc))
         deadline = time.monotonic() + timeout
         while not all(self.node_alive(n) for n in self.model["nodes"]):
             if any(p.poll() is not None for p in self.procs.values()):
@@ -243,14 +287,35 @@ class Ros2Session:
             if time.monotonic() > deadline:
                 raise RuntimeError(f"the nodes under test did not come up:\n{processes.tail(self.log)}")
             time.sleep(_POLL)
+        for node in self.model.get("lifecycle", []):
+            self._activate(node, deadline)
         self.send({"op": "wait", "timeout": 5.0})
+
+    def _activate(self, node: str, deadline: float) -> None:
+        """Configure and activate a lifecycle node (its ports made in on_configure then exist); a
+        transition refused or unanswered is left to the properties (the node stays inactive)."""
+        cls: Any = self.classes[LIFECYCLE]
+        client = self.node.create_client(cls, f"{node}/change_state")
+        try:
+            if not client.wait_for_service(timeout_sec=max(deadline - time.monotonic(), 0.1)):
+                return
+            for transition in TRANSITIONS:
+                request = cls.Request()
+                request.transition.id = transition
+                future = client.call_async(request)
+                while not future.done() and time.monotonic() < deadline:
+                    time.sleep(_POLL)
+                if not future.done() or not future.result().success:
+                    return
+        finally:
+            self.node.destroy_client(client)
 
     def stop_nodes(self, grace: float = 3.0) -> None:
         """Stop the nodes under test cleanly (SIGINT, then SIGKILL after `grace` seconds) and wait, at
         most `grace` seconds more, until they left the graph: a node killed outright stays in the
         other participants' discovery data until its lease ends, and the next example's nodes (same
         names) would look up at once, its requests and messages going to the dead ones."""
-        processes.stop_together(list(self.procs.values()), grace)
+        processes.stop_together(list({id(p): p for p in self.procs.values()}.values()), grace)
         names = set(self.procs)
         self.procs = {}
         end = time.monotonic() + grace
@@ -267,28 +332,34 @@ class Ros2Session:
 
     def graph(self) -> observe.Architecture:
         """The live graph of the nodes under test, minus ROS 2's infrastructure (/rosout,
-        /parameter_events, the parameter services)."""
+        /parameter_events, the parameter services) and the built-in ports the model lists (left out of
+        the recovered interface too)."""
         found: dict[str, set] = {"publishers": set(), "subscribers": set(), "services": set()}
+        builtin = {(node, name) for node, name in self.model.get("builtin", [])}
         names = {n: v for n, v in self._names().items() if n in self.model["nodes"]}
         for full, (name, ns) in names.items():
             for kind, read in (("publishers", self.node.get_publisher_names_and_types_by_node),
                                ("subscribers", self.node.get_subscriber_names_and_types_by_node)):
-                found[kind] |= {(full, t, ty) for t, types in read(name, ns) if t not in observe.ROS2_INFRA_TOPICS
-                                for ty in types}
+                found[kind] |= {(full, t, ty) for t, types in read(name, ns)
+                                if t not in observe.ROS2_INFRA_TOPICS and (full, t) not in builtin for ty in types}
             parameters = {f"{full}/{x}" for x in observe.ROS2_PARAMETER_SERVICES}
             found["services"] |= {(full, s) for s, _types in self.node.get_service_names_and_types_by_node(name, ns)
-                                  if s not in parameters}
+                                  if s not in parameters and (full, s) not in builtin}
         return observe.Architecture(frozenset(names), frozenset(found["publishers"]), frozenset(found["subscribers"]),
                                     frozenset(found["services"]))
 
     def close(self) -> None:
         atexit.unregister(self.close)
-        write_stats(self.launches)
         self.stop_nodes()
+        covered = line_coverage(self.coverage, self.model["commands"]) if self.coverage and self.coverage.is_dir() else {}
+        write_stats(self.launches, covered)
         if hasattr(self, "executor"):
             self.executor.shutdown()
             self.node.destroy_node()
             self.context.try_shutdown()
+        for fd in self.terminal:
+            with contextlib.suppress(OSError):
+                os.close(fd)
         shutil.rmtree(self.tmp, ignore_errors=True)
 
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import atexit
 import contextlib
+import dataclasses
 import importlib.util
 import itertools
 import json
@@ -284,11 +285,29 @@ def shared_session(model: dict[str, Any], create: Callable[[], System]) -> Syste
     return _SESSIONS[key]
 
 
-def write_stats(launches: int) -> None:
-    """For benchmarks: how many examples ran (launches of the nodes under test), in the file
+COVERAGE: dict[str, tuple[int, int]] = {}  # node under test -> lines run, lines of its file (sessions closed)
+
+
+def write_stats(launches: int, covered: dict[str, tuple[int, int]] | None = None) -> None:
+    """Keep the line coverage of the nodes under test for the report, and for benchmarks write how
+    many examples ran (launches of the nodes under test) and the coverage in the file
     ARCHLOG_TESTGEN_STATS names, if set."""
+    COVERAGE.update(covered or {})
     if os.environ.get("ARCHLOG_TESTGEN_STATS"):
-        Path(os.environ["ARCHLOG_TESTGEN_STATS"]).write_text(json.dumps({"launches": launches}))
+        Path(os.environ["ARCHLOG_TESTGEN_STATS"]).write_text(json.dumps({"launches": launches,
+                                                                           "coverage": covered or {}}))
+
+
+def report_coverage(config: Any) -> None:
+    """Write the line coverage of the Python nodes under test into pytest's terminal report."""
+    terminal = config.pluginmanager.get_plugin("terminalreporter")
+    capture = config.pluginmanager.get_plugin("capturemanager")
+    with capture.global_and_fixture_disabled() if capture is not None else contextlib.nullcontext():
+        for node, (run_lines, lines) in sorted(COVERAGE.items()):
+            if terminal is not None and lines:
+                terminal.write_line(f"\narchlog testgen: {node} ran {run_lines} of {lines} lines "
+                                    f"({100 * run_lines / lines:.0f}%) of its file under the generated test")
+    COVERAGE.clear()
 
 
 def close_sessions() -> None:
@@ -578,13 +597,36 @@ def check_properties(machine: ArchitectureMachine, final: bool) -> None:
                 raise Violation(f"{topic} requires {', '.join(inputs)}, which was published, but nothing came "
                                 f"on {topic} within {bound:.1f} s", max(sent) + bound)
     if settings.properties["interface"] and final:
-        want = observe.Architecture.from_json(model["interface"])
-        differences = {kind: row for kind, row in observe.compare(want, session.graph()).items()
-                       if row["only_recovered"] or row["only_observed"]}
+        differences = _interface_differences(session, observe.Architecture.from_json(model["interface"]),
+                                             settings.response_bound)
         assert not differences, "the live interface differs from the recovered one: " + "; ".join(
             f"{kind}: only recovered {row['only_recovered']}, only observed {row['only_observed']}"
             for kind, row in differences.items())
     machine.properties.invariant()
+
+
+def _interface_differences(session: System, want: observe.Architecture, bound: float) -> dict[str, dict]:
+    """The differences between the recovered interface and the live graph that last `bound` seconds: a
+    DDS graph is eventually consistent (a restarted node's endpoints are discovered one by one)."""
+    end = time.monotonic() + bound
+    while True:
+        seen = session.graph()
+        differences = {kind: row for kind, row in observe.compare(_typed_as_seen(want, seen), seen).items()
+                       if row["only_recovered"] or row["only_observed"]}
+        if not differences or time.monotonic() >= end:
+            return differences
+        time.sleep(_POLL * 2)
+
+
+def _typed_as_seen(want: observe.Architecture, seen: observe.Architecture) -> observe.Architecture:
+    """The recovered interface with each port of unknown type ("") given the type seen live on the
+    same node and topic (the code chose its type at run time): an unknown type is not a difference."""
+    def typed(ports: frozenset[tuple[str, str, str]], live: frozenset[tuple[str, str, str]]) -> frozenset:
+        types = {(node, topic): type_ for node, topic, type_ in live}
+        return frozenset((node, topic, type_ or types.get((node, topic), "")) for node, topic, type_ in ports)
+
+    return dataclasses.replace(want, publishers=typed(want.publishers, seen.publishers),
+                               subscribers=typed(want.subscribers, seen.subscribers))
 
 
 def _record(machine: ArchitectureMachine) -> None:
