@@ -107,9 +107,10 @@ def run_command(node: dict[str, Any], params: dict[str, Any], coverage: Path | N
         return None
     namespace, _, base = node["name"].rpartition("/")
     nodes = node.get("nodes", [node["name"]])
-    command += ["--ros-args", "-r", f"__ns:={namespace or '/'}"]
+    command += ["--ros-args"]
     if len(nodes) == 1:  # `__node` would name every node of a process holding several
         command += ["-r", f"__node:={base}"]
+    command += ["-r", f"__ns:={namespace or '/'}"]
     for source, target in node["remaps"]:
         command += ["-r", f"{source}:={target}"]
     for name, value in {**node["params"], **params}.items():
