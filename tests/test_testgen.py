@@ -304,3 +304,19 @@ def test_a_process_of_several_nodes_is_started_once_without_renaming_them() -> N
     assert command is not None
     assert command[command.index("--ros-args"):] == ["--ros-args", "-r", "__ns:=/", "-p", "rate:=2.0",
                                                      "-p", "greeting:=hi"]
+
+
+def test_a_recovered_port_of_unknown_type_matches_the_live_type() -> None:
+    """The code chose the type at run time (archlog recovered ""): not a difference of the interface;
+    a known type that differs still is."""
+    from archlog.observe import Architecture, compare
+    from archlog.testgen.runtime import _typed_as_seen
+
+    want = Architecture(frozenset({"/mover"}), frozenset({("/mover", "/cmd_vel", ""),
+                                                          ("/mover", "/odom_out", "nav_msgs/Odometry")}),
+                        frozenset(), frozenset())
+    seen = Architecture(frozenset({"/mover"}), frozenset({("/mover", "/cmd_vel", "geometry_msgs/msg/Twist"),
+                                                          ("/mover", "/odom_out", "std_msgs/String")}), frozenset(), frozenset())
+    row = compare(_typed_as_seen(want, seen), seen)["publishers"]
+    assert row["only_recovered"] == [["/mover", "/odom_out", "nav_msgs/Odometry"]]
+    assert row["only_observed"] == [["/mover", "/odom_out", "std_msgs/String"]]
