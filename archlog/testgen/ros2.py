@@ -288,6 +288,8 @@ class Ros2Session:
             if time.monotonic() > deadline:
                 raise RuntimeError(f"the nodes under test did not come up:\n{processes.tail(self.log)}")
             time.sleep(_POLL)
+        while self._twice() and time.monotonic() < deadline:  # a stale namesake from the last example
+            time.sleep(_POLL)
         for node in self.model.get("lifecycle", []):
             self._activate(node, deadline)
         self.send({"op": "wait", "timeout": 5.0})
@@ -313,13 +315,14 @@ class Ros2Session:
 
     def stop_nodes(self, grace: float = 3.0) -> None:
         """Stop the nodes under test cleanly (SIGINT, then SIGKILL after `grace` seconds) and wait, at
-        most `grace` seconds more, until they left the graph: a node killed outright stays in the
-        other participants' discovery data until its lease ends, and the next example's nodes (same
-        names) would look up at once, its requests and messages going to the dead ones."""
+        most three times `grace` seconds more, until they left the graph: a node killed outright (or
+        slow to leave on a loaded machine) stays in the other participants' discovery data until its
+        lease ends, and the next example's nodes (same names) would look up at once, their requests,
+        messages and graph queries going to the dead ones."""
         processes.stop_together(list({id(p): p for p in self.procs.values()}.values()), grace)
         names = set(self.procs)
         self.procs = {}
-        end = time.monotonic() + grace
+        end = time.monotonic() + 3 * grace
         while names and names & set(self._names()) and time.monotonic() < end:
             time.sleep(_POLL)
 
@@ -327,6 +330,11 @@ class Ros2Session:
         """The node is in the graph and its process runs."""
         proc = self.procs.get(node)
         return proc is not None and proc.poll() is None and node in self._names()
+
+    def _twice(self) -> list[str]:
+        """The nodes under test the graph lists more than once."""
+        listed = [(ns.rstrip("/") + "/" + name) for name, ns in self.node.get_node_names_and_namespaces()]
+        return [n for n in self.model["nodes"] if listed.count(n) > 1]
 
     def _names(self) -> dict[str, tuple[str, str]]:
         return {(ns.rstrip("/") + "/" + name): (name, ns) for name, ns in self.node.get_node_names_and_namespaces()}
