@@ -294,3 +294,29 @@ def test_generated_test_finds_the_defect_and_passes_the_fixed_twin(system: Path,
         result = subprocess.run([sys.executable, "-m", "archlog", "replay", str(replay)], capture_output=True, text=True,
                                 timeout=120)
         assert result.returncode == 1 and "reproduced: node(s) died" in result.stdout, result.stdout + result.stderr
+
+
+def test_a_process_of_several_nodes_is_started_once_without_renaming_them() -> None:
+    """`__node` would give every node of the process one name; each node's parameters are passed."""
+    process = {"name": "/talker", "nodes": ["/talker", "/listener"], "pkg": "chat", "exe": "both", "remaps": [],
+               "params": {"/listener/rate": 2.0, "/other/rate": 3.0}, "script": "/ws/chat/both.py"}
+    command = run_command(process, {"/talker/greeting": "hi"})
+    assert command is not None
+    assert command[command.index("--ros-args"):] == ["--ros-args", "-r", "__ns:=/", "-p", "rate:=2.0",
+                                                     "-p", "greeting:=hi"]
+
+
+def test_a_recovered_port_of_unknown_type_matches_the_live_type() -> None:
+    """The code chose the type at run time (archlog recovered ""): not a difference of the interface;
+    a known type that differs still is."""
+    from archlog.observe import Architecture, compare
+    from archlog.testgen.runtime import _typed_as_seen
+
+    want = Architecture(frozenset({"/mover"}), frozenset({("/mover", "/cmd_vel", ""),
+                                                          ("/mover", "/odom_out", "nav_msgs/Odometry")}),
+                        frozenset(), frozenset())
+    seen = Architecture(frozenset({"/mover"}), frozenset({("/mover", "/cmd_vel", "geometry_msgs/msg/Twist"),
+                                                          ("/mover", "/odom_out", "std_msgs/String")}), frozenset(), frozenset())
+    row = compare(_typed_as_seen(want, seen), seen)["publishers"]
+    assert row["only_recovered"] == [["/mover", "/odom_out", "nav_msgs/Odometry"]]
+    assert row["only_observed"] == [["/mover", "/odom_out", "std_msgs/String"]]

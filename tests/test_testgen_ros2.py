@@ -1,12 +1,15 @@
 """Generated tests of the corpus/ros2 systems run for real on rclpy (issue 32): the nodes started
 as plain processes (no ros2cli), typed parameters, test publishers offering the QoS the nodes ask
 for, on a private domain. A correct system's generated test passes; a system with a node that is
-not a Python node of its workspace (C++ without ros2cli here) is skipped with the reason."""
+not a Python node of its workspace (C++ without ros2cli here) is skipped with the reason. A node whose
+only interface is a service gets calls with drawn requests, and the line coverage of its file is in
+the report."""
 
 from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -14,9 +17,12 @@ from pathlib import Path
 
 import pytest
 from support.ros2_nodes import private_domain, rclpy_available
+from support.testgen_corpus import prepare, run_generated
 
 ROOT = Path(__file__).resolve().parents[1]
 CORPUS = ROOT / "corpus" / "ros2"
+SERVICE = ROOT / "corpus" / "testgen_ros2" / "service_division"  # a node whose only interface is a service
+LIFECYCLE = ROOT / "corpus" / "testgen_ros2" / "lifecycle_scaler" / "clean"  # ports made in on_configure
 # (system, nodes under test: all when empty, what the generated test does); each a clean twin
 CASES = [("qos_deadline_watchdog", ["/base/watchdog"], "passed"), ("param_name_typo_py", [], "passed"),
          ("yaml_remap_near_miss", ["/robot1/smoother"], "passed"), ("qos_latched_map", [], "skipped")]
@@ -54,3 +60,33 @@ def test_generated_test_passes_a_correct_ros2_system(system: str, nodes: list[st
         assert result.returncode == 5 and "cannot start" in result.stdout, result.stdout
     else:
         assert result.returncode == 0 and "1 passed" in result.stdout, result.stdout[-4000:] + result.stderr[-2000:]
+
+
+def test_a_service_under_test_gets_drawn_requests(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The planner dies on a zero tolerance (buggy twin): found, shrunk to at most 3 calls; its fixed
+    twin answers every request (an empty plan for a tolerance that is not a positive length)."""
+    domain = min(private_domain(), 232)
+    monkeypatch.setenv("ARCHLOG_TESTGEN_DOMAINS", f"{domain}-{domain}")
+    out, _case = prepare(SERVICE / "buggy", tmp_path / "buggy")
+    assert "def call_plan_route(self, request):" in (out / "test_planner.py").read_text()
+    buggy = run_generated(out, 12, seed=0, shrink_seconds=8, steps=5, timeout=300)
+    assert not buggy.passed and buggy.replay is not None, buggy.output
+    assert buggy.replay["reason"].startswith("node(s) died: /planner"), buggy.replay["reason"]
+    calls = [a["request"] for a in buggy.replay["actions"] if a["op"] == "call"]
+    assert 1 <= buggy.messages() <= 3 and str(calls[-1]["tolerance"]) in ("0.0", "-0.0", "nan"), buggy.replay
+    out, _case = prepare(SERVICE / "clean", tmp_path / "clean")
+    clean = run_generated(out, 6, seed=0, steps=5, timeout=300)
+    assert clean.passed and clean.examples >= 6, clean.output
+    covered = re.search(r"/planner ran (\d+) of (\d+) lines", clean.output)  # coverage.py in the node's process
+    assert covered and 0 < int(covered[1]) < int(covered[2]), clean.output  # the guard's early return and more
+
+
+def test_a_lifecycle_node_is_activated_and_its_builtin_ports_left_out(tmp_path: Path,
+                                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    """The scaler makes its ports in on_configure: the test configures and activates it after every
+    start (else its recovered ports are missing live), and its lifecycle services are not compared."""
+    domain = min(private_domain(), 232)
+    monkeypatch.setenv("ARCHLOG_TESTGEN_DOMAINS", f"{domain}-{domain}")
+    out, _case = prepare(LIFECYCLE, tmp_path / "clean")
+    outcome = run_generated(out, 4, seed=0, steps=4, timeout=300)
+    assert outcome.passed and outcome.examples >= 4, outcome.output

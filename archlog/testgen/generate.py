@@ -1,5 +1,6 @@
 """Write the generated test for a test model: `test_NAME.py` (regenerated every time: the model,
-the settings and one `publish_<topic>` rule per open input; it imports its runtime from
+the settings, one `publish_<topic>` rule per open input and one `call_<service>` rule per open
+service; it imports its runtime from
 archlog.testgen) and `NAME_properties.py` (the user's properties, written only when absent).
 A ROS 2 configuration's module imports rclpy (skipped without it) and the message classes of its
 inputs and outputs from their ROS 2 packages, and extends ros2.Ros2Machine."""
@@ -11,6 +12,7 @@ from pathlib import Path
 from pprint import pformat
 from typing import Any
 
+from archlog.testgen.ros2 import LIFECYCLE
 from archlog.testgen.runtime import hook_name
 from archlog.testgen.settings import Settings
 
@@ -21,7 +23,8 @@ Do not edit: regenerating overwrites this file. Write properties in {properties}
 Run with pytest; ARCHLOG_TESTGEN_EXAMPLES sets the number of examples (default {examples}),
 ARCHLOG_TESTGEN_STEPS the steps per example, ARCHLOG_TESTGEN_SHRINK_SECONDS the time spent shrinking
 a failure (default 60). Each example starts the nodes under test afresh on a private {private}
-(about 1-3 s an example) unless reuse is set.
+(about 1-3 s an example) unless reuse is set. Where coverage.py is installed, the line coverage of
+each Python node started by the test (ROS 2) is in the report (ARCHLOG_TESTGEN_COVERAGE=0: not measured).
 {undecided}"""
 
 import os
@@ -31,7 +34,7 @@ import pytest
 from hypothesis import HealthCheck, Phase, settings
 from hypothesis.stateful import rule
 {imports}
-from archlog.testgen.runtime import bounded_shrinking, close_sessions, load_properties
+from archlog.testgen.runtime import bounded_shrinking, close_sessions, load_properties, report_coverage
 from archlog.testgen.settings import Settings
 from archlog.testgen.strategies import Strategies
 
@@ -53,6 +56,11 @@ RULE = '''
     def publish_{ident}(self, msg):
         self.publish("{topic}", msg)
 '''
+CALL = '''
+    @rule(request=STRATEGIES.message("{type}"))
+    def call_{ident}(self, request):
+        self.call("{service}", request)
+'''
 
 FOOTER = '''
 
@@ -65,10 +73,11 @@ Test{cls} = {cls}.TestCase
 
 
 @pytest.fixture(scope="module", autouse=True)
-def _run_the_system():
+def _run_the_system(request):
     with bounded_shrinking():
         yield
     close_sessions()
+    report_coverage(request.config)
 '''
 
 UNSTARTABLE = '''
@@ -79,8 +88,9 @@ if unstartable(MODEL):
 
 PROPERTIES = '''"""Properties of {what} that the generated test_{name}.py checks (archlog testgen writes this
 file once and never overwrites it). Each hook is called with every message received on its topic
-(an Event: topic, time, msg as a dict); `invariant` after every step. self.history holds every
-event of the example so far, self.sent every message sent. Assert what must hold."""
+or response of its service (an Event: topic or service, time, msg as a dict); `invariant` after
+every step. self.history holds every event of the example so far, self.sent every message sent and
+service request made. Assert what must hold."""
 
 from archlog.testgen.runtime import Event, Properties as Generated
 
@@ -117,13 +127,14 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     what = what.replace('"', "'").replace("\\", "/")
     properties = f"{name}_properties.py"
     ros2 = model.get("ros") == 2
-    types = sorted({*model["inputs"].values(), *model["outputs"].values()})
-    modules = sorted({t.split("/")[0] for t in types})
+    lifecycle = {LIFECYCLE} if model.get("lifecycle") else set()
+    types = sorted({*model["inputs"].values(), *model["outputs"].values(), *model.get("services", {}).values(), *lifecycle})
+    modules = sorted({(t.split("/")[0], _kind(t)) for t in types})
     imports = ROS2_IMPORTS.format(modules="\n".join(
-        f'{m}_msg = pytest.importorskip("{m}.msg", reason="the message package {m} is not installed")'
-        for m in modules)) if ros2 \
+        f'{m}_{kind} = pytest.importorskip("{m}.{kind}", reason="the interface package {m} is not installed")'
+        for m, kind in modules)) if ros2 \
         else ROS1_IMPORTS
-    classes = ", ".join(f'"{t}": {t.split("/")[0]}_msg.{t.split("/")[-1]}' for t in types)
+    classes = ", ".join(f'"{t}": {t.split("/")[0]}_{_kind(t)}.{t.split("/")[-1]}' for t in types)
     classes = f"\n    rclpy = rclpy\n    classes = {{{classes}}}" if ros2 else ""
     text = HEADER.format(what=what, properties=properties, model=pformat(model, width=110),
                          settings=pformat(settings.to_dict(), width=110), cls=cls, name=name,
@@ -133,6 +144,9 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     for topic, type_ in model["inputs"].items():
         if not model["specs"].get(type_, {}).get("missing"):
             text += RULE.format(type=type_, ident=hook_name(topic).removeprefix("on_"), topic=topic)
+    for service, type_ in model.get("services", {}).items():
+        if not model["specs"].get(type_, {}).get("missing"):
+            text += CALL.format(type=type_, ident=hook_name(service).removeprefix("on_"), service=service)
     text += FOOTER.format(cls=cls, examples=examples)
     if ros2:
         text += UNSTARTABLE
@@ -140,10 +154,16 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     written[0].write_text(text, encoding="utf-8")
     user = output / properties
     if not user.exists():
-        hooks = "".join(HOOK.format(hook=hook_name(t), topic=t, type=ty) for t, ty in model["outputs"].items())
+        watched = {**model["outputs"], **model.get("services", {})}
+        hooks = "".join(HOOK.format(hook=hook_name(t), topic=t, type=ty) for t, ty in watched.items())
         user.write_text(PROPERTIES.format(what=what, name=name, hooks=hooks), encoding="utf-8")
         written.append(user)
     return written
+
+
+def _kind(type_: str) -> str:
+    """The module of a ROS 2 interface type's class: `srv` for `pkg/srv/Name`, else `msg`."""
+    return "srv" if "/srv/" in type_ else "msg"
 
 
 def _undecided(model: dict[str, Any]) -> str:

@@ -1,8 +1,11 @@
 """What a generated test needs to know of the recovered configuration, as plain JSON-able data:
-the nodes under test, their open inputs and outputs with types, the recovered interface, the
-periodic outputs, the inputs each output requires and those it must follow (liveness.py), the parameters the nodes read, and the
-message definitions of the inputs' types (outputs are recorded by the bridge with the installed
-message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
+the nodes under test, their open inputs and outputs with types, the services they provide that no
+node of the configuration calls (open services: the test calls them), the recovered interface, the
+built-in ports of the nodes under test (not compared with the live graph), the lifecycle nodes
+(configured and activated after each start, as a deployment would), the periodic outputs, the inputs
+each output requires and those it must follow (liveness.py), the parameters the nodes read, and the
+message definitions of the inputs' types and of the services' requests (outputs are recorded by
+the bridge with the installed message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
 also holds how to start each node under test (package, executable, remaps, the configuration's
 parameters, its Python script or entry point), as a ROS 2 test starts them itself, and the QoS its
 publishers must offer."""
@@ -38,12 +41,21 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     unknown = sorted(set(chosen) - set(everyone))
     if unknown:
         raise ModelError(f"no node {', '.join(unknown)} in the configuration (nodes: {', '.join(everyone)})")
-    builtin = {r[0] for r in store.rows("infrastructure_port")}  # the client library's own ports: not under test
+    groups = {r[0]: str(r[1]) for r in store.rows("infrastructure_port")}
+    builtin = set(groups)  # the client library's own ports: not under test
+    own = {rel: {(str(n), str(name)) for p, n, name, _ty in store.rows(rel) if p in builtin and str(n) in chosen}
+           for rel in ("publisher", "subscriber", "service_server", "service_client")}
+    lifecycle = sorted({str(n) for p, n, _name, _ty in store.rows("service_server")
+                        if groups.get(p) == "lifecycle" and str(n) in chosen})
     ports = {rel: [(str(p), str(n), t, ty) for p, n, t, ty in store.rows(rel)
                    if not isinstance(t, Unknown) and t not in INFRA_TOPICS and p not in builtin]
              for rel in ("publisher", "subscriber")}
     published = {t for _p, _n, t, _ty in ports["publisher"]}
     subscribed = {t for _p, _n, t, _ty in ports["subscriber"]}
+    called = {str(s) for _p, _n, s, _ty in store.rows("service_client")}
+    services = {str(s): str(ty) for p, n, s, ty in store.rows("service_server")
+                if str(n) in chosen and p not in builtin and isinstance(s, str) and isinstance(ty, str)
+                and (nodes or str(s) not in called)}
     inputs = {str(t): str(ty) for _p, n, t, ty in ports["subscriber"]
               if n in chosen and (nodes or t not in published) and isinstance(ty, str)}
     outputs = {str(t): str(ty) for _p, n, t, ty in ports["publisher"]
@@ -52,12 +64,15 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     for pid, n, t, ty in ports["subscriber"]:
         if t in inputs and n in chosen:
             where.setdefault(str(ty), (store.location(pid) or ("", 0, 0))[:2])
+    for server, node, service, kind in store.rows("service_server"):
+        if service in services and node in chosen:
+            where.setdefault(str(kind), (store.location(str(server)) or ("", 0, 0))[:2])
     part = from_facts(store).restricted(set(chosen))
     interface = Architecture(frozenset(chosen), part.publishers, part.subscribers, part.services)
     periodic, requires, follow, undecided = _behavior(analysis, ctl, chosen, outputs, inputs)
     params = {str(name): (None if isinstance(default, Unknown) else str(default))
               for _p, n, name, default in store.rows("param_read") if str(n) in chosen and not isinstance(name, Unknown)}
-    ros = 2 if any("/msg/" in ty for ty in (*inputs.values(), *outputs.values())) else 1
+    ros = 2 if any("/msg/" in ty or "/srv/" in ty for ty in (*inputs.values(), *outputs.values(), *services.values())) else 1
     return {
         "ros": ros,
         "commands": _commands(analysis, chosen) if ros == 2 else [],
@@ -69,7 +84,10 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
         "isolated": bool(nodes),
         "inputs": dict(sorted(inputs.items())),
         "outputs": dict(sorted(outputs.items())),
+        "services": dict(sorted(services.items())),
         "interface": interface.to_json(),
+        "builtin": sorted([n, name] for ports in own.values() for n, name in ports),
+        "lifecycle": lifecycle,
         "periodic": periodic,
         "requires": requires,
         "follows": follow,
@@ -80,19 +98,30 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
 
 
 def _commands(analysis: Analysis, chosen: list[str]) -> list[dict[str, Any]]:
-    """How to start each node under test: package, executable, remaps, the configuration's parameters
-    of the node with their types (resolved names; those with unknown parts left out), and for a Python
-    executable of the workspace its script or console_scripts entry point (run without ros2cli)."""
+    """How to start each process of the nodes under test (one per launch entity: a program may hold
+    several nodes): its nodes, package, executable, remaps, the configuration's parameters of its nodes
+    with their types (resolved names; those with unknown parts left out), and for a Python executable
+    of the workspace its script or console_scripts entry point (run without ros2cli)."""
     store, known = analysis.store, (str, int, float)
     remaps: dict[str, list[list[str]]] = {}
     for _e, node, source, target in store.rows("remap"):
         if isinstance(source, str) and isinstance(target, str):
             remaps.setdefault(str(node), []).append([source, target])
     params = [(name, value) for name, value, _e in store.rows("param") if isinstance(name, str) and isinstance(value, known)]
-    return [{"name": str(node), "pkg": str(pkg), "exe": str(exe), "remaps": remaps.get(str(node), []),
-             "params": {name: value for name, value in params if name.startswith(f"{node}/")},
-             **_python_start(analysis, str(pkg), str(exe))}
-            for node, pkg, exe, _e in store.rows("node") if str(node) in chosen]
+    processes: dict[str, list[tuple[str, str, str]]] = {}  # launch entity -> its nodes (one process)
+    for node, pkg, exe, entity in store.rows("node"):
+        processes.setdefault(str(entity), []).append((str(node), str(pkg), str(exe)))
+    commands = []
+    for nodes in processes.values():
+        names = [n for n, _pkg, _exe in nodes]
+        if set(names) & set(chosen):
+            _name, pkg, exe = nodes[0]
+            commands.append({"name": names[0], "nodes": names, "pkg": pkg, "exe": exe,
+                             "remaps": [r for n in names for r in remaps.get(n, [])],
+                             "params": {name: value for name, value in params
+                                        if any(name.startswith(f"{n}/") for n in names)},
+                             **_python_start(analysis, pkg, exe)})
+    return commands
 
 
 def _python_start(analysis: Analysis, pkg: str, exe: str) -> dict[str, str]:

@@ -34,8 +34,9 @@ Specs = dict[str, dict]
 
 
 def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagnostics: DiagnosticSink) -> Specs:
-    """The definitions of `types` (each with the file and line of a port using it) and of every message
-    type nested in them; a type without a definition is a diagnostic there (its topic gets no strategy)."""
+    """The definitions of `types` (each with the file and line of a port using it; a service type's is
+    its request's) and of every message type nested in them; a type without a definition is a
+    diagnostic there (its topic gets no strategy)."""
     files = message_files(workspace)
     specs: Specs = {}
     todo = list(types.items())
@@ -46,8 +47,8 @@ def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagn
         if name in ROS2_BUILTIN:
             specs[name] = ROS2_BUILTIN[name]
             continue
-        kind_path = files.get(name.replace("/msg/", "/"))
-        if kind_path is None or kind_path[0] != "msg":
+        kind_path = files.get(name) or files.get(name.replace("/msg/", "/").replace("/srv/", "/"))
+        if kind_path is None or kind_path[0] not in ("msg", "srv"):
             diagnostics.add(*where, "testgen-message", f"no definition found for message type {name}")
             specs[name] = {"fields": [], "constants": {}, "missing": True}
             continue
@@ -59,7 +60,9 @@ def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagn
             specs[name] = {"fields": [], "constants": {}, "missing": True}
             continue
         shown = workspace.display(path)
-        specs[name] = parse_msg(text, name.split("/")[0], shown, diagnostics, ros2="/msg/" in name)
+        if kind_path[0] == "srv":  # a service's request: the part before the separator
+            text = re.split(r"^---\s*$", text, maxsplit=1, flags=re.MULTILINE)[0]
+        specs[name] = parse_msg(text, name.split("/")[0], shown, diagnostics, ros2="/msg/" in name or "/srv/" in name)
         todo += [(base, (shown, 1)) for _n, base, _a in specs[name]["fields"] if base not in BUILTIN]
     return specs
 

@@ -1,5 +1,5 @@
 """`archlog replay FILE`: run a failing example's messages again against the configuration: the
-same parameters, messages (after mutation) and pauses, then the same properties."""
+same parameters, messages (after mutation), service calls and pauses, then the same properties."""
 
 from __future__ import annotations
 
@@ -27,6 +27,8 @@ def replay_file(path: Path) -> bool:
                 machine.start(action["params"])
             elif action["op"] == "publish":
                 machine._send(action["topic"], action["msg"])
+            elif action["op"] == "call":
+                machine.call(action["service"], action["request"])
             elif action["op"] == "spin":
                 time.sleep(action["seconds"])
             machine.properties_hold()

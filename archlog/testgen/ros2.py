@@ -1,6 +1,6 @@
 """The ROS 2 side of a generated test: the nodes under test started as processes (a Python node's
 entry point or script, else `ros2 run`; name, namespace, remaps and typed parameters as recovered) on
-a private DDS domain, fed and
+a private DDS domain, fed, called and
 watched by an rclpy node inside the test process, with the message classes the generated module
 imports. `Ros2Session` has the interface of runtime.Session, so the state machine, its steps and
 its properties are the same for ROS 1 and ROS 2.
@@ -11,13 +11,15 @@ hands it to the machine with the message classes.
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import importlib
+import importlib.util
 import json
 import os
+import pty
 import queue
 import shutil
-import signal
 import subprocess
 import sys
 import tempfile
@@ -28,10 +30,12 @@ from typing import Any
 
 from archlog import observe
 from archlog.testgen import processes
-from archlog.testgen.runtime import ArchitectureMachine
+from archlog.testgen.runtime import ArchitectureMachine, write_stats
 
 _POLL = 0.05
 MAX_DOMAIN = 232
+LIFECYCLE = "lifecycle_msgs/srv/ChangeState"  # the service a lifecycle node is configured and activated by
+TRANSITIONS = (1, 3)  # configure, activate (lifecycle_msgs/msg/Transition)
 
 
 def message_class(type_: str) -> type:
@@ -81,14 +85,20 @@ def to_json(value: Any) -> Any:
     return value
 
 
-def run_command(node: dict[str, Any], params: dict[str, Any]) -> list[str] | None:
+def run_command(node: dict[str, Any], params: dict[str, Any], coverage: Path | None = None) -> list[str] | None:
     """How to start a node under test without ros2cli: its console_scripts entry point or script under
-    this Python, else `ros2 run` where ros2 is installed (None: neither); then its name, namespace,
-    remaps, and parameters with their types (the configuration's, then the drawn ones, given as
-    /node/name and set as the node's own)."""
+    this Python (measured by coverage.py into the folder `coverage`, if given), else `ros2 run` where
+    ros2 is installed (None: neither); then its name, namespace, remaps, and parameters with their
+    types (the configuration's, then the drawn ones, given as /node/name and set as the node's own)."""
+    measure = "" if coverage is None else (
+        f"import atexit, coverage; c = coverage.Coverage(data_file={str(coverage / 'data')!r}, data_suffix=True, "
+        f"source=[{str(Path(node_file(node)).parent)!r}]); c.start(); atexit.register(lambda: (c.stop(), c.save())); ")
     if node.get("entry"):
         module, _, function = node["entry"].partition(":")
-        command = [sys.executable, "-c", f"import sys; from {module} import {function} as main; sys.exit(main())"]
+        command = [sys.executable, "-c", f"{measure}import sys; from {module} import {function} as main; sys.exit(main())"]
+    elif node.get("script") and measure:
+        command = [sys.executable, "-c", f"{measure}import runpy, sys; sys.argv[0] = {node['script']!r}; "
+                   f"runpy.run_path({node['script']!r}, run_name='__main__')"]
     elif node.get("script"):
         command = [sys.executable, node["script"]]
     elif shutil.which("ros2"):
@@ -96,13 +106,41 @@ def run_command(node: dict[str, Any], params: dict[str, Any]) -> list[str] | Non
     else:
         return None
     namespace, _, base = node["name"].rpartition("/")
-    command += ["--ros-args", "-r", f"__node:={base}", "-r", f"__ns:={namespace or '/'}"]
+    nodes = node.get("nodes", [node["name"]])
+    command += ["--ros-args"]
+    if len(nodes) == 1:  # `__node` would name every node of a process holding several
+        command += ["-r", f"__node:={base}"]
+    command += ["-r", f"__ns:={namespace or '/'}"]
     for source, target in node["remaps"]:
         command += ["-r", f"{source}:={target}"]
     for name, value in {**node["params"], **params}.items():
-        if name.startswith(node["name"] + "/"):
-            command += ["-p", f"{name[len(node['name']) + 1:].replace('/', '.')}:={_typed(value)}"]
+        owner = next((n for n in nodes if name.startswith(n + "/")), None)
+        if owner is not None:
+            command += ["-p", f"{name[len(owner) + 1:].replace('/', '.')}:={_typed(value)}"]
     return command
+
+
+def node_file(node: dict[str, Any]) -> str:
+    """The Python file of a node under test: its script, or its entry point's module."""
+    if node.get("script"):
+        return str(node["script"])
+    module = Path(node["root"], *node["entry"].partition(":")[0].split("."))
+    return str(module / "__init__.py" if module.is_dir() else module.with_suffix(".py"))
+
+
+def line_coverage(folder: Path, commands: list[dict[str, Any]]) -> dict[str, tuple[int, int]]:
+    """Per Python node under test, the lines of its file run by any of its processes (coverage.py data
+    in `folder`) and the lines of the file: node -> (covered, statements)."""
+    import coverage
+
+    data = coverage.Coverage(data_file=str(folder / "data"))
+    data.combine([str(folder)], keep=True)
+    found: dict[str, tuple[int, int]] = {}
+    for node in commands:
+        if node.get("entry") or node.get("script"):
+            _file, statements, _excluded, missing, _text = data.analysis2(node_file(node))
+            found[node["name"]] = (len(statements) - len(missing), len(statements))
+    return found
 
 
 def _typed(value: Any) -> str:
@@ -154,13 +192,18 @@ class Ros2Session:
         self.model, self.rclpy, self.classes = model, rclpy, classes
         self.tmp = Path(tempfile.mkdtemp(prefix="archlog-testgen-"))
         self.events: queue.Queue = queue.Queue()
-        self.procs: dict[str, subprocess.Popen] = {}  # node under test -> its process
+        self.procs: dict[str, subprocess.Popen] = {}  # node (of a process started) -> its process
         self.launched_params: dict[str, Any] | None = None
         self.launches = 0
         self.domain = private_domain()
         self.env = dict(os.environ, ROS_DOMAIN_ID=str(self.domain), ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST",
                         ROS_HOME=str(self.tmp), ROS_LOG_DIR=str(self.tmp / "log"), PYTHONUNBUFFERED="1")
         self.env.pop("ROS_LOCALHOST_ONLY", None)  # deprecated; it would override the discovery range
+        # the nodes' standard input: a pseudo-terminal, as `ros2 run` in a shell gives them (keyboard
+        # teleops and prompts wait on it; nothing is typed), open until the session closes
+        self.terminal = pty.openpty()
+        measured = importlib.util.find_spec("coverage") is not None and os.environ.get("ARCHLOG_TESTGEN_COVERAGE") != "0"
+        self.coverage = self.tmp / "coverage" if measured else None
 
     @property
     def log(self) -> Path:
@@ -178,6 +221,8 @@ class Ros2Session:
         for topic, type_ in outputs.items():
             self.node.create_subscription(self.classes[type_], topic, lambda m, t=topic: self.events.put(
                 {"ev": "msg", "topic": t, "t": time.time(), "msg": to_json(m)}), watching_qos(rclpy))
+        self.clients = {name: self.node.create_client(self.classes[type_], name)
+                        for name, type_ in self.model.get("services", {}).items()}
         self.executor = rclpy.executors.SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         threading.Thread(target=self.executor.spin, daemon=True).start()
@@ -190,15 +235,37 @@ class Ros2Session:
                 self.publishers[topic].publish(to_message(command["msg"], self.classes[self.model["inputs"][topic]], now))
             except (AssertionError, TypeError, ValueError) as exc:  # a value the message class refuses
                 self.events.put({"ev": "error", "topic": topic, "error": f"{type(exc).__name__}: {exc}"})
+        elif command["op"] == "call":
+            self._call(command)
         elif command["op"] == "wait":
             end = time.monotonic() + command["timeout"]
             while (missing := self._unconnected()) and time.monotonic() < end:
                 time.sleep(_POLL)
             self.events.put({"ev": "ready", "missing": missing})
 
+    def _call(self, command: dict[str, Any]) -> None:
+        """Call a service of the nodes under test; its response (or why the request could not be made)
+        is put on `events` when it comes."""
+        service, number = command["service"], command["id"]
+        client = self.clients[service]
+
+        def answered(future: Any) -> None:
+            self.events.put({"ev": "response", "service": service, "id": number, "t": time.time(),
+                             "response": to_json(future.result())})
+
+        try:
+            now = self.node.get_clock().now().nanoseconds / 1e9
+            request = to_message(command["request"], client.srv_type.Request, now)
+        except (AssertionError, TypeError, ValueError) as exc:  # a value the request class refuses
+            self.events.put({"ev": "response", "service": service, "id": number, "t": time.time(),
+                             "error": f"{type(exc).__name__}: {exc}"})
+            return
+        client.call_async(request).add_done_callback(answered)
+
     def _unconnected(self) -> list[str]:
         return sorted([t for t, p in self.publishers.items() if p.get_subscription_count() == 0]
-                      + [t for t in self.model["outputs"] if self.node.count_publishers(t) == 0])
+                      + [t for t in self.model["outputs"] if self.node.count_publishers(t) == 0]
+                      + [s for s, c in self.clients.items() if not c.service_is_ready()])
 
     def launch(self, params: dict[str, Any], timeout: float = 30.0) -> None:
         """Start the nodes under test with `params`; wait until they are in the graph and connected."""
@@ -207,12 +274,13 @@ class Ros2Session:
         self.launched_params = params
         with open(self.log, "ab") as out:
             for node in self.model["commands"]:
-                command = run_command(node, params)
+                command = run_command(node, params, self.coverage)
                 if command is None:
                     raise RuntimeError(unstartable(self.model))
                 env = dict(self.env, PYTHONPATH=os.pathsep.join(p for p in (node.get("root"), self.env.get("PYTHONPATH")) if p))
-                self.procs[node["name"]] = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT,
-                                                            stdin=subprocess.DEVNULL, start_new_session=True, cwd=self.tmp)
+                proc = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT,
+                                        stdin=self.terminal[1], start_new_session=True, cwd=self.tmp)
+                self.procs.update(dict.fromkeys(node.get("nodes", [node["name"]]), proc))
         deadline = time.monotonic() + timeout
         while not all(self.node_alive(n) for n in self.model["nodes"]):
             if any(p.poll() is not None for p in self.procs.values()):
@@ -220,45 +288,87 @@ class Ros2Session:
             if time.monotonic() > deadline:
                 raise RuntimeError(f"the nodes under test did not come up:\n{processes.tail(self.log)}")
             time.sleep(_POLL)
+        while self._twice() and time.monotonic() < deadline:  # a stale namesake from the last example
+            time.sleep(_POLL)
+        for node in self.model.get("lifecycle", []):
+            self._activate(node, deadline)
         self.send({"op": "wait", "timeout": 5.0})
 
-    def stop_nodes(self) -> None:
-        for proc in self.procs.values():
-            with contextlib.suppress(ProcessLookupError):
-                os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
+    def _activate(self, node: str, deadline: float) -> None:
+        """Configure and activate a lifecycle node (its ports made in on_configure then exist); a
+        transition refused or unanswered is left to the properties (the node stays inactive)."""
+        cls: Any = self.classes[LIFECYCLE]
+        client = self.node.create_client(cls, f"{node}/change_state")
+        try:
+            if not client.wait_for_service(timeout_sec=max(deadline - time.monotonic(), 0.1)):
+                return
+            for transition in TRANSITIONS:
+                request = cls.Request()
+                request.transition.id = transition
+                future = client.call_async(request)
+                while not future.done() and time.monotonic() < deadline:
+                    time.sleep(_POLL)
+                if not future.done() or not future.result().success:
+                    return
+        finally:
+            self.node.destroy_client(client)
+
+    def stop_nodes(self, grace: float = 3.0) -> None:
+        """Stop the nodes under test cleanly (SIGINT, then SIGKILL after `grace` seconds) and wait, at
+        most three times `grace` seconds more, until they left the graph: a node killed outright (or
+        slow to leave on a loaded machine) stays in the other participants' discovery data until its
+        lease ends, and the next example's nodes (same names) would look up at once, their requests,
+        messages and graph queries going to the dead ones."""
+        processes.stop_together(list({id(p): p for p in self.procs.values()}.values()), grace)
+        names = set(self.procs)
         self.procs = {}
+        end = time.monotonic() + 3 * grace
+        while names and names & set(self._names()) and time.monotonic() < end:
+            time.sleep(_POLL)
 
     def node_alive(self, node: str) -> bool:
         """The node is in the graph and its process runs."""
         proc = self.procs.get(node)
         return proc is not None and proc.poll() is None and node in self._names()
 
+    def _twice(self) -> list[str]:
+        """The nodes under test the graph lists more than once."""
+        listed = [(ns.rstrip("/") + "/" + name) for name, ns in self.node.get_node_names_and_namespaces()]
+        return [n for n in self.model["nodes"] if listed.count(n) > 1]
+
     def _names(self) -> dict[str, tuple[str, str]]:
         return {(ns.rstrip("/") + "/" + name): (name, ns) for name, ns in self.node.get_node_names_and_namespaces()}
 
     def graph(self) -> observe.Architecture:
         """The live graph of the nodes under test, minus ROS 2's infrastructure (/rosout,
-        /parameter_events, the parameter services)."""
+        /parameter_events, the parameter services) and the built-in ports the model lists (left out of
+        the recovered interface too)."""
         found: dict[str, set] = {"publishers": set(), "subscribers": set(), "services": set()}
+        builtin = {(node, name) for node, name in self.model.get("builtin", [])}
         names = {n: v for n, v in self._names().items() if n in self.model["nodes"]}
         for full, (name, ns) in names.items():
             for kind, read in (("publishers", self.node.get_publisher_names_and_types_by_node),
                                ("subscribers", self.node.get_subscriber_names_and_types_by_node)):
-                found[kind] |= {(full, t, ty) for t, types in read(name, ns) if t not in observe.ROS2_INFRA_TOPICS
-                                for ty in types}
+                found[kind] |= {(full, t, ty) for t, types in read(name, ns)
+                                if t not in observe.ROS2_INFRA_TOPICS and (full, t) not in builtin for ty in types}
             parameters = {f"{full}/{x}" for x in observe.ROS2_PARAMETER_SERVICES}
             found["services"] |= {(full, s) for s, _types in self.node.get_service_names_and_types_by_node(name, ns)
-                                  if s not in parameters}
+                                  if s not in parameters and (full, s) not in builtin}
         return observe.Architecture(frozenset(names), frozenset(found["publishers"]), frozenset(found["subscribers"]),
                                     frozenset(found["services"]))
 
     def close(self) -> None:
+        atexit.unregister(self.close)
         self.stop_nodes()
+        covered = line_coverage(self.coverage, self.model["commands"]) if self.coverage and self.coverage.is_dir() else {}
+        write_stats(self.launches, covered)
         if hasattr(self, "executor"):
             self.executor.shutdown()
             self.node.destroy_node()
             self.context.try_shutdown()
+        for fd in self.terminal:
+            with contextlib.suppress(OSError):
+                os.close(fd)
         shutil.rmtree(self.tmp, ignore_errors=True)
 
 

@@ -13,7 +13,9 @@ from __future__ import annotations
 
 import atexit
 import contextlib
+import dataclasses
 import importlib.util
+import itertools
 import json
 import math
 import os
@@ -143,7 +145,7 @@ class Session:
                 time.sleep(0.1)
         spec = self.tmp / "bridge.json"
         spec.write_text(json.dumps({"inputs": self.model["inputs"], "outputs": self.model["outputs"],
-                                    "nodes": self.model["nodes"]}))
+                                    "services": self.model.get("services", {}), "nodes": self.model["nodes"]}))
         with open(self.tmp / "bridge.log", "ab") as log:
             self.bridge = subprocess.Popen([str(processes.SYSTEM_PYTHON), str(DEBIAN / "bridge.py"), str(spec)],
                                            env=self.env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=log,
@@ -164,8 +166,7 @@ class Session:
 
     def close(self) -> None:
         atexit.unregister(self.close)
-        if os.environ.get("ARCHLOG_TESTGEN_STATS"):  # for benchmarks: how many examples ran
-            Path(os.environ["ARCHLOG_TESTGEN_STATS"]).write_text(json.dumps({"launches": self.launches}))
+        write_stats(self.launches)
         with contextlib.suppress(OSError, xmlrpc.client.Error):
             self.stop_nodes()
         processes.stop_together([self.launcher, self.bridge, self.core], 2.0)
@@ -270,6 +271,7 @@ class System(Protocol):
 
 
 _SESSIONS: dict[str, System] = {}
+_CALLS = itertools.count()  # a number for each service call of this process, to match its response
 
 
 def shared_session(model: dict[str, Any], create: Callable[[], System]) -> System:
@@ -283,6 +285,31 @@ def shared_session(model: dict[str, Any], create: Callable[[], System]) -> Syste
     return _SESSIONS[key]
 
 
+COVERAGE: dict[str, tuple[int, int]] = {}  # node under test -> lines run, lines of its file (sessions closed)
+
+
+def write_stats(launches: int, covered: dict[str, tuple[int, int]] | None = None) -> None:
+    """Keep the line coverage of the nodes under test for the report, and for benchmarks write how
+    many examples ran (launches of the nodes under test) and the coverage in the file
+    ARCHLOG_TESTGEN_STATS names, if set."""
+    COVERAGE.update(covered or {})
+    if os.environ.get("ARCHLOG_TESTGEN_STATS"):
+        Path(os.environ["ARCHLOG_TESTGEN_STATS"]).write_text(json.dumps({"launches": launches,
+                                                                           "coverage": covered or {}}))
+
+
+def report_coverage(config: Any) -> None:
+    """Write the line coverage of the Python nodes under test into pytest's terminal report."""
+    terminal = config.pluginmanager.get_plugin("terminalreporter")
+    capture = config.pluginmanager.get_plugin("capturemanager")
+    with capture.global_and_fixture_disabled() if capture is not None else contextlib.nullcontext():
+        for node, (run_lines, lines) in sorted(COVERAGE.items()):
+            if terminal is not None and lines:
+                terminal.write_line(f"\narchlog testgen: {node} ran {run_lines} of {lines} lines "
+                                    f"({100 * run_lines / lines:.0f}%) of its file under the generated test")
+    COVERAGE.clear()
+
+
 def close_sessions() -> None:
     """Stop every session of this process (a test module's fixture calls it)."""
     while _SESSIONS:
@@ -291,7 +318,8 @@ def close_sessions() -> None:
 
 class Properties:
     """The user's properties: hooks called with every message received on a watched output
-    (`on_<topic>`, the topic's name with non-word characters as `_`) and after every step
+    (`on_<topic>`, the topic's name with non-word characters as `_`), with every response of an open
+    service (`on_<service>`, the Event's msg the response) and after every step
     (`invariant`). `history` holds every event received so far in the example, `sent` every
     message sent; assert in the hooks."""
 
@@ -319,7 +347,8 @@ def hook_name(topic: str) -> str:
 
 
 class ArchitectureMachine(RuleBasedStateMachine):
-    """The state machine a generated module extends with one `publish_<topic>` rule per open input.
+    """The state machine a generated module extends with one `publish_<topic>` rule per open input
+    and one `call_<service>` rule per open service.
 
     Steps: publish a drawn message; the temporal mutations (drop one message of a topic's
     sequence, resend the last one, send two in swapped order, a burst, a stale stamp); spin. After
@@ -350,6 +379,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
         self.started = 0.0
         self.failure: str | None = None
         self.periodic: dict[str, float] = {}  # the periodic outputs seen at their period after launch
+        self.answered: set[int] = set()  # the calls (their action's index) that got a response
 
     def new_session(self) -> System:
         return Session(self.model)
@@ -378,6 +408,28 @@ class ArchitectureMachine(RuleBasedStateMachine):
     def publish(self, topic: str, msg: Any) -> None:
         """Send `msg` on `topic` as the next of the topic's sequence."""
         self._send(topic, fill_counters(msg, self._next(topic)))
+
+    def call(self, service: str, request: Any) -> None:
+        """Call `service` with `request` and wait for its response (at most the response bound): a
+        response is recorded as an Event of the service; none within the bound, while the nodes under
+        test live, fails the example."""
+        if self.failure is not None:
+            return
+        now = time.time()
+        number = next(_CALLS)
+        self.session.send({"op": "call", "service": service, "request": request, "id": number,
+                           "timeout": self.settings.response_bound})
+        self._act({"op": "call", "service": service, "request": request}, now)
+        self.properties.sent.append({"service": service, "request": request})
+        end = now + self.settings.response_bound
+        while self.failure is None and number not in self.answered and time.time() < end:
+            time.sleep(_POLL)
+            self._check(final=False)
+        if self.failure is None and number not in self.answered:
+            self._check(final=False)  # a node that died meanwhile is the failure, not the silence
+            if self.failure is None and number not in self.answered:
+                self.failure = (f"{service} gave no response within {self.settings.response_bound:.1f} s "
+                                f"(after step {len(self.actions)})")
 
     @precondition(lambda self: bool(self.model["inputs"]))
     @rule(data=st.data())
@@ -545,13 +597,36 @@ def check_properties(machine: ArchitectureMachine, final: bool) -> None:
                 raise Violation(f"{topic} requires {', '.join(inputs)}, which was published, but nothing came "
                                 f"on {topic} within {bound:.1f} s", max(sent) + bound)
     if settings.properties["interface"] and final:
-        want = observe.Architecture.from_json(model["interface"])
-        differences = {kind: row for kind, row in observe.compare(want, session.graph()).items()
-                       if row["only_recovered"] or row["only_observed"]}
+        differences = _interface_differences(session, observe.Architecture.from_json(model["interface"]),
+                                             settings.response_bound)
         assert not differences, "the live interface differs from the recovered one: " + "; ".join(
             f"{kind}: only recovered {row['only_recovered']}, only observed {row['only_observed']}"
             for kind, row in differences.items())
     machine.properties.invariant()
+
+
+def _interface_differences(session: System, want: observe.Architecture, bound: float) -> dict[str, dict]:
+    """The differences between the recovered interface and the live graph that last `bound` seconds: a
+    DDS graph is eventually consistent (a restarted node's endpoints are discovered one by one)."""
+    end = time.monotonic() + bound
+    while True:
+        seen = session.graph()
+        differences = {kind: row for kind, row in observe.compare(_typed_as_seen(want, seen), seen).items()
+                       if row["only_recovered"] or row["only_observed"]}
+        if not differences or time.monotonic() >= end:
+            return differences
+        time.sleep(_POLL * 2)
+
+
+def _typed_as_seen(want: observe.Architecture, seen: observe.Architecture) -> observe.Architecture:
+    """The recovered interface with each port of unknown type ("") given the type seen live on the
+    same node and topic (the code chose its type at run time): an unknown type is not a difference."""
+    def typed(ports: frozenset[tuple[str, str, str]], live: frozenset[tuple[str, str, str]]) -> frozenset:
+        types = {(node, topic): type_ for node, topic, type_ in live}
+        return frozenset((node, topic, type_ or types.get((node, topic), "")) for node, topic, type_ in ports)
+
+    return dataclasses.replace(want, publishers=typed(want.publishers, seen.publishers),
+                               subscribers=typed(want.subscribers, seen.subscribers))
 
 
 def _record(machine: ArchitectureMachine) -> None:
@@ -561,7 +636,12 @@ def _record(machine: ArchitectureMachine) -> None:
             raise AssertionError(f"the bridge could not publish on {event['topic']}: {event['error']}")
         if event["ev"] == "log" and event["t"] >= machine.started:
             check_log(machine.settings, event)
-        if event["ev"] != "msg" or event["t"] < machine.started:
+        if event["ev"] == "response":
+            machine.answered.add(event["id"])
+            if "error" in event:  # the call failed in the test's client (a request the class refuses)
+                raise AssertionError(f"the call of {event['service']} failed: {event['error']}")
+            event = {**event, "topic": event["service"], "msg": event["response"]}
+        elif event["ev"] != "msg" or event["t"] < machine.started:
             continue
         received = Event(event["topic"], event["t"], event["msg"])
         machine.properties.history.append(received)
@@ -578,17 +658,19 @@ def _record(machine: ArchitectureMachine) -> None:
 
 def check_log(settings: Settings, event: dict[str, Any]) -> None:
     """An ERROR a node under test logged with a Python traceback fails the `callbacks` property:
-    rospy caught an exception raised in one of the node's callbacks ("bad callback"), logged it to
-    /rosout, and the node lives on (no other property would see it)."""
+    rospy caught an exception raised in one of the node's callbacks ("bad callback") or service
+    handlers, logged it to /rosout, and the node lives on (no other property would see it)."""
     text = event["text"]
     if settings.properties["callbacks"] and "Traceback (most recent call last)" in text:
-        last = text.strip().splitlines()[-1]
+        # a service handler's traceback is logged as the repr of its list of lines
+        lines = [line.strip(" '\"[],") for line in text.replace("\\n", "\n").splitlines()]
+        last = next(line for line in reversed(lines) if line)
         raise Violation(f"{event['node']} raised in a callback: {last}", event["t"])
 
 
 def _check_requires(machine: ArchitectureMachine, event: Event) -> None:
     """An output that requires an input must be silent until the input was published."""
-    if not machine.settings.properties["requires"]:
+    if not machine.settings.properties["requires"] or event.topic in machine.model.get("services", {}):
         return
     for required in machine.model["requires"].get(event.topic, []):
         sent = machine.first_sent.get(required)

@@ -32,8 +32,8 @@ class Outcome:
     output: str
 
     def messages(self) -> int:
-        """Input messages in the replay (what the shrunk failure sends)."""
-        return sum(a["op"] == "publish" for a in (self.replay or {}).get("actions", []))
+        """Input messages and service calls in the replay (what the shrunk failure sends)."""
+        return sum(a["op"] in ("publish", "call") for a in (self.replay or {}).get("actions", []))
 
 
 def systems() -> list[Path]:

@@ -21,6 +21,7 @@ from archlog.diagnostics import DiagnosticSink
 from archlog.extract.builtin_ports import builtin
 from archlog.extract.cpp.cache import ResultCache, key
 from archlog.extract.python.behavior.triggers import recover_behavior
+from archlog.extract.python.callback_groups import standard_group
 from archlog.extract.python.fold import Element, ValueFolder, parameters
 from archlog.extract.python.imports import Module, imported_calls, package_modules
 from archlog.extract.python.index import Function, arg
@@ -492,7 +493,9 @@ class NodeReader(ValueFolder):
                 self.add("param_read", call, full, "", self.value(value) if value is not None else None, handle="~",
                          param=self.params.declaration(call, value, descriptor))
         elif method == "create_timer":
-            self.add("timer", call, self.value(arg(call, 0, "timer_period_sec")), "")
+            period = self.value(arg(call, 0, "timer_period_sec")) if standard_group(arg(call, 2, "callback_group"), self.tree) \
+                else Unknown("the period of a timer in a callback group of the program's own", self.file, call.lineno)
+            self.add("timer", call, period, "")
 
     def queue(self, call: ast.Call, func: str) -> Value | None:
         """A rospy queue_size: a number, 'unbounded' (None; a Subscriber's default), or 'unset'."""

@@ -3,15 +3,21 @@
 
     bridge.py SPEC.json
 
-SPEC: {"inputs": {topic: type}, "outputs": {topic: type}, "nodes": [nodes under test]}. Reads JSON
-lines on stdin:
+SPEC: {"inputs": {topic: type}, "outputs": {topic: type}, "services": {service: type}, "nodes": [nodes
+under test]}. Reads JSON lines on stdin:
 
     {"op": "publish", "topic": T, "msg": {...}}   publish a message given as a dict; a
                                                    {"now": offset} time is now + offset seconds
+    {"op": "call", "service": S, "request": {...},  call a service (in a thread of its own); answer
+     "id": N, "timeout": S}                        {"ev": "response", "service": S, "id": N, "t": ...,
+                                                   "response": {...}} or, when the call failed, the same
+                                                   with "error" instead of "response" (none after the
+                                                   timeout)
     {"op": "wait", "timeout": S}                   answer {"ev": "ready", "missing": [...]} once every
                                                    input has a subscriber and every output a publisher
-                                                   connected, and every node under test's /rosout (or after
-                                                   S seconds, naming the topics and nodes without)
+                                                   connected, every service is registered, and every node
+                                                   under test's /rosout (or after S seconds, naming the
+                                                   topics, services and nodes without)
 
 and writes JSON lines on stdout: {"ev": "msg", "topic": T, "t": wall time, "msg": {...}} for every
 message received on an output ({"ev": "error", ...} for a message that could not be published), and
@@ -76,6 +82,27 @@ def to_json(value):
     return value
 
 
+def call(proxy, service, request, number, timeout):
+    """Call `service` through `proxy` and emit its response or why it failed."""
+    try:
+        proxy.wait_for_service(timeout)
+        emit({"ev": "response", "service": service, "id": number, "t": time.time(), "response": to_json(proxy(request))})
+    except Exception as exc:  # the node died, refused the request or is gone: the test's properties say which
+        emit({"ev": "response", "service": service, "id": number, "t": time.time(),
+              "error": f"{type(exc).__name__}: {exc}"})
+
+
+def unregistered(master, services):
+    """The services not registered on the master yet."""
+    missing = []
+    for service in sorted(services):
+        try:
+            master.lookupService(service)
+        except (rosgraph.MasterError, OSError):
+            missing.append(service)
+    return missing
+
+
 def unheard(master, rosout, nodes):
     """The nodes under test whose /rosout is not connected to the bridge yet."""
     connected = {c.endpoint_id for c in rosout.impl.connections}
@@ -101,6 +128,8 @@ def main(spec_path):
     nodes = set(spec["nodes"])
     rosout = rospy.Subscriber("/rosout", Log, lambda m: m.level >= Log.ERROR and m.name in nodes and emit(
         {"ev": "log", "node": m.name, "t": m.header.stamp.to_sec() or time.time(), "text": m.msg}), queue_size=100)
+    services = spec.get("services", {})
+    proxies = {s: rospy.ServiceProxy(s, roslib.message.get_service_class(ty)) for s, ty in services.items()}
     master = rosgraph.Master(rospy.get_name())
     for line in sys.stdin:
         command = json.loads(line)
@@ -110,12 +139,22 @@ def main(spec_path):
                 publishers[topic].publish(to_ros(command["msg"], spec["inputs"][topic], classes[topic]))
             except Exception as exc:  # a value the message class refuses: the test reports it
                 emit({"ev": "error", "topic": topic, "error": f"{type(exc).__name__}: {exc}"})
+        elif command["op"] == "call":
+            service = command["service"]
+            try:
+                request = to_ros(command["request"], services[service], proxies[service].request_class)
+            except Exception as exc:  # a value the request class refuses: the test reports it
+                emit({"ev": "response", "service": service, "id": command["id"], "t": time.time(),
+                      "error": f"{type(exc).__name__}: {exc}"})
+                continue
+            threading.Thread(target=call, args=(proxies[service], service, request, command["id"], command["timeout"]),
+                             daemon=True).start()
         elif command["op"] == "wait":
             end = time.monotonic() + command["timeout"]
             while True:
                 missing = sorted([t for t, p in publishers.items() if p.get_num_connections() == 0]
                                  + [s.name for s in subscribers if s.get_num_connections() == 0]
-                                 + unheard(master, rosout, nodes))
+                                 + unregistered(master, services) + unheard(master, rosout, nodes))
                 if not missing or time.monotonic() > end:
                     break
                 time.sleep(0.02)

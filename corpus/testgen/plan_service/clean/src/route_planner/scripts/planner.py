@@ -1,0 +1,24 @@
+#!/usr/bin/env python3
+"""Answers plan_route with a straight route from start to goal, one waypoint per tolerance step."""
+import math
+
+import rospy
+from nav_msgs.srv import GetPlan, GetPlanResponse
+
+MAX_WAYPOINTS = 10
+
+
+def plan(request):
+    response = GetPlanResponse()
+    response.plan.header = request.goal.header
+    if not (request.tolerance > 0 and math.isfinite(request.tolerance)):
+        return response  # no plan: the tolerance is not a positive length
+    waypoints = min(int(1.0 / request.tolerance), MAX_WAYPOINTS)
+    response.plan.poses = [request.start] * waypoints + [request.goal]
+    return response
+
+
+if __name__ == "__main__":
+    rospy.init_node("planner")
+    rospy.Service("plan_route", GetPlan, plan)
+    rospy.spin()
