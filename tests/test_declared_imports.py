@@ -38,8 +38,9 @@ def _names(requirements: list[str]) -> set[str]:
     return {_normal(re.match(r"[A-Za-z0-9._-]+", r.strip()).group()) for r in requirements}
 
 
-# archlog modules that may import the `ros2` extra (rclpy), lazily: archlog imports without it
-ROS2_OPTIONAL = {"archlog/observe_ros2.py"}
+# archlog modules that may import an extra, lazily (archlog imports without it): the `ros2` extra
+# (rclpy), the `coverage` extra (line coverage of the nodes under a generated test)
+OPTIONAL = {"archlog/observe_ros2.py": "ros2", "archlog/testgen/ros2.py": "coverage"}
 
 
 def declared() -> tuple[set[str], set[str]]:
@@ -47,11 +48,11 @@ def declared() -> tuple[set[str], set[str]]:
     `ros2` extra too (.ci/run installs both)."""
     project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
     extras = project["optional-dependencies"]
-    return _names(project["dependencies"]), _names(extras["test"]) | ros2_extra()
+    return _names(project["dependencies"]), _names(extras["test"]) | extra()
 
 
-def ros2_extra() -> set[str]:
-    return _names(tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]["ros2"])
+def extra(name: str = "ros2") -> set[str]:
+    return _names(tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"][name])
 
 
 def providers() -> dict[str, set[str]]:
@@ -93,10 +94,10 @@ def test_debian_python_scripts_exist() -> None:
 def test_runtime_imports_are_dependencies() -> None:
     runtime, _test = declared()
     files = _files("archlog")
-    assert undeclared([f for f in files if f.relative_to(ROOT).as_posix() not in ROS2_OPTIONAL], runtime,
+    assert undeclared([f for f in files if f.relative_to(ROOT).as_posix() not in OPTIONAL], runtime,
                       providers()) == []
-    optional = [ROOT / f for f in sorted(ROS2_OPTIONAL)]
-    assert undeclared(optional, runtime | ros2_extra(), providers()) == []
+    for file, name in sorted(OPTIONAL.items()):
+        assert undeclared([ROOT / file], runtime | extra(name), providers()) == []
 
 
 def test_test_and_bench_imports_are_declared() -> None:
