@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.cpp.rclcpp.parameters import cpp_param_type
 from archlog.extract.python.node import extract_python
 from archlog.extract.summary import NodeSummary, ParamSpec
 from archlog.facts.parameters import value_type
@@ -87,3 +88,13 @@ if rospy.has_param("~d"):
 def test_value_types() -> None:
     assert [value_type(v) for v in (True, 3, 0.5, "x", [1, 2], [1.0, 2], [], {"a": 1}, ["a", "b"])] == \
         ["bool", "integer", "double", "string", "integer_array", "", "", "", "string_array"]
+
+
+@pytest.mark.parametrize(("spelling", "declared"), [
+    ("std::basic_string<char>", "string"), ("const char *", "string"), ("long", "integer"), ("float", "double"),
+    ("std::vector<std::basic_string<char>>", "string_array"),  # a vector of strings is no string (turtlebot4's menu.entries)
+    ("std::vector<std::__cxx11::basic_string<char>, std::allocator<std::__cxx11::basic_string<char>>>", "string_array"),
+    ("std::vector<long>", "integer_array"), ("std::vector<unsigned char>", "byte_array"),
+    ("std::vector<std::vector<double>>", ""), ("std::map<int, int>", "")])
+def test_the_parameter_type_a_cpp_default_declares(spelling: str, declared: str) -> None:
+    assert cpp_param_type(spelling) == declared

@@ -28,11 +28,12 @@ def cpp_param_type(spelling: str) -> str:
         return "integer"
     if bare in ("double", "float"):
         return "double"
+    if bare.startswith("std::vector<"):  # before the string test: a vector of strings spells basic_string<char too
+        element = bare[len("std::vector<"):].split(",", 1)[0].rstrip(">").strip()
+        nested = element.startswith("std::vector<")
+        return "" if nested else "byte_array" if element == "unsigned char" else _ARRAYS.get(cpp_param_type(element), "")
     if "basic_string<char" in bare or bare.startswith("char *") or bare.startswith("char["):
         return "string"
-    if bare.startswith("std::vector<") and not bare.startswith("std::vector<std::vector"):
-        element = bare[len("std::vector<"):].split(",", 1)[0].rstrip(">").strip()
-        return "byte_array" if element == "unsigned char" else _ARRAYS.get(cpp_param_type(element), "")
     return ""
 
 
