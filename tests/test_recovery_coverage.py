@@ -47,13 +47,13 @@ def test_json_coverage_matches_the_case_and_the_schema(variant: str) -> None:
     assert nodes["/lidar"]["reasons"] == [{"message": "no model or source for vendor_lidar/lidar_driver",
                                            "file": "src/relay/launch/relay.launch", "line": 4}]
     assert nodes["/scan_relay"]["status"] == "partial" and nodes["/scan_relay"]["origin"] == "python"
-    assert nodes["/scan_relay"]["reasons"] == [{"message": "publisher name unknown: sys.argv[1]",
+    assert nodes["/scan_relay"]["reasons"] == [{"message": "publisher name unknown: pathlib.Path('/etc/relay_topic').read_text()",
                                                 "file": "src/relay/scripts/scan_relay.py", "line": 10}]
     assert nodes["/scan_source"]["status"] == "recovered"
     # the call that created the port gets a note naming what is unknown
     notes = [d for d in document["diagnostics"] if d["code"] == "port-name-unknown"]
     assert [(d["file"], d["line"], d["severity"]) for d in notes] == [("src/relay/scripts/scan_relay.py", 10, "note")]
-    assert "sys.argv[1]" in notes[0]["message"]
+    assert "pathlib.Path('/etc/relay_topic').read_text()" in notes[0]["message"]
 
 
 def test_text_prints_the_recovery_block_after_the_summary() -> None:
@@ -62,7 +62,8 @@ def test_text_prints_the_recovery_block_after_the_summary() -> None:
     assert lines[at + 1] == "recovery: 1 of 3 nodes fully recovered, 1 partial, 1 opaque (no model or source)"
     assert lines[at + 2:] == [
         "  opaque /lidar: no model or source for vendor_lidar/lidar_driver (src/relay/launch/relay.launch:4)",
-        "  partial /scan_relay: publisher name unknown: sys.argv[1] (src/relay/scripts/scan_relay.py:10)"]
+        "  partial /scan_relay: publisher name unknown: pathlib.Path('/etc/relay_topic').read_text() "
+        "(src/relay/scripts/scan_relay.py:10)"]
     clean = check(CASE / "clean", "--quiet").stdout.splitlines()
     assert clean[-1] == "recovery: 2 of 2 nodes fully recovered, 0 partial, 0 opaque (no model or source)"
 
