@@ -27,6 +27,11 @@ rospy.init_node("consumer")
 rospy.Subscriber("front/scan", LaserScan, print)
 rospy.Subscriber("left/range", LaserScan, print)
 rospy.Subscriber("right/range", LaserScan, print)
+"""
+WATCHER = """#!/usr/bin/env python3
+import rospy
+from sensor_msgs.msg import LaserScan
+rospy.init_node("watcher")
 rospy.Subscriber("back/range", LaserScan, print)
 """
 
@@ -35,7 +40,7 @@ def test_alternatives_and_loops(tmp_path: Path) -> None:
     pkg = tmp_path / "src" / "alt"
     (pkg / "scripts").mkdir(parents=True)
     (pkg / "package.xml").write_text(MANIFEST)
-    for name, text in (("sensor.py", SENSOR), ("consumer.py", CONSUMER)):
+    for name, text in (("sensor.py", SENSOR), ("consumer.py", CONSUMER), ("watcher.py", WATCHER)):
         (pkg / "scripts" / name).write_text(text)
         (pkg / "scripts" / name).chmod(0o755)
     result = analyse([tmp_path], [], {}, [])
@@ -46,5 +51,6 @@ def test_alternatives_and_loops(tmp_path: Path) -> None:
     assert [c for _p, c in result.store.rows("alternative_names")] == [2]
     _ctl, findings = Engine(load_rules([])).run(result.store)
     # the scan publisher connects through one of its names, so only /back/range dangles (its
-    # type is published elsewhere, under names that are no near miss: AL104, reported once)
+    # type is published elsewhere, under names that are no near miss and that another node hears:
+    # AL104, reported once)
     assert sorted((f.rule.id, f.values["topic"]) for f in findings) == [("AL104", "/back/range")]

@@ -67,6 +67,8 @@ def observe(variant: Path) -> Observation:
 @functools.cache
 def _observe_system(system: Path) -> dict[str, Observation | Exception]:
     variants = sorted(v for v in CASES if v.parent == system)
+    for variant in variants:  # analysed here, one after the other: clingo is not safe to call from two threads
+        _models(variant)
     with ThreadPoolExecutor(max_workers=len(variants)) as pool:
         futures = {v.name: pool.submit(_observe, v) for v in variants}
     return {name: future.exception() or future.result() for name, future in futures.items()}

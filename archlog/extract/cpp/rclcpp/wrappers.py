@@ -226,6 +226,7 @@ def _initialisers(d: Definition, tokens: list[Token], at: int) -> int:
 def _calls(tokens: list[Token]) -> list[Call]:
     """Every `name(...)` and `name<...>(...)` among the tokens, with its arguments."""
     spellings = [t for t, _ in tokens]
+    closing = _pairs(spellings)
     found: list[Call] = []
     for i, word in enumerate(spellings):
         if not word.isidentifier() or i + 1 >= len(spellings):
@@ -234,7 +235,7 @@ def _calls(tokens: list[Token]) -> list[Call]:
         if spellings[after] == "<" and (end := _angle_end(spellings, after)) is not None:
             template = _first_argument("".join(spellings[after + 1:end + 1])[:-1])
             after = end + 1
-        if after >= len(spellings) or spellings[after] != "(" or (close := _matching(spellings, after)) is None:
+        if after >= len(spellings) or spellings[after] != "(" or (close := closing.get(after)) is None:
             continue
         scope: list[str] = []
         j = i
@@ -265,6 +266,19 @@ def _split(tokens: list[Token]) -> tuple[tuple[str, ...], ...]:
     if spellings:
         args.append(tuple(spellings[start:]))
     return tuple(args)
+
+
+def _pairs(spellings: list[str]) -> dict[int, int]:
+    """The index of the bracket closing each bracket that is closed, in one pass (a search per
+    call from each opening bracket was quadratic in the unclosed ones)."""
+    opened: list[int] = []
+    pairs: dict[int, int] = {}
+    for i, word in enumerate(spellings):
+        if word in _OPEN:
+            opened.append(i)
+        elif word in _CLOSE and opened:
+            pairs[opened.pop()] = i
+    return pairs
 
 
 def _matching(spellings: list[str], at: int) -> int | None:
