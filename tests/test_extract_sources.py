@@ -166,8 +166,8 @@ def test_an_executable_past_its_cpu_time_costs_that_executable(tmp_path: Path, m
     real = analysis.extract_cpp
 
     def spinning(sources, *args):
-        while sources[0].name == "slow.cpp":
-            pass
+        while sources[0].name == "slow.cpp":  # spends CPU time until the job's CPU limit stops it
+            sum(range(1000))
         return real(sources, *args)
 
     monkeypatch.setattr(analysis, "extract_cpp", spinning)

@@ -73,7 +73,8 @@ def test_a_service_under_test_gets_drawn_requests(tmp_path: Path, monkeypatch: p
     assert not buggy.passed and buggy.replay is not None, buggy.output
     assert buggy.replay["reason"].startswith("node(s) died: /planner"), buggy.replay["reason"]
     calls = [a["request"] for a in buggy.replay["actions"] if a["op"] == "call"]
-    assert 1 <= buggy.messages() <= 3 and str(calls[-1]["tolerance"]) in ("0.0", "-0.0", "nan"), buggy.replay
+    assert 1 <= buggy.messages() <= 3, buggy.replay
+    assert calls and str(calls[-1]["tolerance"]) in ("0.0", "-0.0", "nan"), calls  # the call that kills it
     out, _case = prepare(SERVICE / "clean", tmp_path / "clean")
     clean = run_generated(out, 6, seed=0, steps=5, timeout=300)
     assert clean.passed and clean.examples >= 6, clean.output

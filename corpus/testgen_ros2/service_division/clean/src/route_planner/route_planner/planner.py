@@ -28,8 +28,8 @@ def main(args=None):
     node = Planner()
     try:
         rclpy.spin(node)
-    except KeyboardInterrupt:
-        pass
+    except KeyboardInterrupt:  # SIGINT, as the generated test stops its nodes: a clean stop, not an error
+        node.get_logger().info("stopped")
     finally:
         node.destroy_node()
         rclpy.try_shutdown()
