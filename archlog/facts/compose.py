@@ -62,6 +62,12 @@ def compose(system: System, diagnostics: DiagnosticSink) -> FactStore:
         store.locate(node.elem.id, node.elem.file, node.elem.line)
         if node.condition:
             store.add("conditional", node.elem.id, node.condition)
+        if node.condition and node.when is not None:
+            store.add("condition_settled", node.elem.id)
+            for arg, values in sorted(node.when.items()):
+                store.add("condition_on", node.elem.id, arg)
+                for value in sorted(values):
+                    store.add("condition_value", node.elem.id, arg, value)
         if node.ros2:
             store.add("ros2_node", node.name)
         if node.standalone:

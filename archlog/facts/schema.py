@@ -52,6 +52,16 @@ RELATIONS: tuple[Relation, ...] = (
          ("elem", "id", "the launch element (or executable, for a rosrun configuration) that creates it")),
     _rel("configuration", "conditional", "A node kept although its if/unless (or an enclosing one) could not be "
          "resolved statically.", ("elem", "id", "the node's element"), ("condition", "str", "the condition and why")),
+    _rel("configuration", "condition_settled", "A conditional node each of whose undecided conditions depends on one "
+         "launch argument of unknown value alone (extract/launch/conditions.py): `condition_value` says when it runs.",
+         ("elem", "id", "the node's element")),
+    _rel("configuration", "condition_value", "A value of an unknown launch argument with which a settled conditional "
+         "node's conditions may all hold (of the values tried: those the conditions on the argument are written with, "
+         "the booleans, and `(any other value)`). A node with no row for an argument it depends on never runs.",
+         ("elem", "id", "the node's element"), ("arg", "str", "the argument (its name and a number for each one)"),
+         ("value", "str", "the value")),
+    _rel("configuration", "condition_on", "A launch argument of unknown value that a settled conditional node's "
+         "conditions depend on.", ("elem", "id", "the node's element"), ("arg", "str", "as in condition_value")),
     _rel("configuration", "ros2_node", "A node instance that runs on ROS 2: a ROS 2 launch file starts it, or, with "
          "no launch file, its package is built with ament.", _NODE),
     _rel("configuration", "standalone", "A node instance of the configuration without a launch file (every executable "

@@ -7,11 +7,14 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 from archlog import budget, sandbox
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.workspace.index import Workspace
+
+if TYPE_CHECKING:
+    from archlog.extract.launch.conditions import Guard
 
 
 class LaunchError(Exception):
@@ -49,6 +52,10 @@ class LaunchNode:
     ros2: bool = False  # remaps then apply first-match-wins, as rcl does (roslaunch's last one wins)
     standalone: bool = False  # started by itself (no launch file): not known to run with the others
     name_unknown: bool = False  # its name is not known statically: the executable's name stands in for it
+    # each undecided condition's guard (None for one that does not depend on one unknown argument alone)
+    guards: tuple[Guard | None, ...] = ()
+    # when every undecided condition has a guard: per unknown argument, the values it may run with
+    when: dict[str, frozenset[str]] | None = None
 
     @property
     def kind(self) -> tuple[str, str]:

@@ -144,7 +144,7 @@ class LaunchInterpreter(Ros1Params):
         # roslaunch hands the ~param list on to the included file, unless it is still empty
         private = scope.private if scope.private else []
         child_scope = _Scope(ns, scope.subst.child(args=passed, file=target), [], list(scope.remaps), private,
-                             scope.condition, pass_all, (*scope.chain, self._element(path, el)))
+                             scope.condition, scope.guards, pass_all, (*scope.chain, self._element(path, el)))
         if self._file(target, child_scope) and not pass_all:
             for name in passed:
                 if name not in child_scope.declared:
@@ -194,7 +194,7 @@ class LaunchInterpreter(Ros1Params):
             self._machine_uses.append((machine, path, el))
         node = LaunchNode(elem, pkg, exe, node_ns, child.ns, child.remaps, scope.condition,
                           self._attr(scope, el, "args") or "", declared="" if is_test else node_ns,
-                          chain=scope.chain)
+                          chain=scope.chain, guards=scope.guards)
         if not is_test:
             self._declared.append((node_ns, path, el, node))
         self._add_node(path, el, node)

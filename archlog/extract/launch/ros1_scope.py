@@ -14,6 +14,7 @@ from lxml import etree
 
 from archlog import budget, names, sandbox
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.launch.conditions import Guard, guard, settle
 from archlog.extract.launch.load import ros2_by_name, ros2_launcher, ros2_marker
 from archlog.extract.launch.model import (
     Element,
@@ -44,6 +45,7 @@ class _Scope:
     remaps: list[tuple[str, str, Element]]
     private: list[tuple[str, object, Element]]
     condition: str | None = None
+    guards: tuple[Guard | None, ...] = ()  # the undecided conditions' guards (conditions.py)
     pass_all_args: bool = False
     chain: tuple[Element, ...] = ()  # the <include> elements that led here, outermost first
 
@@ -52,6 +54,11 @@ class _Scope:
         shared (a group copies it itself); the pass_all_args leniency is not inherited."""
         return replace(self, ns=child_ns(self.ns, ns), subst=self.subst.child(), declared=list(self.declared),
                        remaps=list(self.remaps), pass_all_args=False)
+
+    def under(self, condition: str, one: Guard | None) -> _Scope:
+        """This scope under one more undecided condition."""
+        text = f"{self.condition} and {condition}" if self.condition else condition
+        return replace(self, condition=text, guards=(*self.guards, one))
 
     def add_remap(self, src: str, dst: str, elem: Element) -> None:
         src, dst = names.canonical(src), names.canonical(dst)
@@ -102,6 +109,7 @@ class Ros1Loader:
             if machine not in self._machines:
                 self._diag(path, el, "launch-invalid", f"<{el.tag}>: unknown machine [{machine}]")
         self._check_declared_names()
+        settle(self.config.nodes)
         return self.config
 
     def _check_declared_names(self) -> None:
@@ -144,19 +152,22 @@ class Ros1Loader:
             raise LaunchError(f"<{el.tag}> is missing the required attribute '{key}'")
         return self._attr(scope, el, key) or ""
 
-    def _enabled(self, scope: _Scope, el: etree._Element) -> bool | str:
-        """True/False, or the condition text when it cannot be resolved statically."""
+    def _enabled(self, scope: _Scope, el: etree._Element) -> bool | tuple[str, Guard | None]:
+        """True/False, or, when it cannot be resolved statically, the condition's text and guard."""
         if el.get("if") is not None and el.get("unless") is not None:
             raise LaunchError("cannot set both 'if' and 'unless' on the same tag")
         for key, want in (("if", True), ("unless", False)):
             raw = el.get(key)
             if raw is None:
                 continue
+
+            def decide(raw: str = raw, key: str = key, want: bool = want) -> bool:
+                return parse_bool(substitute(raw, scope.subst), key) == want
+
             try:
-                value = substitute(raw, scope.subst)
+                return decide()
             except Unresolved as exc:
-                return f'{key}="{raw}" ({exc})'
-            return parse_bool(value, key) == want
+                return f'{key}="{raw}" ({exc})', guard(raw, decide)
         return True
 
     # -- files and children ---------------------------------------------------------------
@@ -227,8 +238,9 @@ class Ros1Loader:
             if enabled is False:
                 return
             if enabled is not True:
-                self._conditional(path, el, enabled)
-            handler(path, el, scope if enabled is True else replace(scope, condition=enabled))
+                self._conditional(path, el, enabled[0])
+                scope = scope.under(*enabled)
+            handler(path, el, scope)
         except (SubstitutionError, LaunchError) as exc:
             self._report(path, el, exc)
 

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from archlog import budget, sandbox
+from archlog.extract.launch import conditions
 from archlog.extract.launch.evaluate import BUILTINS, MATH, restricted_eval
 from archlog.extract.launch.model import SubstitutionError, UnknownArg, Unresolved
 
@@ -41,7 +42,10 @@ class SubstContext:
             raise SubstitutionError(f"arg '{name}' is not defined")
         value = self.args[name]
         if isinstance(value, UnknownArg):
-            raise Unresolved(f"arg '{name}' is unknown ({value.reason})")
+            trial = conditions.given(name, value)
+            if trial is None:
+                raise Unresolved(f"arg '{name}' is unknown ({value.reason})")
+            return trial
         return value
 
     def find_pkg(self, name: str) -> str:

@@ -27,6 +27,7 @@ from typing import TypeVar
 
 from archlog import budget, names, sandbox
 from archlog.extract.files import unreadable
+from archlog.extract.launch.conditions import Guard, guard
 from archlog.extract.launch.model import (
     Element,
     LaunchError,
@@ -70,7 +71,7 @@ from archlog.extract.launch.ros2_nodes import (
     prefix,
     value_or_unknown,
 )
-from archlog.extract.launch.ros2_subst import Call, Context, Parts, describe, perform, text, truth, unknown_reason
+from archlog.extract.launch.ros2_subst import Call, Context, Parts, describe, perform, text, trial_value, truth
 
 A = TypeVar("A", bound=Action)
 DescribeFile = Callable[[Path, "Ros2Launch"], Description | None]
@@ -147,9 +148,11 @@ class Ros2Launch(Ros2Nodes):
             return
         here = ctx
         if state is not True:
+            text, guards = state
             self.diag(action.where, "launch-condition",
-                      f"condition {state} cannot be resolved statically; {_label(action)} kept as conditional", "note")
-            here = replace(ctx, condition=f"{ctx.condition} and {state}" if ctx.condition else state)
+                      f"condition {text} cannot be resolved statically; {_label(action)} kept as conditional", "note")
+            here = replace(ctx, condition=f"{ctx.condition} and {text}" if ctx.condition else text,
+                           guards=(*ctx.guards, *guards))
         try:
             execute(action, here, state is not True)
         except Unresolved as exc:
@@ -158,16 +161,22 @@ class Ros2Launch(Ros2Nodes):
             self.diag(action.where, "launch-subst" if isinstance(exc, SubstitutionError) else "launch-invalid",
                       f"{_label(action)}: {exc}", "error")
 
-    def condition(self, conditions: tuple[Condition, ...], ctx: Context) -> bool | str:
-        """False when a condition is false, True when all hold, else the text of those unknown."""
-        unknown = []
+    def condition(self, conditions: tuple[Condition, ...], ctx: Context) -> bool | tuple[str, tuple[Guard | None, ...]]:
+        """False when a condition is false, True when all hold, else the text of those unknown and
+        their guards."""
+        unknown: list[str] = []
+        guards: list[Guard | None] = []
         for cond in conditions:
+            def decide(cond: Condition = cond) -> bool:
+                return _holds(cond, ctx)
+
             try:
-                if not _holds(cond, ctx):
+                if not decide():
                     return False
             except Unresolved as exc:
                 unknown.append(f"{cond.describe()} ({exc})")
-        return " and ".join(unknown) if unknown else True
+                guards.append(guard(cond.describe(), decide))
+        return (" and ".join(unknown), tuple(guards)) if unknown else True
 
     def _execute(self, action: Action, ctx: Context, uncertain: bool) -> None:
         if isinstance(action, DeclareArgument):
@@ -341,7 +350,7 @@ class Ros2Launch(Ros2Nodes):
         remaps = arg_remaps + self._scope_remaps(ctx) + self._remaps(action.remaps, action.where, ctx)
         params = arg_params + self._scope_params(ctx) + self._params(action.params, action.where, ctx)
         node = LaunchNode(elem, pkg, exe, full, namespace or "", remaps, ctx.condition, shlex.join(words),
-                          declared=full, chain=ctx.chain, parameters=params, ros2=True)
+                          declared=full, chain=ctx.chain, parameters=params, ros2=True, guards=ctx.guards)
         self.config.nodes.append(node)
         self._launched[id(action)] = full
         for component in action.components:
@@ -395,7 +404,7 @@ def _holds(cond: Condition, ctx: Context) -> bool:
         raise Unresolved("a Python test on values not known statically")
     value = ctx.configs.get(cond.name)
     if isinstance(value, UnknownArg):
-        raise Unresolved(unknown_reason(cond.name, value))
+        value = trial_value(cond.name, value)
     expected = None if cond.expr is None else perform(cond.expr, ctx)
     equal = value == expected if cond.name in ctx.configs else expected is None
     return equal if cond.kind == "equals" else not equal

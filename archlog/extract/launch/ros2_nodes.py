@@ -250,7 +250,7 @@ class Ros2Nodes:
         params = self._scope_params(ctx, key) + self._params(component.params, component.where, ctx, key)
         self.config.nodes.append(LaunchNode(elem, pkg, plugin, full, namespace or "", remaps, ctx.condition,
                                             plugin=plugin, manager=manager, declared=full, chain=ctx.chain,
-                                            parameters=params, ros2=True))
+                                            parameters=params, ros2=True, guards=ctx.guards))
 
 
 def value_or_unknown(parts: Parts, ctx: Context) -> str | UnknownArg:

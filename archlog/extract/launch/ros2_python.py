@@ -307,7 +307,7 @@ class _Interpreter(Values):
             return perform_in(args[0] if args else None, target, line)
         if isinstance(target, Condition) and name == "evaluate" and args and isinstance(args[0], ContextValue):
             state = self.launcher.condition((target,), args[0].ctx)
-            return state if isinstance(state, bool) else Unread(f"condition {state}", line)
+            return state if isinstance(state, bool) else Unread(f"condition {state[0]}", line)
         if isinstance(target, ConfigsView) and name == "get":
             return self.config(target, args[0] if args else None, args[1] if len(args) > 1 else None, line)
         if isinstance(target, (FileHandle, PathValue)) and name in ("read", "read_text"):

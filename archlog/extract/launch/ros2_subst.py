@@ -19,7 +19,8 @@ from pathlib import Path
 import yaml
 
 from archlog import budget, sandbox
-from archlog.extract.launch import bounded_yaml
+from archlog.extract.launch import bounded_yaml, conditions
+from archlog.extract.launch.conditions import Guard
 from archlog.extract.launch.evaluate import BUILTINS, MATH, restricted_eval
 from archlog.extract.launch.model import Element, SubstitutionError, UnknownArg, Unresolved, read_file
 from archlog.extract.launch.read import boolean
@@ -80,6 +81,7 @@ class Context:
     find: Callable[[str], Path | None]
     serial: Iterator[int]
     condition: str | None = None
+    guards: tuple[Guard | None, ...] = ()  # the undecided conditions' guards (conditions.py)
     chain: tuple[Element, ...] = ()  # the include Elements that led here, outermost first
 
     def scoped(self) -> Context:
@@ -260,11 +262,19 @@ def _var(args: tuple[Parts, ...], ctx: Context) -> str:
     if name in ctx.configs:
         value = ctx.configs[name]
         if isinstance(value, UnknownArg):
-            raise Unresolved(unknown_reason(name, value))
+            value = trial_value(name, value)
         return str(value)
     if len(args) > 1:
         return perform(args[1], ctx)
     raise Unresolved(f"launch configuration '{name}' is not set (not declared before its use, nor given)")
+
+
+def trial_value(name: str, value: UnknownArg) -> str:
+    """The value a condition's trial gives an unknown launch argument (conditions.py), else Unresolved."""
+    given = conditions.given(name, value)
+    if given is None:
+        raise Unresolved(unknown_reason(name, value))
+    return given
 
 
 def unknown_reason(name: str, value: UnknownArg) -> str:
