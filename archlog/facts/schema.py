@@ -293,8 +293,12 @@ _SUB = ("sub", "id", "the subscriber port")
 DERIVED: tuple[Relation, ...] = (
     _derived(_PRELUDE, "is_unknown", "A value static analysis could not know (a term unknown(N)).",
              ("value", "id", "the unknown term")),
-    _derived(_PRELUDE, "alternative_instances", "Two node instances started by themselves (standalone): alternatives "
-             "that are not known to run together (AL103, AL202 and AL301 do not pair them).",
+    _derived(_PRELUDE, "alternative_instances", "Two node instances started by themselves (standalone), or whose "
+             "conditions exclude each other (exclusive_conditions): alternatives that are not known to run together "
+             "(AL101, AL103, AL202 and AL301 do not pair them).",
+             ("a", "id", "a node's element"), ("b", "id", "another node's element")),
+    _derived(_PRELUDE, "exclusive_conditions", "Two conditional node instances whose conditions on one launch argument "
+             "of unknown value hold for no common value (condition_value): they never run together.",
              ("a", "id", "a node's element"), ("b", "id", "another node's element")),
     _derived(_PRELUDE, "alternative_nodes", "Two nodes whose instances are alternatives (alternative_instances).",
              ("a", "name", "a node"), ("b", "name", "another node")),

@@ -22,7 +22,7 @@ from archlog.extract.launch.model import LaunchError, LaunchNode, SubstitutionEr
 
 OTHER = "(any other value)"  # the value no condition names
 _MAX_VALUES = 64  # values tried per argument
-_WORDS = re.compile(r"'([^']*)'|\"([^\"]*)\"|([\w.\-/]+)")
+_WORDS = (re.compile(r"'([^']*)'"), re.compile(r'"([^"]*)"'), re.compile(r"([\w.\-/]+)"))
 
 
 @dataclass
@@ -97,14 +97,14 @@ def guard(text: str, decide: Callable[[], bool]) -> Guard | None:
     name, arg = probe.read[0]
     if _outcome(decide, _Trial({id(arg): OTHER})) is None:  # something else is unknown too
         return None
-    words = {w for match in _WORDS.finditer(text) for w in match.groups() if w is not None}
+    words = {word for pattern in _WORDS for word in pattern.findall(text)}
     return Guard(name, arg, tuple(sorted(words | {"true", "false", "1", "0", ""})), decide)
 
 
 def settle(nodes: list[LaunchNode]) -> None:
     """Each conditional node's `when`: for every unknown argument its conditions depend on, the
     values (of those tried) for which they may all hold; left None when a condition of the node
-    depends on something else."""
+    depends on something else, or holds for none of the values tried."""
     keys: dict[int, str] = {}
     tried: dict[int, set[str]] = {}
     for node in nodes:
@@ -121,4 +121,5 @@ def settle(nodes: list[LaunchNode]) -> None:
             key = keys[id(one.arg)]
             holds = frozenset(v for v in values if one.may_hold(v))
             when[key] = when[key] & holds if key in when else holds
-        node.when = when
+        if all(when.values()):  # a condition that holds for no value tried was not understood
+            node.when = when
