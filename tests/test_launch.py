@@ -79,6 +79,31 @@ def test_unresolvable_condition_keeps_element_as_conditional(tmp_path: Path) -> 
     assert [(d.line, d.code) for d in sink.items] == [(2, "launch-condition"), (2, "env-not-given")]
 
 
+def test_undecided_conditions_on_one_unknown_arg_are_tried_with_their_values(tmp_path: Path) -> None:
+    config, _ = load(tmp_path, {"main.launch": """<launch>
+  <arg name="model" default="$(env ARCHLOG_TEST_SURELY_UNSET)"/>
+  <arg name="sim" default="$(env ARCHLOG_TEST_SURELY_UNSET)"/>
+  <group if="$(eval model == 'a')">
+    <node pkg="p" type="t" name="a"/>
+    <node if="$(arg sim)" pkg="p" type="t" name="a_sim"/>
+  </group>
+  <node if="$(eval model in ('b', 'c'))" pkg="p" type="t" name="b_or_c"/>
+  <node unless="$(arg sim)" pkg="p" type="t" name="real"/>
+  <node if="$(eval model == sim)" pkg="p" type="t" name="both_args"/>
+  <node if="$(env ARCHLOG_TEST_SURELY_UNSET)" pkg="p" type="t" name="no_arg"/>
+</launch>"""})
+    nodes = {n.name: n for n in config.nodes}
+    assert nodes["/a"].when == {"model#1": frozenset({"a"})}
+    # nested conditions are both kept, each on its own argument
+    assert nodes["/a_sim"].when == {"model#1": frozenset({"a"}), "sim#2": frozenset({"true", "1"})}
+    assert " and " in (nodes["/a_sim"].condition or "")
+    assert nodes["/b_or_c"].when == {"model#1": frozenset({"b", "c"})}
+    assert nodes["/real"].when == {"sim#2": frozenset({"false", "0"})}
+    # a condition on two unknown arguments, or on no argument, is not tried
+    assert nodes["/both_args"].when is None and nodes["/both_args"].condition
+    assert nodes["/no_arg"].when is None and nodes["/no_arg"].condition
+
+
 def test_params_types_rosparam_and_node_args(tmp_path: Path) -> None:
     config, _ = load(tmp_path, {"main.launch": """<launch>
   <param name="global_int" value="3"/>

@@ -285,6 +285,21 @@ def test_conditions(tmp_path: Path) -> None:
     assert ("main.xml", 10, "launch-subst") in codes(sink)
 
 
+def test_undecided_conditions_on_one_unknown_argument_are_tried(tmp_path: Path) -> None:
+    config, _ = load(tmp_path, {"main.xml": """
+        <launch>
+          <arg name="lidar"/>
+          <node pkg="p" exec="e" name="spin" if="$(eval '\\'$(var lidar)\\' == \\'spin\\'')"/>
+          <node pkg="p" exec="e" name="solid" unless="$(eval '\\'$(var lidar)\\' == \\'spin\\'')"/>
+          <node pkg="p" exec="e" name="unknown_kind" if="$(var lidar)"/>
+        </launch>
+        """}, "main.xml")
+    nodes = by_name(config)
+    assert nodes["/spin"].when == {"lidar#1": frozenset({"spin"})}
+    assert "spin" not in (nodes["/solid"].when or {}).get("lidar#1", {"spin"})
+    assert nodes["/unknown_kind"].when == {"lidar#1": frozenset({"true", "1"})}
+
+
 def test_substitutions(tmp_path: Path) -> None:
     with sandbox.active(sandbox.Sandbox(None, {"ARCHLOG_TEST_ROBOT": "robby"})):
         config, sink = load(tmp_path, {"robot_pkg/dummy.txt": "x", "main.xml": """
