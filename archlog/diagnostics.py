@@ -62,7 +62,9 @@ CODES: dict[str, Code] = {
                               "Pass the value with --arg, --env, or add the package to the analysed paths."),
         "launch-arg-unknown": ("note", "A launch argument has no value statically.", "Pass it with --arg NAME:=VALUE."),
         "launch-condition": ("note", "An if/unless condition cannot be decided statically; the element is kept "
-                             "as conditional.", "Pass the args it depends on with --arg."),
+                             "as conditional (a condition on one unknown argument is tried with the values it is "
+                             "written with, so that elements whose conditions exclude each other are known not to "
+                             "run together).", "Pass the args it depends on with --arg."),
         "launch-process": ("note", "An ExecuteProcess that launch_ros does not start as a ROS node is left out.",
                            "Nothing, unless it is a node: then launch it with Node."),
         "launch-unknown": ("warning", "Part of a Python launch file is not read statically (a while loop, a loop "
