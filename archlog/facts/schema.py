@@ -281,6 +281,7 @@ def _derived(source: str, name: str, doc: str, *cols: tuple[str, str, str]) -> R
 _PRELUDE = "prelude.lp"
 _AL601 = "AL601_required_input_unreachable.lp"
 _AL401 = "AL401_unused_remap.lp"
+_AL301 = "AL301_duplicate_node_name.lp"
 _AL701 = "AL701_transform_never_available.lp"
 _AL403 = "AL403_parameter_never_declared.lp"
 _AL405 = "AL405_parameter_out_of_range.lp"
@@ -389,6 +390,12 @@ DERIVED: tuple[Relation, ...] = (
              "the same file (AL401's `before` list).", ("elem", "id", "the remap"), _NODE),
     _derived(_AL401, "remap_user_outside", "A node that uses an ineffective remap's name outside its scope (AL401's "
              "`outside` list).", ("elem", "id", "the remap"), _NODE),
+    _derived(_AL401, "remap_plugins", "Where a node an ineffective remap applies to creates pluginlib classes whose "
+             "code is not read, at file:line (AL401's `loads` list: the finding is a note).", ("elem", "id", "the remap"),
+             ("where", "str", "file:line of the plugin_hole")),
+    _derived(_AL301, "clash_condition", "An undecided condition of one of two nodes with one name that archlog could "
+             "not try (AL301's `when` list: the finding is a note).", ("elem", "id", "the later node's element"),
+             ("condition", "str", "the condition and why it is undecided")),
     _derived(_AL601, "near_publisher", "A candidate for a starved input: a published near-miss name, or a topic of "
              "its type published to nobody (AL601's `near` list).", _SUB, ("topic", "name", "the candidate topic")),
     _derived(_AL701, "tf_live", "A broadcast that starts: at once, or after an input some node publishes (or might: "
