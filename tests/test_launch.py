@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 from archlog.diagnostics import DiagnosticSink
+from archlog.extract.launch import conditions
 from archlog.extract.launch.model import LaunchConfig, SubstitutionError
 from archlog.extract.launch.ros1 import LaunchInterpreter
 from archlog.extract.launch.ros1_subst import SubstContext, substitute
@@ -102,6 +103,16 @@ def test_undecided_conditions_on_one_unknown_arg_are_tried_with_their_values(tmp
     # a condition on two unknown arguments, or on no argument, is not tried
     assert nodes["/both_args"].when is None and nodes["/both_args"].condition
     assert nodes["/no_arg"].when is None and nodes["/no_arg"].condition
+
+
+def test_condition_trials_have_a_budget(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(conditions, "_MAX_TRIALS", 20)
+    nodes = "".join(f'<node if="$(eval model == \'m{i}\')" pkg="p" type="t" name="n{i}"/>' for i in range(3))
+    config, _ = load(tmp_path, {"main.launch": f"""<launch>
+  <arg name="model" default="$(env ARCHLOG_TEST_SURELY_UNSET)"/>{nodes}
+</launch>"""})
+    # each guard is tried with the 10 values the three conditions give (words, booleans) and one other: 11 each
+    assert [n.when is not None for n in config.nodes] == [True, False, False]
 
 
 def test_params_types_rosparam_and_node_args(tmp_path: Path) -> None:

@@ -22,6 +22,7 @@ from archlog.extract.launch.model import LaunchError, LaunchNode, SubstitutionEr
 
 OTHER = "(any other value)"  # the value no condition names
 _MAX_VALUES = 64  # values tried per argument
+_MAX_TRIALS = 20000  # conditions evaluated again per configuration; the nodes past it stay unsettled
 _WORDS = (re.compile(r"'([^']*)'"), re.compile(r'"([^"]*)"'), re.compile(r"([\w.\-/]+)"))
 
 
@@ -104,7 +105,7 @@ def guard(text: str, decide: Callable[[], bool]) -> Guard | None:
 def settle(nodes: list[LaunchNode]) -> None:
     """Each conditional node's `when`: for every unknown argument its conditions depend on, the
     values (of those tried) for which they may all hold; left None when a condition of the node
-    depends on something else, or holds for none of the values tried."""
+    depends on something else, or holds for none of the values tried (or when the trials' budget is spent)."""
     keys: dict[int, str] = {}
     tried: dict[int, set[str]] = {}
     for node in nodes:
@@ -112,9 +113,13 @@ def settle(nodes: list[LaunchNode]) -> None:
             if one is not None:
                 keys.setdefault(id(one.arg), f"{one.name}#{len(keys) + 1}")
                 tried.setdefault(id(one.arg), set()).update(one.values)
+    trials = 0
     for node in nodes:
         if not node.condition or not node.guards or any(one is None for one in node.guards):
             continue
+        trials += sum(min(len(tried[id(g.arg)]), _MAX_VALUES) + 1 for g in node.guards if g is not None)
+        if trials > _MAX_TRIALS:
+            return
         when: dict[str, frozenset[str]] = {}
         for one in (g for g in node.guards if g is not None):
             values = sorted(tried[id(one.arg)])[:_MAX_VALUES] + [OTHER]
