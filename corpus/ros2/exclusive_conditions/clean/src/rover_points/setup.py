@@ -11,8 +11,7 @@ setup(
                 ("share/" + package_name + "/launch", ["launch/points.launch.py"])],
     install_requires=["setuptools"],
     entry_points={"console_scripts": [
-        "spinning_driver = rover_points.spinning_driver:main",
-        "solid_state_driver = rover_points.solid_state_driver:main",
+        "points_driver = rover_points.points_driver:main",
         "cloud_monitor = rover_points.cloud_monitor:main",
     ]},
 )
