@@ -93,7 +93,7 @@ class Sandbox:
         cap = self.caps.get(kind, SIZE_CAPS["source"])
         if info.st_size > cap:
             raise Refused("too-large", path, f"{info.st_size} bytes, over the {cap}-byte cap for {kind} files")
-        return Path(path)
+        return path if isinstance(path, Path) else Path(path)
 
     def read_bytes(self, path: Path | str, kind: str = "source") -> bytes:
         checked = self.check(path, kind)
