@@ -148,6 +148,12 @@ def write(root: Path, files: Files) -> None:
 
 
 LIMIT = 60
+"""CPU seconds a check may take (wall time is no measure on a machine shared with other work); it is
+stopped after ten times as many seconds of wall time in any case."""
+
+
+def _cpu_limit() -> None:
+    resource.setrlimit(resource.RLIMIT_CPU, (LIMIT, LIMIT))
 
 
 def main() -> None:
@@ -161,9 +167,12 @@ def main() -> None:
         command = [sys.executable, "-m", "archlog", "check", str(out / name), "--launch",
                    str(out / name / launch_of(files)), "--format", "json", "--fail-on", "never"]
         try:
-            done = subprocess.run(command, capture_output=True, text=True, timeout=LIMIT)
+            done = subprocess.run(command, capture_output=True, text=True, timeout=10 * LIMIT, preexec_fn=_cpu_limit)
         except subprocess.TimeoutExpired:
-            print(f"{name} size {size}: killed at {LIMIT} s", flush=True)
+            print(f"{name} size {size}: killed at {10 * LIMIT} s wall", flush=True)
+            continue
+        if done.returncode < 0:
+            print(f"{name} size {size}: killed by signal {-done.returncode} (CPU limit {LIMIT} s)", flush=True)
             continue
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
