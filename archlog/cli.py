@@ -243,7 +243,8 @@ def check(paths, launches, args, models, rule_paths, config_path, profile, near_
         written = write_baseline_file(findings, write_baseline)
         click.echo(f"archlog: wrote {written} finding{'s' if written != 1 else ''} to {write_baseline}", err=True)
     report = Report(findings, config.diagnostics(analysis.diagnostics.items + unused, verbose), config.adjust(ruleset.rules),
-                    root, Report.node_origins(analysis.store), coverage(analysis.store), labels, hidden,
+                    root, Report.node_origins(analysis.store) if fmt == "sarif" else {},  # (only SARIF lists them)
+                    coverage(analysis.store), labels, hidden,
                     holes(analysis.store))
     report = rebase.report(report)
     if fmt == "concise":

@@ -61,16 +61,22 @@ class Sandbox:
     caps: Mapping[str, int] = field(default_factory=lambda: dict(SIZE_CAPS))
     shell: bool = False
     from_shell: list[str] = field(default_factory=list)
+    _inside: dict[str, bool] = field(default_factory=dict, compare=False, repr=False)
 
     def inside(self, path: Path | str) -> bool:
         """Whether `path`, with every symlink resolved, lies under a root (a path with a NUL byte
-        names no file)."""
-        if "\0" in str(path):
+        names no file). Each path is resolved once a run: a launch file included thousands of
+        times is not resolved again each time."""
+        text = str(path)
+        if "\0" in text:
             return False
         if self.roots is None:
             return True
-        real = Path(os.path.realpath(path))
-        return any(real == root or real.is_relative_to(root) for root in self.roots)
+        known = self._inside.get(text)
+        if known is None:
+            real = Path(os.path.realpath(text))
+            known = self._inside[text] = any(real == root or real.is_relative_to(root) for root in self.roots)
+        return known
 
     def check(self, path: Path | str, kind: str = "source") -> Path:
         """`path` if archlog may read it as `kind`; raises `Refused` otherwise."""
@@ -87,7 +93,7 @@ class Sandbox:
         cap = self.caps.get(kind, SIZE_CAPS["source"])
         if info.st_size > cap:
             raise Refused("too-large", path, f"{info.st_size} bytes, over the {cap}-byte cap for {kind} files")
-        return Path(path)
+        return path if isinstance(path, Path) else Path(path)
 
     def read_bytes(self, path: Path | str, kind: str = "source") -> bytes:
         checked = self.check(path, kind)

@@ -38,6 +38,7 @@ INDEL = 1.5
 MAX_SEGMENTS = 64
 MAX_CHARACTERS = 1024
 _MAX_KEYS = 512  # a name with more variants than this is measured against every name of its group
+_SMALL_GROUP = 64  # groups up to this many names skip the vectorised filter of `_within_reach`
 _MAX_WORD_EDITS = 4  # word replacements up to this character distance are enumerated; longer names are measured
 
 
@@ -202,7 +203,7 @@ def _candidates(measure: _Measure, members: list[int], asked: list[int], budgets
     """Pairs (i < j) of a name of `asked` and another of `members` whose variants meet at a cost
     (both sides' edits) below what the threshold allows their lengths."""
     index: dict[str, list[tuple[int, float]]] = defaultdict(list)
-    lengths = measure.lengths.tolist()
+    lengths = measure.counts
     pairs: set[tuple[int, int]] = set()
     for i in asked:
         try:
@@ -295,7 +296,10 @@ def _within_reach(measure: _Measure, members: list[int], index: dict[str, list[t
                   budgets: dict[int, tuple[float, float]]) -> list[int]:
     """The members that can meet a query's variant in `index`: a member's deletion key keeps all
     but `_most_deleted` of its segments, and each segment a key keeps is a word of some variant
-    (members with too many deletion keys to index are kept)."""
+    (members with too many deletion keys to index are kept). A small group (one per numbered
+    instance) is kept whole: filtering it costs more than looking its few keys up."""
+    if len(members) <= _SMALL_GROUP:
+        return members
     words = np.array(sorted({ord(ch) - 0x100 for key in index for ch in key}), dtype=np.int64)
     rows = np.array(members, dtype=np.int64)
     lengths = measure.lengths[rows]
@@ -355,6 +359,7 @@ class _Measure:
         vocabulary = {word: code for code, word in enumerate(self.words)}
         flat = np.fromiter((vocabulary[seg] for row in split for seg in row), dtype=np.int64)
         self.lengths = np.fromiter(map(len, split), dtype=np.int64, count=len(split))
+        self.counts: list[int] = self.lengths.tolist()  # the same as Python ints, for lookups one at a time
         self.codes = np.full((len(names), int(self.lengths.max(initial=0))), -1, dtype=np.int64)
         starts = np.repeat(np.cumsum(self.lengths) - self.lengths, self.lengths)
         self.codes[np.repeat(np.arange(len(names)), self.lengths), np.arange(len(flat)) - starts] = flat

@@ -13,6 +13,7 @@ is written: the parameter's line, with the code that reads it as the first relat
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
@@ -90,6 +91,7 @@ def relocate(findings: list[Finding], store, foreign: Callable[[str], bool]) -> 
     """Each finding located in the repository (a name rule's at the parameter that names its port);
     the labels of the locations they left, by (file, line, column)."""
     mover = Relocator(store)
+    foreign = functools.cache(foreign)  # asked once per file, not once per finding
     moved, labels = [], {}
     for found in findings:
         finding, label = mover.named_by_parameter(found)

@@ -56,6 +56,7 @@ def apply_suppressions(findings: list[Finding], files: set[str], root: Path, con
     node instance (`elements`: node -> its element's file and line) applies to the findings about
     that instance, wherever they are located."""
     inline = inline_suppressions(files, root)
+    texts: dict[Path, list[str]] = {}
     used: set[tuple[str, int]] = set()
     entries_used: set[int] = set()
     for finding in findings:
@@ -64,7 +65,7 @@ def apply_suppressions(findings: list[Finding], files: set[str], root: Path, con
         nodes = finding.subjects.get("nodes", [])
         if elements and nodes and nodes[0] in elements:
             file, line = elements[nodes[0]]
-            start = _element_start(file, line, root)
+            start = _element_start(file, line, root, texts)
             lines += [(file, start), (file, start - 1)]
         for key in lines:
             mark = inline.get(key)
@@ -87,12 +88,17 @@ def apply_suppressions(findings: list[Finding], files: set[str], root: Path, con
          for i, entry in enumerate(configured) if i not in entries_used]
 
 
-def _element_start(file: str, line: int, root: Path) -> int:
-    """The line where the launch element ending its start tag on `line` begins (`<node`, `Node(`)."""
+def _element_start(file: str, line: int, root: Path, texts: dict[Path, list[str]]) -> int:
+    """The line where the launch element ending its start tag on `line` begins (`<node`, `Node(`);
+    `texts` holds the lines of each file read so far (one launch file may start thousands of nodes)."""
     path = Path(file) if Path(file).is_absolute() else root / file
-    try:
-        lines = sandbox.read_text(path, "source").splitlines()
-    except sandbox.Refused:
+    if path not in texts:
+        try:
+            texts[path] = sandbox.read_text(path, "source").splitlines()
+        except sandbox.Refused:
+            texts[path] = []
+    lines = texts[path]
+    if not lines:
         return line
     for number in range(min(line, len(lines)), max(line - 20, 0), -1):
         if re.search(r"<node\b|Node\s*\(", lines[number - 1]):

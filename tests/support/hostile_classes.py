@@ -112,6 +112,16 @@ def ros1_remapped(nodes: int) -> Files:
     return _ros1(CMAKE_HEAD, body)
 
 
+def ros1_remapped_dangling(nodes: int) -> Files:
+    """As `ros1_remapped`, but no two nodes connect: each publishes a name of its own nobody hears and
+    hears a name of its own nobody publishes (one message type: every publisher is a candidate
+    counterpart of every subscriber, for AL103 and AL104 and the near-miss search)."""
+    body = "".join(f'  <node pkg="demo" type="talker.py" name="n{i}" ns="s{i}">\n'
+                   f'    <remap from="chatter" to="/out/c{i}"/>\n    <remap from="heard" to="/in/h{i}"/>\n'
+                   "  </node>\n" for i in range(nodes))
+    return _ros1(CMAKE_HEAD, body)
+
+
 FULL: dict[str, tuple[Callable[[int], Files], int]] = {
     "cmake_brackets": (cmake_brackets, 100_000),
     "cmake_bracket_comments": (cmake_bracket_comments, 100_000),
@@ -120,6 +130,7 @@ FULL: dict[str, tuple[Callable[[int], Files], int]] = {
     "python_dag": (python_dag, 40),
     "xml_include_fan": (xml_include_fan, 30),
     "ros1_remapped": (ros1_remapped, 20_000),
+    "ros1_remapped_dangling": (ros1_remapped_dangling, 20_000),
 }
 """Each class at the size of the report that found it."""
 
@@ -137,6 +148,12 @@ def write(root: Path, files: Files) -> None:
 
 
 LIMIT = 60
+"""CPU seconds a check may take (wall time is no measure on a machine shared with other work); it is
+stopped after ten times as many seconds of wall time in any case."""
+
+
+def _cpu_limit() -> None:
+    resource.setrlimit(resource.RLIMIT_CPU, (LIMIT, LIMIT))
 
 
 def main() -> None:
@@ -150,9 +167,12 @@ def main() -> None:
         command = [sys.executable, "-m", "archlog", "check", str(out / name), "--launch",
                    str(out / name / launch_of(files)), "--format", "json", "--fail-on", "never"]
         try:
-            done = subprocess.run(command, capture_output=True, text=True, timeout=LIMIT)
+            done = subprocess.run(command, capture_output=True, text=True, timeout=10 * LIMIT, preexec_fn=_cpu_limit)
         except subprocess.TimeoutExpired:
-            print(f"{name} size {size}: killed at {LIMIT} s", flush=True)
+            print(f"{name} size {size}: killed at {10 * LIMIT} s wall", flush=True)
+            continue
+        if done.returncode < 0:
+            print(f"{name} size {size}: killed by signal {-done.returncode} (CPU limit {LIMIT} s)", flush=True)
             continue
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime

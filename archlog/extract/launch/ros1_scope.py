@@ -94,7 +94,7 @@ class Ros1Loader:
         self._rosparam_yaml = False  # roslaunch imports rosparam (and its YAML angles) at the first load
         self._ros2: Ros2Launch | None = None
         self._nesting = Nesting()  # element lists being loaded (a file, its groups, the files it includes)
-        self._roots: dict[Path, etree._Element] = {}  # each file parsed once, evaluated per include
+        self._roots: dict[Path, tuple[etree._Element, bool]] = {}  # each file parsed (and its dialect told) once
 
     def load(self, files: list[Path], args: dict[str, str]) -> LaunchConfig:
         for path in files:
@@ -175,13 +175,13 @@ class Ros1Loader:
         """Load a file into the scope; False when it could not be read at all."""
         if ros2_by_name(path):
             return self._ros2_file(path, scope)
-        root = self._roots.get(path)
-        if root is None:
+        if path not in self._roots:
             root = open_xml(path, self.display(path), self.diagnostics)
             if root is None:
                 return False
-            self._roots[path] = root
-        if ros2_marker(root) is not None:
+            self._roots[path] = (root, ros2_marker(root) is not None)
+        root, ros2 = self._roots[path]
+        if ros2:
             return self._ros2_file(path, scope)
         self._children(path, root, scope)
         return True

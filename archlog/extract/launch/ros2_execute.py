@@ -88,6 +88,7 @@ class Ros2Launch(Ros2Nodes):
         self.serial = itertools.count(1)
         self.env: Mapping[str, str | UnknownArg] = {}  # the environment Python launch files see when read
         self._descriptions: dict[tuple[Path, str], Description | None] = {}
+        self._real: dict[Path, Path] = {}  # each file's path resolved once (a fan includes one file many times)
         self._nesting = Nesting()  # lists of actions being run (a file, its groups, the files it includes)
 
     # -- entry points -------------------------------------------------------------------
@@ -105,7 +106,9 @@ class Ros2Launch(Ros2Nodes):
     def describe(self, path: Path, dialect: str | None) -> Description | None:
         """A file's description, read once (descriptions do not depend on the context)."""
         kind = dialect or dialect_of(path)
-        key = (Path(os.path.realpath(path)), kind)
+        if path not in self._real:
+            self._real[path] = Path(os.path.realpath(path))
+        key = (self._real[path], kind)
         if key not in self._descriptions:
             self._descriptions[key] = self.readers[kind](path, self)
         return self._descriptions[key]
