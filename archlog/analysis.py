@@ -29,7 +29,6 @@ from archlog.facts.near_misses import add_near_names
 from archlog.facts.parameters import add_param_near
 from archlog.facts.patterns import add_name_fits
 from archlog.facts.store import FactStore
-from archlog.system.instances import complete_instances
 from archlog.system.link import link
 from archlog.system.named_plugins import named_plugins
 from archlog.system.node_models import BUILTIN_DIR, load_node_models
@@ -128,8 +127,7 @@ def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], model
 def _plugin_classes(config: LaunchConfig, extracted: registry.Summaries, workspace: Workspace,
                     diagnostics: DiagnosticSink, progress: Progress | None) -> registry.Summaries:
     """The summaries of the pluginlib classes the nodes' parameters name (system/named_plugins.py),
-    read like nodelets; the nodes get their full names first, which their parameters are matched with."""
-    complete_instances(config, extracted, diagnostics)
+    read like nodelets."""
     plugins = {plugin.kind for node in config.nodes for plugin in named_plugins(node, extracted.get(node.kind), workspace)
                if plugin.kind is not None} - extracted.keys()
     return registry.extract(workspace, plugins, diagnostics, progress or (lambda _done, _total: None)) if plugins else {}

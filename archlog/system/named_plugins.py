@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from archlog import names
 from archlog.diagnostics import DiagnosticSink
 from archlog.extract.launch.model import LaunchNode
 from archlog.extract.launch.ros2_params import matches
@@ -79,7 +80,17 @@ def _parameter_values(node: LaunchNode, summary: NodeSummary) -> dict[str, objec
     values: dict[str, object] = {port.name: port.default for port in summary.ports
                                  if port.kind == "param_read" and isinstance(port.name, str)
                                  and port.default is not None and not isinstance(port.default, Unknown)}
+    name = node.name or _source_name(node, summary)
     for pattern, dotted, value, _elem in node.parameters:
-        if not pattern or (node.name and matches(pattern, node.name)):
+        if not pattern or (name and matches(pattern, name)):
             values[dotted] = value
     return values
+
+
+def _source_name(node: LaunchNode, summary: NodeSummary) -> str:
+    """The full name the node's code gives it, when the launch file does not (before the instances are
+    completed, system/instances.py); "" when it is not known statically."""
+    given = summary.default_name
+    if not isinstance(given, str) or not given or not isinstance(summary.namespace, str):
+        return ""
+    return names.join(names.join("/", node.namespace or summary.namespace), given)
