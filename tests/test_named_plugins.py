@@ -52,13 +52,6 @@ def test_a_single_name_parameter_names_one_plugin(tmp_path: Path) -> None:
     assert "/robot/start_docking" in _services(result, "/robot/task_server")
 
 
-def test_a_parameter_naming_a_declared_class_loads_it(tmp_path: Path) -> None:
-    params = '/robot/task_server:\n  ros__parameters:\n    task_plugins: []\n    task_type: "task_plugins::DockTask"\n'
-    result = analyse([_case(tmp_path, params)], LAUNCH, {}, [])
-    assert "/robot/start_docking" in _services(result, "/robot/task_server")
-    assert result.store.rows("plugin_hole") == []
-
-
 def test_a_class_no_description_declares_stays_a_hole(tmp_path: Path) -> None:
     params = ('/robot/task_server:\n  ros__parameters:\n    task_plugins: ["docking"]\n'
               '    docking:\n      plugin: "task_plugins::UndockTask"\n')

@@ -2,10 +2,9 @@
 
 The convention of ROS 2 hosts (a planner server, a costmap, a navigator): a list parameter names the
 plugins (`planner_plugins: [grid]`; a string parameter names one), and each name's `NAME.plugin`
-parameter names its class (`grid.plugin: pkg::GridPlanner`, a pluginlib lookup name or C++ type); a
-parameter may also name the class itself (`motion_model: pkg::DiffModel`) when a plugin description
-declares it. The values are the configuration's (parameter files, launch parameters), else the
-defaults the node's source declares.
+parameter names its class (`grid.plugin: pkg::GridPlanner`, a pluginlib lookup name or C++ type).
+The values are the configuration's (parameter files, launch parameters), else the defaults the
+node's source declares.
 The class is found through the plugin descriptions the workspace's packages export
 (`Package.plugin_classes`), and its code is read like a nodelet's (analysis.py). The plugin is given
 the host node, so its ports' names are relative to the host. A class that no description of the
@@ -39,19 +38,17 @@ class NamedPlugin:
 
 def named_plugins(node: LaunchNode, summary: NodeSummary | None, workspace: Workspace) -> list[NamedPlugin]:
     """The plugins the node's parameters name: each string (or string of a list) parameter whose
-    `NAME.plugin` is set, and each that names a class the workspace's plugin descriptions declare."""
+    `NAME.plugin` is set."""
     if not node.ros2 or summary is None or not summary.plugin_loads:
         return []
     values = _parameter_values(node, summary)
     found = []
-    for param, value in values.items():
+    for value in values.values():
         for name in value if isinstance(value, list) else [value]:
             class_name = values.get(f"{name}.plugin")
             if isinstance(name, str) and isinstance(class_name, str) and class_name:
                 exe = workspace.plugin_class(class_name)
                 found.append(NamedPlugin(name, f"{name}.plugin", class_name, exe.kinds[0] if exe else None))
-            elif isinstance(name, str) and not param.endswith(".plugin") and (exe := workspace.plugin_class(name)):
-                found.append(NamedPlugin(param, param, name, exe.kinds[0]))  # the class itself
     return found
 
 
