@@ -30,6 +30,7 @@ from archlog.facts.parameters import add_param_near
 from archlog.facts.patterns import add_name_fits
 from archlog.facts.store import FactStore
 from archlog.system.link import link
+from archlog.system.named_plugins import named_plugins
 from archlog.system.node_models import BUILTIN_DIR, load_node_models
 
 
@@ -102,6 +103,8 @@ def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], model
         if exe is not None and exe.parameter_files:  # a copy: a summary may be cached
             extracted[key] = replace(summary, ports=list(summary.ports))
             parameter_library.add_declarations(extracted[key], exe.parameter_files, workspace.display, diagnostics)
+    if config:
+        extracted.update(_plugin_classes(config, extracted, workspace, diagnostics, progress))
     timings["extract"] = _lap(clock)
 
     clock = time.perf_counter()
@@ -119,6 +122,15 @@ def _analyse(paths: list[Path], launches: list[str], args: dict[str, str], model
         add_name_fits(store)
         timings["near-miss"] = _lap(clock)
     return Analysis(workspace, system.config, store, diagnostics, timings)
+
+
+def _plugin_classes(config: LaunchConfig, extracted: registry.Summaries, workspace: Workspace,
+                    diagnostics: DiagnosticSink, progress: Progress | None) -> registry.Summaries:
+    """The summaries of the pluginlib classes the nodes' parameters name (system/named_plugins.py),
+    read like nodelets."""
+    plugins = {plugin.kind for node in config.nodes for plugin in named_plugins(node, extracted.get(node.kind), workspace)
+               if plugin.kind is not None} - extracted.keys()
+    return registry.extract(workspace, plugins, diagnostics, progress or (lambda _done, _total: None)) if plugins else {}
 
 
 def resolve_launch(spec: str, workspace: Workspace) -> Path:

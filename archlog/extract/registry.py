@@ -62,7 +62,8 @@ def register(lang: str, kind: InputKind) -> None:
 def extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnostics: DiagnosticSink,
             progress: Progress) -> Summaries:
     """Summaries of the executables the configuration runs (all of them when `wanted` is None) whose
-    language is an input kind, and of the nodelets they load into their own process;
+    language is an input kind, and of the nodelets they load into their own process (`wanted` may
+    also name pluginlib classes, (package, C++ type): their code is read like a nodelet's);
     `progress(done, total)` is called as they finish."""
     summaries = _extract(workspace, wanted, diagnostics, progress)
     loaded = {kind for s in summaries.values() for n in s.loads if (kind := plugin_kind(n.plugin))} - summaries.keys()
@@ -87,7 +88,8 @@ def _extract(workspace: Workspace, wanted: set[tuple[str, str]] | None, diagnost
     jobs: list[IsolatedJob] = []
     aliases: dict[tuple[str, str], tuple[str, str]] = {}
     for package in workspace.packages.values():
-        for exe in package.executables.values():
+        plugins = {id(c): c for c in package.plugin_classes.values()} if wanted is not None else {}
+        for exe in [*package.executables.values(), *plugins.values()]:
             kind = INPUT_KINDS.get(exe.lang)
             if kind is None or wanted is not None and not wanted.intersection(exe.kinds):
                 continue

@@ -18,6 +18,7 @@ from archlog.system.configured import configured_ports
 from archlog.system.controllers import controller_nodes
 from archlog.system.infrastructure import infrastructure_ports
 from archlog.system.instances import complete_instances
+from archlog.system.named_plugins import with_plugins
 from archlog.system.node_models import NodeModels, argv_ports
 from archlog.system.nodelets import in_process, is_manager, loaded_ports, loader_ports, manager_summary
 from archlog.system.outside import OutsidePort, outside_ports
@@ -196,6 +197,8 @@ def _summary(node: LaunchNode, summaries: Summaries, models: NodeModels, config:
     summary = manager_summary(node, config) if is_manager(node) else summaries.get(node.kind)
     if summary is not None and summary.loads:
         summary = replace(summary, ports=summary.ports + loaded_ports(node, summary, summaries, diagnostics))
+    if summary is not None and summary.plugin_loads:
+        summary = with_plugins(node, summary, summaries, workspace, diagnostics)
     model = models.user.get(node.kind) or models.shipped(node.kind, node.ros2)
     if summary is not None and summary.argv_ports:  # the model is used
         summary = replace(summary, ports=summary.ports + argv_ports(summary, node.args)[0])

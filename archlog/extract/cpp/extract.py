@@ -645,6 +645,7 @@ def _merge(summary: NodeSummary, result: FileResult, diagnostics: DiagnosticSink
         summary.name_file, summary.name_line = result.name_file, result.name_line
         summary.namespace = result.namespace
     summary.infrastructure = tuple(dict.fromkeys([*summary.infrastructure, *result.infrastructure]))
+    summary.without = tuple(dict.fromkeys([*summary.without, *result.without]))
     summary.incomplete = summary.incomplete or result.incomplete
     summary.params_dynamic = summary.params_dynamic or result.params_dynamic
     diagnostics.extend(result.diagnostics)

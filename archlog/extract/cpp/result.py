@@ -23,6 +23,7 @@ class FileResult:
     name_line: int = 0
     namespace: Value = ""
     infrastructure: tuple[str, ...] = ()  # built-in port groups its node asks for (a lifecycle node)
+    without: tuple[str, ...] = ()  # default built-in port groups its node turns off (NodeOptions)
     incomplete: str | None = None
     params_dynamic: str = ""  # why its parameters are not all known (see NodeSummary.params_dynamic)
     diagnostics: list[Diagnostic] = field(default_factory=list)

@@ -54,7 +54,7 @@ class ExecutableFinder:
         self._cmake_executables(package)
         self._entry_points(package)
         self._script_executables(package)
-        self._nodelets(package)
+        self._plugins(package)
         self._components(package)
 
     def _cmake_executables(self, package: Package) -> None:
@@ -150,6 +150,10 @@ linked ones count only where the executable's own code reaches them (extract/cpp
                 package.links.setdefault(c.args[0], []).extend(a for a in c.args[1:] if a not in _LINK_WORDS)
             elif c.name in ("rclcpp_components_register_node", "rclcpp_components_register_nodes") and c.args:
                 self._registered_components(package, c.name, c.args, c.line)
+            elif c.name == "pluginlib_export_plugin_description_file" and len(c.args) >= 2:
+                described = str(_under(folder, c.args[1]))
+                if described not in package.plugin_xml:
+                    package.plugin_xml.append(described)
             elif c.name == "include_directories":
                 package.include_dirs += [_under(folder, a) for a in c.args if a not in ("SYSTEM", "BEFORE", "AFTER")
                                          and "$" not in a]
@@ -164,11 +168,17 @@ linked ones count only where the executable's own code reaches them (extract/cpp
                         lang = "python" if path.suffix == ".py" or _is_python_script(path) else "other"
                         package.executables[path.name] = Executable(package.name, path.name, lang, [path], c.line)
 
-    def _nodelets(self, package: Package) -> None:
-        """Nodelet plugins declared in the plugin XML files that package.xml exports (every class of
-        every `<library>`: one root, a `<class_libraries>` wrapper, or several top-level ones)."""
+    def _plugins(self, package: Package) -> None:
+        """The classes of the plugin descriptions the package exports (package.xml's `plugin=` attribute,
+        CMake's pluginlib_export_plugin_description_file; every class of every `<library>`: one root, a
+        `<class_libraries>` wrapper, or several top-level ones). A nodelet is an executable; any other
+        class is kept by its lookup name and C++ type for the nodes whose parameters name it."""
+        described: set[Path] = set()
         for raw in package.plugin_xml:
             path = Path(raw.replace("${prefix}", str(package.path)))
+            if path.resolve() in described:
+                continue
+            described.add(path.resolve())
             try:
                 root = parse_xml_elements(path, "build")
             except (sandbox.Refused, etree.XMLSyntaxError) as exc:
@@ -178,14 +188,16 @@ linked ones count only where the executable's own code reaches them (extract/cpp
             for library in root.iter("library"):
                 target = Path(library.get("path", "")).name.removeprefix("lib")
                 for cls in library.iter("class"):
-                    if "nodelet" not in cls.get("base_class_type", "nodelet"):
-                        continue
                     name, type_ = cls.get("name") or cls.get("type", ""), cls.get("type", "")
                     sources = package.libraries.get(target) or _exporting(package.path, type_)
                     sources = sources + [s for s in _linked(package, target) if s not in sources]
-                    plugin = name.split("/", 1)[-1]
-                    package.executables[plugin] = Executable(package.name, plugin, "cpp", sources,
-                                                             cls.sourceline or 0, type_, plugin=name)
+                    if "nodelet" in cls.get("base_class_type", "nodelet"):
+                        plugin = name.split("/", 1)[-1]
+                        package.executables[plugin] = Executable(package.name, plugin, "cpp", sources,
+                                                                 cls.sourceline or 0, type_, plugin=name)
+                    elif type_:
+                        found = Executable(package.name, type_, "cpp", sources, cls.sourceline or 0, type_)
+                        package.plugin_classes.update({name: found, type_: found})
 
     def _registered_components(self, package: Package, command: str, args: tuple[str, ...], line: int) -> None:
         """rclcpp_components_register_node(lib PLUGIN ns::Class [EXECUTABLE exe]) and

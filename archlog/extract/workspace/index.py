@@ -61,6 +61,10 @@ class Workspace:
         package = self.packages.get(pkg)
         return package.executables.get(exe) if package else None
 
+    def plugin_class(self, name: str) -> Executable | None:
+        """The pluginlib class a package of the workspace declares under this lookup name or C++ type."""
+        return next((found for package in self.packages.values() if (found := package.plugin_classes.get(name))), None)
+
     def _index(self, manifest: Path) -> None:
         folder = manifest.parent
         text = self._finder.read(manifest, "build")

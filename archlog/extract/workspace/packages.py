@@ -55,6 +55,9 @@ class Package:
     parameter_libraries: dict[str, Path] = field(default_factory=dict)  # generate_parameter_library target -> YAML
     version: str = ""  # package.xml's <version>
     depends: frozenset[str] = frozenset()  # the packages its package.xml depends on (build, exec, run)
+    # the pluginlib classes (other than nodelets) its plugin descriptions declare, by lookup name and
+    # by C++ type: what a node whose parameters name one loads (system/named_plugins.py)
+    plugin_classes: dict[str, Executable] = field(default_factory=dict)
 
 
 def share_dirs() -> list[Path]:

@@ -11,6 +11,12 @@ from archlog.extract.cpp.rclcpp.context import WalkContext
 from archlog.extract.cpp.rclcpp.definitions import Definitions
 from archlog.values import Value, concat
 
+# rclcpp::NodeOptions setters that add (True) or remove (False) a group of built-in ports:
+# setter -> (group, adds); the groups are models/infrastructure/ros2.yaml's
+_NODE_OPTIONS = {"enable_logger_service": ("logger_service", True),
+                 "start_parameter_services": ("parameter_services", False), "enable_rosout": ("rosout", False),
+                 "start_parameter_event_publisher": ("parameter_events", False)}
+
 
 class Nodes:
     """Reads node constructions (the file's node name) and the namespaces of sub-nodes."""
@@ -35,6 +41,23 @@ class Nodes:
                 return self.node_ns(sub_call, depth + 1) if sub_call is not None else ""
         return ""
 
+    def _options(self, args: list[ci.Cursor]) -> None:
+        """The built-in port groups the node's NodeOptions turn on or off (`enable_logger_service(true)`,
+        `start_parameter_services(false)`, `enable_rosout(false)`, `start_parameter_event_publisher(false)`),
+        written in its constructor's arguments."""
+        for arg in args:
+            for call in arg.walk_preorder():
+                flag = _NODE_OPTIONS.get(call.spelling) if call.kind == K.CALL_EXPR else None
+                if flag is None or len(written_args(call)) != 1:
+                    continue
+                group, adds = flag
+                value = str(self.ctx.value(written_args(call)[0])).lower()
+                result = self.ctx.result
+                if adds and value == "true":
+                    result.infrastructure = tuple(dict.fromkeys([*result.infrastructure, group]))
+                elif not adds and value == "false":
+                    result.without = tuple(dict.fromkeys([*result.without, group]))
+
     def node_constructed(self, call: ci.Cursor, args: list[ci.Cursor], ctor: ci.Cursor | None) -> None:
         """A node's name and namespace from its constructor: rclcpp::Node("name", "ns", options),
         a subclass's base initializer, std::make_shared<rclcpp::Node>(...), Node::make_shared(...)."""
@@ -48,7 +71,8 @@ class Nodes:
         if name is None:
             return
         if ctor is not None and qualified(ctor.semantic_parent) == LIFECYCLE_NODE:
-            self.ctx.result.infrastructure = ("lifecycle",)
+            self.ctx.result.infrastructure = tuple(dict.fromkeys([*self.ctx.result.infrastructure, "lifecycle"]))
+        self._options(args)
         value = self.ctx.value(name)
         namespace = next((a for n, a in texts if n in ("namespace_", "namespace", "ns", "node_namespace")), None)
         if self.node_names and value not in self.node_names:

@@ -1061,6 +1061,8 @@ public:
   NodeOptions & allow_undeclared_parameters(bool allow_undeclared_parameters);
   bool automatically_declare_parameters_from_overrides() const;
   NodeOptions & automatically_declare_parameters_from_overrides(bool automatically_declare_parameters_from_overrides);
+  bool enable_logger_service() const;
+  NodeOptions & enable_logger_service(bool enable_log_service);
 };
 
 class Node : public std::enable_shared_from_this<Node>
