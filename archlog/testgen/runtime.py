@@ -51,6 +51,7 @@ _POLL = 0.05
 # for the response bound failed a correct node's test in CI)
 _DISCOVERY = 10.0
 STEP_SETTLE = 0.1  # seconds after a step's messages before the properties are checked
+GOAL_SETTLED = ("rejected", "feedback", "done")  # a goal's states in which its server has told how it goes
 
 
 @contextlib.contextmanager
@@ -323,9 +324,10 @@ def close_sessions() -> None:
 class Properties:
     """The user's properties: hooks called with every message received on a watched output
     (`on_<topic>`, the topic's name with non-word characters as `_`), with every response of an open
-    service (`on_<service>`, the Event's msg the response) and after every step
+    service (`on_<service>`, the Event's msg the response), with every answer, feedback and result
+    of a goal sent to an open action (`on_<action>`, see _goal_event) and after every step
     (`invariant`). `history` holds every event received so far in the example, `sent` every
-    message sent; assert in the hooks."""
+    message sent, request made and goal sent; assert in the hooks."""
 
     def __init__(self) -> None:
         self.history: list[Event] = []
@@ -351,8 +353,8 @@ def hook_name(topic: str) -> str:
 
 
 class ArchitectureMachine(RuleBasedStateMachine):
-    """The state machine a generated module extends with one `publish_<topic>` rule per open input
-    and one `call_<service>` rule per open service.
+    """The state machine a generated module extends with one `publish_<topic>` rule per open input,
+    one `call_<service>` rule per open service and one `send_goal_<action>` rule per open action.
 
     Steps: publish a drawn message; the temporal mutations (drop one message of a topic's
     sequence, resend the last one, send two in swapped order, a burst, a stale stamp); spin. After
@@ -384,6 +386,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
         self.failure: str | None = None
         self.periodic: dict[str, float] = {}  # the periodic outputs seen at their period after launch
         self.answered: set[int] = set()  # the calls (their action's index) that got a response
+        self.goals: dict[int, tuple[str, str]] = {}  # goal sent -> its action, and sent|accepted|rejected|feedback|done
 
     def new_session(self) -> System:
         return Session(self.model)
@@ -425,15 +428,40 @@ class ArchitectureMachine(RuleBasedStateMachine):
                            "timeout": self.settings.response_bound})
         self._act({"op": "call", "service": service, "request": request}, now)
         self.properties.sent.append({"service": service, "request": request})
-        end = now + self.settings.response_bound
-        while self.failure is None and number not in self.answered and time.time() < end:
+        if not self._awaited(lambda: number in self.answered, now + self.settings.response_bound):
+            self.failure = (f"{service} gave no response within {self.settings.response_bound:.1f} s "
+                            f"(after step {len(self.actions)})")
+
+    def send_goal(self, action: str, goal: Any) -> None:
+        """Send `goal` to `action`: the server must accept or reject it within the response bound and,
+        once accepted, send its result or a first feedback within the bound again (a server that works
+        longer on a goal says so by its feedback). A goal sent while an earlier goal of the action is
+        still open is not timed (a server may work on its goals one at a time)."""
+        if self.failure is not None:
+            return
+        busy = any(a == action and state not in GOAL_SETTLED for a, state in self.goals.values())
+        now = time.time()
+        number = next(_CALLS)
+        self.goals[number] = (action, "sent")
+        self.session.send({"op": "goal", "action": action, "goal": goal, "id": number})
+        self._act({"op": "goal", "action": action, "goal": goal}, now)
+        self.properties.sent.append({"action": action, "goal": goal})
+        bound = self.settings.response_bound
+        answered = self._awaited(lambda: self.goals[number][1] != "sent", now + bound)
+        settled = answered and self._awaited(lambda: self.goals[number][1] in GOAL_SETTLED, time.time() + bound)
+        if not settled and not busy and self.failure is None:
+            what = "accepted, but neither a result nor a feedback came" if answered else "neither accepted nor rejected"
+            self.failure = f"{action}: a goal was {what} within {bound:.1f} s (after step {len(self.actions)})"
+
+    def _awaited(self, done: Callable[[], bool], end: float) -> bool:
+        """Check the properties until `done()` or the wall clock `end`; whether it is done (a node
+        that died meanwhile is the failure, not the silence)."""
+        while self.failure is None and not done() and time.time() < end:
             time.sleep(_POLL)
             self._check(final=False)
-        if self.failure is None and number not in self.answered:
-            self._check(final=False)  # a node that died meanwhile is the failure, not the silence
-            if self.failure is None and number not in self.answered:
-                self.failure = (f"{service} gave no response within {self.settings.response_bound:.1f} s "
-                                f"(after step {len(self.actions)})")
+        if self.failure is None and not done():
+            self._check(final=False)
+        return done()
 
     @precondition(lambda self: bool(self.model["inputs"]))
     @rule(data=st.data())
@@ -645,6 +673,8 @@ def _record(machine: ArchitectureMachine) -> None:
             if "error" in event:  # the call failed in the test's client (a request the class refuses)
                 raise AssertionError(f"the call of {event['service']} failed: {event['error']}")
             event = {**event, "topic": event["service"], "msg": event["response"]}
+        elif event["ev"] in ("goal", "feedback", "result"):
+            event = _goal_event(machine, event)
         elif event["ev"] != "msg" or event["t"] < machine.started:
             continue
         received = Event(event["topic"], event["t"], event["msg"])
@@ -658,6 +688,23 @@ def _record(machine: ArchitectureMachine) -> None:
                 raise
             except AssertionError as exc:  # about a message received at a known moment
                 raise Violation(str(exc), received.time) from exc
+
+
+def _goal_event(machine: ArchitectureMachine, event: dict[str, Any]) -> dict[str, Any]:
+    """A goal's answer, feedback or result as an event of its action (its msg says which, with the
+    goal's number); the goal's state follows it."""
+    action, number = event["action"], event["id"]
+    if "error" in event:  # the goal was not sent (a value the goal class refuses)
+        raise AssertionError(f"sending a goal to {action} failed: {event['error']}")
+    if event["ev"] == "goal":
+        state, msg = ("accepted" if event["accepted"] else "rejected"), {"goal": number, "accepted": event["accepted"]}
+    elif event["ev"] == "feedback":
+        state, msg = "feedback", {"goal": number, "feedback": event["msg"]}
+    else:
+        state, msg = "done", {"goal": number, "status": event["status"], "result": event["msg"]}
+    if machine.goals.get(number, (action, ""))[1] != "done":
+        machine.goals[number] = (action, state)
+    return {**event, "topic": action, "msg": msg}
 
 
 def check_log(settings: Settings, event: dict[str, Any]) -> None:

@@ -32,8 +32,8 @@ class Outcome:
     output: str
 
     def messages(self) -> int:
-        """Input messages and service calls in the replay (what the shrunk failure sends)."""
-        return sum(a["op"] in ("publish", "call") for a in (self.replay or {}).get("actions", []))
+        """Input messages, service calls and goals in the replay (what the shrunk failure sends)."""
+        return sum(a["op"] in ("publish", "call", "goal") for a in (self.replay or {}).get("actions", []))
 
 
 def systems() -> list[Path]:
@@ -55,8 +55,18 @@ def prepare(variant: Path, work: Path) -> tuple[Path, dict]:
     command += [x for k, v in case["args"].items() for x in ("--arg", f"{k}:={v}")]
     if "settings" in case:
         command += ["--settings", str(variant / case["settings"])]
-    subprocess.run(command, check=True, capture_output=True, text=True, timeout=120)
+    ros2 = any("ament_" in manifest.read_text() for manifest in workspace.rglob("package.xml"))
+    subprocess.run(command, check=True, capture_output=True, text=True, timeout=120, env=ros2_prefix() if ros2 else None)
     return out, case
+
+
+def ros2_prefix() -> dict[str, str]:
+    """This environment, with ROS 2 installed from PyPI in this Python (if it is) on AMENT_PREFIX_PATH, as a
+    ROS 2 setup file sets it: archlog then finds its interface definitions (an action's goal)."""
+    env = dict(os.environ)
+    if (Path(sys.prefix) / "share" / "ament_index").is_dir() and not env.get("AMENT_PREFIX_PATH"):
+        env["AMENT_PREFIX_PATH"] = sys.prefix
+    return env
 
 
 def run_generated(out: Path, examples: int, seed: int, shrink_seconds: int = 60, steps: int | None = None,
