@@ -2,8 +2,8 @@
 as plain processes (no ros2cli), typed parameters, test publishers offering the QoS the nodes ask
 for, on a private domain. A correct system's generated test passes; a system with a node that is
 not a Python node of its workspace (C++ without ros2cli here) is skipped with the reason. A node whose
-only interface is a service gets calls with drawn requests, and the line coverage of its file is in
-the report."""
+only interface is a service gets calls with drawn requests, one whose only interface is an action
+gets goals with drawn fields, and the line coverage of its file is in the report."""
 
 from __future__ import annotations
 
@@ -23,6 +23,7 @@ ROOT = Path(__file__).resolve().parents[1]
 CORPUS = ROOT / "corpus" / "ros2"
 SERVICE = ROOT / "corpus" / "testgen_ros2" / "service_division"  # a node whose only interface is a service
 LIFECYCLE = ROOT / "corpus" / "testgen_ros2" / "lifecycle_scaler" / "clean"  # ports made in on_configure
+ACTION = ROOT / "corpus" / "testgen_ros2" / "action_order"  # a node whose only interface is an action
 # (system, nodes under test: all when empty, what the generated test does); each a clean twin
 CASES = [("qos_deadline_watchdog", ["/base/watchdog"], "passed"), ("param_name_typo_py", [], "passed"),
          ("yaml_remap_near_miss", ["/robot1/smoother"], "passed"), ("qos_latched_map", [], "skipped")]
@@ -80,6 +81,27 @@ def test_a_service_under_test_gets_drawn_requests(tmp_path: Path, monkeypatch: p
     assert clean.passed and clean.examples >= 6, clean.output
     covered = re.search(r"/planner ran (\d+) of (\d+) lines", clean.output)  # coverage.py in the node's process
     assert covered and 0 < int(covered[1]) < int(covered[2]), clean.output  # the guard's early return and more
+
+
+def test_an_action_under_test_gets_drawn_goals(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The sequencer's goal callback divides its time budget by the goal's order (buggy twin): found,
+    shrunk to at most 3 goals, the last of order 0; its fixed twin rejects the orders it cannot serve
+    and serves the others (a feedback per number, then the result)."""
+    domain = min(private_domain(), 232)
+    monkeypatch.setenv("ARCHLOG_TESTGEN_DOMAINS", f"{domain}-{domain}")
+    out, _case = prepare(ACTION / "buggy", tmp_path / "buggy")
+    assert "def send_goal_fibonacci(self, goal):" in (out / "test_sequencer.py").read_text()
+    buggy = run_generated(out, 6, seed=0, shrink_seconds=4, steps=3, timeout=300)
+    assert not buggy.passed and buggy.replay is not None, buggy.output
+    assert buggy.replay["reason"].startswith("node(s) died: /sequencer"), buggy.replay["reason"]
+    goals = [a["goal"] for a in buggy.replay["actions"] if a["op"] == "goal"]
+    assert 1 <= buggy.messages() <= 3, buggy.replay
+    assert goals[-1] == {"order": 0}, goals
+    out, _case = prepare(ACTION / "clean", tmp_path / "clean")
+    clean = run_generated(out, 3, seed=0, steps=3, timeout=300)
+    assert clean.passed and clean.examples >= 3, clean.output
+    covered = re.search(r"/sequencer ran (\d+) of (\d+) lines", clean.output)
+    assert covered and 0 < int(covered[1]) < int(covered[2]), clean.output
 
 
 def test_a_lifecycle_node_is_activated_and_its_builtin_ports_left_out(tmp_path: Path,
