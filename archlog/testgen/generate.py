@@ -24,7 +24,8 @@ Run with pytest; ARCHLOG_TESTGEN_EXAMPLES sets the number of examples (default {
 ARCHLOG_TESTGEN_STEPS the steps per example, ARCHLOG_TESTGEN_SHRINK_SECONDS the time spent shrinking
 a failure (default 60). Each example starts the nodes under test afresh on a private {private}
 (about 1-3 s an example) unless reuse is set. Where coverage.py is installed, the line coverage of
-each Python node started by the test (ROS 2) is in the report (ARCHLOG_TESTGEN_COVERAGE=0: not measured).
+each Python node started by the test is in the report, and inputs that run lines for the first time
+are preferred (ARCHLOG_TESTGEN_COVERAGE=0: not measured; ROS 1 needs Debian's python3-coverage).
 {undecided}"""
 
 import os

@@ -9,7 +9,8 @@ message definitions of the inputs' types, of the services' requests and of the a
 the bridge with the installed message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
 also holds how to start each node under test (package, executable, remaps, the configuration's
 parameters, its Python script or entry point), as a ROS 2 test starts them itself, and the QoS its
-publishers must offer."""
+publishers must offer; a ROS 1 model the Python script of each node under test that is one (roslaunch
+runs it under coverage.py)."""
 
 from __future__ import annotations
 
@@ -85,6 +86,7 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     return {
         "ros": ros,
         "commands": _commands(analysis, chosen) if ros == 2 else [],
+        "scripts": _scripts(analysis, chosen) if ros == 1 else {},
         "qos": _qos(store, chosen, inputs) if ros == 2 else {},
         "paths": [str(p.resolve()) for p in paths],
         "launch": [str(resolve_launch(spec, analysis.workspace).resolve()) for spec in launches],
@@ -132,6 +134,13 @@ def _commands(analysis: Analysis, chosen: list[str]) -> list[dict[str, Any]]:
                                         if any(name.startswith(f"{n}/") for n in names)},
                              **_python_start(analysis, pkg, exe)})
     return commands
+
+
+def _scripts(analysis: Analysis, chosen: list[str]) -> dict[str, str]:
+    """The Python script of each ROS 1 node under test that is one (its line coverage is measured)."""
+    scripts = {str(node): _python_start(analysis, str(pkg), str(exe)).get("script") for node, pkg, exe, _e
+               in analysis.store.rows("node") if str(node) in chosen}
+    return {node: script for node, script in sorted(scripts.items()) if script}
 
 
 def _python_start(analysis: Analysis, pkg: str, exe: str) -> dict[str, str]:

@@ -30,7 +30,8 @@ from typing import Any
 
 from archlog import observe
 from archlog.testgen import processes
-from archlog.testgen.runtime import ArchitectureMachine, write_stats
+from archlog.testgen.lines import LineCoverage
+from archlog.testgen.runtime import ArchitectureMachine, measuring, write_stats
 
 _POLL = 0.05
 MAX_DOMAIN = 232
@@ -129,21 +130,6 @@ def node_file(node: dict[str, Any]) -> str:
     return str(module / "__init__.py" if module.is_dir() else module.with_suffix(".py"))
 
 
-def line_coverage(folder: Path, commands: list[dict[str, Any]]) -> dict[str, tuple[int, int]]:
-    """Per Python node under test, the lines of its file run by any of its processes (coverage.py data
-    in `folder`) and the lines of the file: node -> (covered, statements)."""
-    import coverage
-
-    data = coverage.Coverage(data_file=str(folder / "data"))
-    data.combine([str(folder)], keep=True)
-    found: dict[str, tuple[int, int]] = {}
-    for node in commands:
-        if node.get("entry") or node.get("script"):
-            _file, statements, _excluded, missing, _text = data.analysis2(node_file(node))
-            found[node["name"]] = (len(statements) - len(missing), len(statements))
-    return found
-
-
 def _typed(value: Any) -> str:
     """A parameter value for `-p`, which reads it as YAML: a number or boolean as itself; a text as
     written, so that the node reads it typed as launch_ros would (`false` a boolean, `0.8` a double)."""
@@ -203,8 +189,10 @@ class Ros2Session:
         # the nodes' standard input: a pseudo-terminal, as `ros2 run` in a shell gives them (keyboard
         # teleops and prompts wait on it; nothing is typed), open until the session closes
         self.terminal = pty.openpty()
-        measured = importlib.util.find_spec("coverage") is not None and os.environ.get("ARCHLOG_TESTGEN_COVERAGE") != "0"
+        measured = measuring()
         self.coverage = self.tmp / "coverage" if measured else None
+        self.lines = LineCoverage(self.tmp / "coverage", {node["name"]: node_file(node) for node in model["commands"]
+                                                          if node.get("entry") or node.get("script")}) if measured else None
 
     @property
     def log(self) -> Path:
@@ -358,6 +346,11 @@ class Ros2Session:
         while names and names & set(self._names()) and time.monotonic() < end:
             time.sleep(_POLL)
 
+    def new_lines(self) -> int | None:
+        """Lines of the Python nodes' files that the nodes stopped since the last call ran first (None: not
+        measured)."""
+        return self.lines.new_lines() if self.lines else None
+
     def node_alive(self, node: str) -> bool:
         """The node is in the graph and its process runs."""
         proc = self.procs.get(node)
@@ -397,8 +390,7 @@ class Ros2Session:
     def close(self) -> None:
         atexit.unregister(self.close)
         self.stop_nodes()
-        covered = line_coverage(self.coverage, self.model["commands"]) if self.coverage and self.coverage.is_dir() else {}
-        write_stats(self.launches, covered)
+        write_stats(self.launches, self.lines.covered() if self.lines else {})
         if hasattr(self, "executor"):
             self.executor.shutdown()
             self.node.destroy_node()

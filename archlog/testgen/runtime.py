@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
 
-from hypothesis import note
+from hypothesis import note, target
 from hypothesis import strategies as st
 from hypothesis.errors import InvalidArgument
 from hypothesis.stateful import RuleBasedStateMachine, initialize, invariant, precondition, rule
@@ -41,6 +41,7 @@ from hypothesis.strategies._internal.featureflags import FeatureFlags
 
 from archlog import observe
 from archlog.testgen import processes
+from archlog.testgen.lines import LineCoverage
 from archlog.testgen.settings import Settings
 from archlog.testgen.strategies import Strategies, fill_counters, pick, stale
 
@@ -133,6 +134,10 @@ class Session:
         package_path = ":".join(self.model["paths"])
         self.env = processes.ros_env(self.tmp, self.uri, package_path)
         self.master = observe.master(self.uri)
+        scripts = self.model.get("scripts", {})
+        measured = bool(scripts) and measuring() and subprocess.run(
+            [str(processes.SYSTEM_PYTHON), "-c", "import coverage"], capture_output=True).returncode == 0
+        self.lines = LineCoverage(self.tmp / "coverage", scripts) if measured else None
 
     # -- master and bridge, once per run -------------------------------------------------
 
@@ -171,9 +176,9 @@ class Session:
 
     def close(self) -> None:
         atexit.unregister(self.close)
-        write_stats(self.launches)
         with contextlib.suppress(OSError, xmlrpc.client.Error):
             self.stop_nodes()
+        write_stats(self.launches, self.lines.covered() if self.lines else {})
         processes.stop_together([self.launcher, self.bridge, self.core], 2.0)
         processes.kill_leftovers(f"ROS_HOME={self.tmp}".encode())
         shutil.rmtree(self.tmp, ignore_errors=True)
@@ -208,8 +213,11 @@ class Session:
 
     def _start_launcher(self) -> None:
         spec = self.tmp / "launch.json"
+        measured = {node: [str(self.tmp / "coverage" / "data"), str(Path(script).parent)]
+                    for node, script in self.model.get("scripts", {}).items()} if self.lines else {}
         spec.write_text(json.dumps({"files": self.model["launch"], "args": self.model["args"],
-                                    "nodes": self.model["nodes"] if self.model["isolated"] else None}))
+                                    "nodes": self.model["nodes"] if self.model["isolated"] else None,
+                                    "coverage": measured}))
         self.launcher = processes.spawn([str(processes.SYSTEM_PYTHON), str(DEBIAN / "launch.py"), str(spec)],
                                         self.env, self.log, stdin=subprocess.PIPE)
         self.launches = 0
@@ -226,14 +234,25 @@ class Session:
     def log(self) -> Path:
         return self.tmp / "launch.log"
 
-    def stop_nodes(self) -> None:
-        """Kill the nodes under test (no clean shutdown: the next example starts afresh)."""
-        for node in self.model["nodes"]:
-            uri = self._node_uri(node)
-            pid = self._pid(uri) if uri else None
-            if pid:
-                with contextlib.suppress(ProcessLookupError, PermissionError):
-                    os.kill(pid, signal.SIGKILL)
+    def stop_nodes(self, grace: float = 3.0) -> None:
+        """Stop the nodes under test: killed outright, or, when their coverage is measured, SIGINT first
+        (coverage.py writes its data as a node ends) and killed after `grace` seconds."""
+        uris = [self._node_uri(node) for node in self.model["nodes"]]
+        pids = [pid for pid in (self._pid(uri) for uri in uris if uri) if pid]
+        for pid in pids:
+            with contextlib.suppress(ProcessLookupError, PermissionError):
+                os.kill(pid, signal.SIGINT if self.lines else signal.SIGKILL)
+        end = time.monotonic() + (grace if self.lines else 0.0)
+        while any(map(processes.alive, pids)) and time.monotonic() < end:
+            time.sleep(_POLL)
+        for pid in filter(processes.alive, pids):
+            with contextlib.suppress(ProcessLookupError, PermissionError):
+                os.kill(pid, signal.SIGKILL)
+
+    def new_lines(self) -> int | None:
+        """Lines of the Python nodes' files that the nodes stopped since the last call ran first (None: not
+        measured)."""
+        return self.lines.new_lines() if self.lines else None
 
     def node_alive(self, node: str) -> bool:
         """The node is registered on the master and its process answers there."""
@@ -270,6 +289,7 @@ class System(Protocol):
     def send(self, command: dict[str, Any]) -> None: ...
     def launch(self, params: dict[str, Any]) -> None: ...
     def stop_nodes(self) -> None: ...
+    def new_lines(self) -> int | None: ...
     def node_alive(self, node: str) -> bool: ...
     def graph(self) -> observe.Architecture: ...
     def close(self) -> None: ...
@@ -288,6 +308,12 @@ def shared_session(model: dict[str, Any], create: Callable[[], System]) -> Syste
         atexit.register(session.close)
         session.start()
     return _SESSIONS[key]
+
+
+def measuring() -> bool:
+    """The line coverage of Python nodes under test is measured: coverage.py is installed here and
+    ARCHLOG_TESTGEN_COVERAGE is not 0."""
+    return importlib.util.find_spec("coverage") is not None and os.environ.get("ARCHLOG_TESTGEN_COVERAGE") != "0"
 
 
 COVERAGE: dict[str, tuple[int, int]] = {}  # node under test -> lines run, lines of its file (sessions closed)
@@ -532,6 +558,9 @@ class ArchitectureMachine(RuleBasedStateMachine):
         finally:
             if not self.settings.reuse:
                 self.session.stop_nodes()
+                new = self.session.new_lines()
+                if new is not None and self.failure is None and sys.exc_info()[0] is None:
+                    target(float(new), label="lines of the nodes run for the first time")
 
     # -- sending and checking -------------------------------------------------------------
 

@@ -3,7 +3,8 @@
 
     launch.py SPEC.json
 
-SPEC: {"files": [launch files], "args": {name: value}, "nodes": [resolved names] or null (all)}.
+SPEC: {"files": [launch files], "args": {name: value}, "nodes": [resolved names] or null (all),
+"coverage": {resolved name: [data file, source folder]}: Python nodes run under coverage.py}.
 The launch files are read once with roslaunch's own loader; then, for every line
 {"params": {resolved name: value}} on stdin, the configuration's parameters and these (which win)
 are set on the master and the kept nodes are started (the caller kills them before the next line).
@@ -45,6 +46,10 @@ def main(spec_path):
             master.setParam(name, value)
         for node in nodes:
             node.output = "screen"
+            measured = spec.get("coverage", {}).get(rosgraph.names.ns_join(node.namespace, node.name))
+            if measured:  # its data file is written when it ends (SIGINT)
+                node.launch_prefix = f"{sys.executable} -m coverage run --parallel-mode --data-file={measured[0]} " \
+                                     f"--source={measured[1]}"
         started = [launcher.launch(node) for node in nodes]
         with open(spec_path + ".done", "w") as done:
             done.write(" ".join(map(str, [number] + [proc.pid for proc in started])))
