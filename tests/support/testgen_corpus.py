@@ -14,7 +14,7 @@ import shutil
 import subprocess
 import sys
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from support.build_cpp import build_workspace
@@ -30,6 +30,11 @@ class Outcome:
     examples: int  # launches of the nodes under test (examples run, shrinking included)
     replay: dict | None  # the replay file of the failure, if one was written
     output: str
+    coverage: dict[str, list[int]] = field(default_factory=dict)  # Python node -> [lines run, statements]
+
+    def lines(self) -> str:
+        """The line coverage of the Python nodes under test, as the bench tables show it."""
+        return ", ".join(f"{node} {run}/{total}" for node, (run, total) in sorted(self.coverage.items())) or "-"
 
     def messages(self) -> int:
         """Input messages, service calls and goals in the replay (what the shrunk failure sends)."""
@@ -85,5 +90,6 @@ def run_generated(out: Path, examples: int, seed: int, shrink_seconds: int = 60,
     seconds = time.monotonic() - start
     replays = list((out / "replay").glob("*.json")) if (out / "replay").is_dir() else []
     replay = json.loads(replays[0].read_text()) if replays else None
-    launches = json.loads(stats.read_text())["launches"] if stats.is_file() else 0
-    return Outcome(result.returncode == 0, seconds, launches, replay, result.stdout[-6000:])
+    counts = json.loads(stats.read_text()) if stats.is_file() else {}
+    return Outcome(result.returncode == 0, seconds, counts.get("launches", 0), replay, result.stdout[-6000:],
+                   counts.get("coverage", {}))
