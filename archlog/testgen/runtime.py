@@ -454,7 +454,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
                            "timeout": self.settings.response_bound})
         self._act({"op": "call", "service": service, "request": request}, now)
         self.properties.sent.append({"service": service, "request": request})
-        if not self._awaited(lambda: number in self.answered, now + self.settings.response_bound):
+        if not self._awaited(lambda: number in self.answered, now + self.settings.response_bound) and self.failure is None:
             self.failure = (f"{service} gave no response within {self.settings.response_bound:.1f} s "
                             f"(after step {len(self.actions)})")
 
