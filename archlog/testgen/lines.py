@@ -36,13 +36,18 @@ class LineCoverage:
         return new
 
     def covered(self) -> dict[str, tuple[int, int]]:
-        """Per node, the lines of its file run by any of its processes and the statements of the file."""
+        """Per node, the lines of its file run by any of its processes and the statements of the file
+        (a file coverage.py cannot parse is left out)."""
         import coverage
+        from coverage.exceptions import CoverageException
 
         self.new_lines()
         analyser = coverage.Coverage(data_file=None)
         found = {}
         for node, file in self.files.items():
-            _file, statements, _excluded, _missing, _text = analyser.analysis2(file)
+            try:
+                _file, statements, _excluded, _missing, _text = analyser.analysis2(file)
+            except CoverageException:  # not Python 3 (a Python 2 script) or gone: no statements to count
+                continue
             found[node] = (len(self.seen[node] & set(statements)), len(statements))
         return found

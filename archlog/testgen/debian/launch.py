@@ -4,7 +4,8 @@
     launch.py SPEC.json
 
 SPEC: {"files": [launch files], "args": {name: value}, "nodes": [resolved names] or null (all),
-"coverage": {resolved name: [data file, source folder]}: Python nodes run under coverage.py}.
+"coverage": {resolved name: [data file, source folder, script]}: Python nodes run under coverage.py
+(when roslaunch finds that script as the node's executable)}.
 The launch files are read once with roslaunch's own loader; then, for every line
 {"params": {resolved name: value}} on stdin, the configuration's parameters and these (which win)
 are set on the master and the kept nodes are started (the caller kills them before the next line).
@@ -21,6 +22,7 @@ import rosgraph
 import rosgraph.names
 import roslaunch.config
 import roslaunch.scriptapi
+import roslib.packages
 
 
 def main(spec_path):
@@ -47,9 +49,11 @@ def main(spec_path):
         for node in nodes:
             node.output = "screen"
             measured = spec.get("coverage", {}).get(rosgraph.names.ns_join(node.namespace, node.name))
-            if measured:  # its data file is written when it ends (SIGINT)
-                node.launch_prefix = f"{sys.executable} -m coverage run --parallel-mode --data-file={measured[0]} " \
-                                     f"--source={measured[1]}"
+            found = roslib.packages.find_node(node.package, node.type) if measured else None
+            if measured and found and os.path.realpath(found[0]) == os.path.realpath(measured[2]):
+                # its data file is written when it ends (SIGINT); a prefix of its own (nice, ...) comes first
+                prefix = f"{sys.executable} -m coverage run --parallel-mode --data-file={measured[0]} --source={measured[1]}"
+                node.launch_prefix = f"{node.launch_prefix or ''} {prefix}".strip()
         started = [launcher.launch(node) for node in nodes]
         with open(spec_path + ".done", "w") as done:
             done.write(" ".join(map(str, [number] + [proc.pid for proc in started])))
