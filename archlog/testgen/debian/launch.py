@@ -33,6 +33,13 @@ def main(spec_path):
     keep = set(spec["nodes"]) if spec["nodes"] is not None else None
     nodes = [n for n in config.nodes
              if keep is None or rosgraph.names.ns_join(n.namespace, n.name) in keep]
+    for node in nodes:
+        measured = spec.get("coverage", {}).get(rosgraph.names.ns_join(node.namespace, node.name))
+        found = roslib.packages.find_node(node.package, node.type) if measured else None
+        if measured and found and os.path.realpath(found[0]) == os.path.realpath(measured[2]):
+            # its data file is written when it ends (SIGINT); a prefix of its own (nice, ...) comes first
+            prefix = f"{sys.executable} -m coverage run --parallel-mode --data-file={measured[0]} --source={measured[1]}"
+            node.launch_prefix = f"{node.launch_prefix or ''} {prefix}".strip()
     master = rosgraph.Master("/archlog_testgen_launcher")
     launcher = roslaunch.scriptapi.ROSLaunch()
     launcher.start()
@@ -48,12 +55,6 @@ def main(spec_path):
             master.setParam(name, value)
         for node in nodes:
             node.output = "screen"
-            measured = spec.get("coverage", {}).get(rosgraph.names.ns_join(node.namespace, node.name))
-            found = roslib.packages.find_node(node.package, node.type) if measured else None
-            if measured and found and os.path.realpath(found[0]) == os.path.realpath(measured[2]):
-                # its data file is written when it ends (SIGINT); a prefix of its own (nice, ...) comes first
-                prefix = f"{sys.executable} -m coverage run --parallel-mode --data-file={measured[0]} --source={measured[1]}"
-                node.launch_prefix = f"{node.launch_prefix or ''} {prefix}".strip()
         started = [launcher.launch(node) for node in nodes]
         with open(spec_path + ".done", "w") as done:
             done.write(" ".join(map(str, [number] + [proc.pid for proc in started])))
