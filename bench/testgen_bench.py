@@ -100,6 +100,8 @@ def ros2(examples: int) -> None:
         outcome = "passed" if result.returncode == 0 else "skipped" if result.returncode == 5 else "FAILED"
         rate = f"{examples / seconds:.2f}" if outcome == "passed" else "-"
         print(f"| {system} | {' '.join(nodes) or 'all'} | {outcome} | {rate} |", flush=True)
+        if outcome == "FAILED":
+            print(result.stdout[-3000:])
     with tempfile.TemporaryDirectory() as tmp:
         out, _case = prepare(LIFECYCLE, Path(tmp))
         lifecycle = run_generated(out, examples, seed=0)
