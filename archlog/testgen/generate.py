@@ -113,8 +113,7 @@ ROS1_IMPORTS = """
 from archlog.testgen.runtime import ArchitectureMachine"""
 ROS2_IMPORTS = """
 rclpy = pytest.importorskip("rclpy", reason="a ROS 2 test: source ROS 2's setup first")
-import rclpy.action  # noqa: E402
-import rclpy.context  # noqa: E402
+{action}import rclpy.context  # noqa: E402
 import rclpy.duration  # noqa: E402
 import rclpy.executors  # noqa: E402
 import rclpy.qos  # noqa: E402
@@ -140,7 +139,8 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     types = sorted({*model["inputs"].values(), *model["outputs"].values(), *model.get("services", {}).values(),
                     *model.get("actions", {}).values(), *lifecycle})
     modules = sorted({(t.split("/")[0], _kind(t)) for t in types})
-    imports = ROS2_IMPORTS.format(modules="\n".join(
+    action = "import rclpy.action  # noqa: E402\n" if model.get("actions") else ""  # its ActionClient sends goals
+    imports = ROS2_IMPORTS.format(action=action, modules="\n".join(
         f'{m}_{kind} = pytest.importorskip("{m}.{kind}", reason="the interface package {m} is not installed")'
         for m, kind in modules)) if ros2 \
         else ROS1_IMPORTS
