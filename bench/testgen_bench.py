@@ -97,11 +97,12 @@ def ros2(examples: int) -> None:
     for system, nodes, _expected in CASES:
         with tempfile.TemporaryDirectory() as tmp:
             result, seconds = run_case(system, nodes, Path(tmp), examples)
+            reasons = [json.loads(r.read_text())["reason"] for r in Path(tmp).glob("replay/*.json")]
         outcome = "passed" if result.returncode == 0 else "skipped" if result.returncode == 5 else "FAILED"
         rate = f"{examples / seconds:.2f}" if outcome == "passed" else "-"
         print(f"| {system} | {' '.join(nodes) or 'all'} | {outcome} | {rate} |", flush=True)
         if outcome == "FAILED":
-            print(result.stdout[-3000:])
+            print(f"reason: {'; '.join(reasons) or '-'}\n{result.stdout[-3000:]}")
     with tempfile.TemporaryDirectory() as tmp:
         out, _case = prepare(LIFECYCLE, Path(tmp))
         lifecycle = run_generated(out, examples, seed=0)
