@@ -149,7 +149,8 @@ def oracle(examples: int, checkouts: list[Path]) -> None:
         print(f"| {program.package}/{program.executable} | {what} | {outcome.examples if outcome else 0} | {verdict} "
               f"| {rate} | {outcome.lines() if outcome else '-'} |", flush=True)
         if outcome is not None and not outcome.passed:
-            print(f"reason: {outcome.replay['reason'] if outcome.replay else '-'}\n{outcome.output[-3000:]}")
+            at = outcome.output.find("property failed:")  # the report: the steps, then the nodes' output
+            print(f"reason: {outcome.replay['reason'] if outcome.replay else '-'}\n{outcome.output[at:at + 3000]}")
     print(f"\nsoundness: {failures} false failure(s) on {len(chosen)} programs")
 
 

@@ -91,5 +91,5 @@ def run_generated(out: Path, examples: int, seed: int, shrink_seconds: int = 60,
     replays = list((out / "replay").glob("*.json")) if (out / "replay").is_dir() else []
     replay = json.loads(replays[0].read_text()) if replays else None
     counts = json.loads(stats.read_text()) if stats.is_file() else {}
-    return Outcome(result.returncode == 0, seconds, counts.get("launches", 0), replay, result.stdout[-6000:],
+    return Outcome(result.returncode == 0, seconds, counts.get("launches", 0), replay, result.stdout[-20000:],
                    counts.get("coverage", {}))
