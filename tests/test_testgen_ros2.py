@@ -100,7 +100,7 @@ def test_an_action_under_test_gets_drawn_goals(tmp_path: Path, monkeypatch: pyte
     and serves the others (a feedback per number, then the result)."""
     domain = min(private_domain(), 232)
     monkeypatch.setenv("ARCHLOG_TESTGEN_DOMAINS", f"{domain}-{domain}")
-    actions = _twins(ACTION, tmp_path, "/sequencer", "send_goal_fibonacci", (6, 3), steps=3, shrink_seconds=4)
+    actions = _twins(ACTION, tmp_path, "/sequencer", "send_goal_fibonacci", (4, 2), steps=3, shrink_seconds=3)
     goals = [a["goal"] for a in actions if a["op"] == "goal"]
     assert goals[-1] == {"order": 0}, goals
 
