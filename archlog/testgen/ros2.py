@@ -368,17 +368,25 @@ class Ros2Session:
         """The live graph of the nodes under test, minus ROS 2's infrastructure (/rosout,
         /parameter_events, the parameter services) and the built-in ports the model lists (left out of
         the recovered interface too); an action server is its action's name (its hidden `_action`
-        topics and services are not listed, nor those of action clients)."""
+        topics and services are not listed, nor those of action clients). A node listed without any
+        endpoint, not even the /rosout publisher every node has, is left out: the graph's by-node answer
+        is then about a participant it knows only in part (seen at a load of 10: a node's ports missing
+        for the whole settling bound while the node ran), not about the node."""
         found: dict[str, set] = {"publishers": set(), "subscribers": set(), "services": set(), "action_servers": set()}
         builtin = {(node, name) for node, name in self.model.get("builtin", [])}
         names = {n: v for n, v in self._names().items() if n in self.model["nodes"]}
-        for full, (name, ns) in names.items():
-            for kind, read in (("publishers", self.node.get_publisher_names_and_types_by_node),
-                               ("subscribers", self.node.get_subscriber_names_and_types_by_node)):
-                found[kind] |= {(full, t, ty) for t, types in read(name, ns) if t not in observe.ROS2_INFRA_TOPICS
+        for full, (name, ns) in list(names.items()):
+            publishers = self.node.get_publisher_names_and_types_by_node(name, ns)
+            subscribers = self.node.get_subscriber_names_and_types_by_node(name, ns)
+            services = self.node.get_service_names_and_types_by_node(name, ns)
+            if not (publishers or subscribers or services):
+                del names[full]
+                continue
+            for kind, ports in (("publishers", publishers), ("subscribers", subscribers)):
+                found[kind] |= {(full, t, ty) for t, types in ports if t not in observe.ROS2_INFRA_TOPICS
                                 and ACTION_PART not in t and (full, t) not in builtin for ty in types}
             parameters = {f"{full}/{x}" for x in observe.ROS2_PARAMETER_SERVICES}
-            for s, _types in self.node.get_service_names_and_types_by_node(name, ns):
+            for s, _types in services:
                 if s.endswith(ACTION_PART + "send_goal"):
                     found["action_servers"].add((full, s.removesuffix(ACTION_PART + "send_goal")))
                 elif s not in parameters and ACTION_PART not in s and (full, s) not in builtin:
