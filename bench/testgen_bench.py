@@ -36,7 +36,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 from rclpy_oracle import Program, programs  # noqa: E402
 from support.ros2_nodes import private_domain  # noqa: E402
 from support.testgen_corpus import Outcome, prepare, run_generated, systems  # noqa: E402
-from test_testgen_ros2 import CASES, LIFECYCLE, SERVICE, run_case  # noqa: E402
+from test_testgen_ros2 import ACTION, CASES, LIFECYCLE, SERVICE, run_case  # noqa: E402
 
 DEBIAN = {"robot_state_publisher": "ros-robot-state-publisher-*", "joint_state_publisher": "ros-joint-state-publisher-*"}
 
@@ -68,8 +68,8 @@ def main() -> None:
     false_failures, found_all, worst_all = 0, 0, 0
     chosen = [s for s in systems() if not options.names or s.name in options.names]
     print("| system | fixed twin: examples/s | defect found (seeds) | median s to report | median examples "
-          "| max messages after shrinking |")
-    print("|---|---|---|---|---|---|")
+          "| max messages after shrinking | fixed twin: lines run |")
+    print("|---|---|---|---|---|---|---|")
     for system in chosen:
         with tempfile.TemporaryDirectory() as tmp:
             out, _case = prepare(system / "clean", Path(tmp) / "clean")
@@ -81,8 +81,8 @@ def main() -> None:
         seconds = statistics.median(r.seconds for r in found) if found else float("nan")
         examples = statistics.median(r.examples for r in found) if found else float("nan")
         worst = max((r.messages() for r in found), default=0)
-        print(f"| {system.name} | {rate} | {len(found)}/{len(runs)} | {seconds:.1f} | {examples:.0f} | {worst} |",
-              flush=True)
+        print(f"| {system.name} | {rate} | {len(found)}/{len(runs)} | {seconds:.1f} | {examples:.0f} | {worst} "
+              f"| {clean.lines()} |", flush=True)
         false_failures += not clean.passed
         found_all += len(found) == len(runs)
         worst_all = max(worst_all, worst)
@@ -97,9 +97,12 @@ def ros2(examples: int) -> None:
     for system, nodes, _expected in CASES:
         with tempfile.TemporaryDirectory() as tmp:
             result, seconds = run_case(system, nodes, Path(tmp), examples)
+            reasons = [json.loads(r.read_text())["reason"] for r in Path(tmp).glob("replay/*.json")]
         outcome = "passed" if result.returncode == 0 else "skipped" if result.returncode == 5 else "FAILED"
         rate = f"{examples / seconds:.2f}" if outcome == "passed" else "-"
         print(f"| {system} | {' '.join(nodes) or 'all'} | {outcome} | {rate} |", flush=True)
+        if outcome == "FAILED":
+            print(f"reason: {'; '.join(reasons) or '-'}\n{result.stdout[-3000:]}")
     with tempfile.TemporaryDirectory() as tmp:
         out, _case = prepare(LIFECYCLE, Path(tmp))
         lifecycle = run_generated(out, examples, seed=0)
@@ -109,23 +112,25 @@ def ros2(examples: int) -> None:
 
 
 def ros2_twins(examples: int, seeds: int, shrink_seconds: int) -> None:
-    """corpus/testgen_ros2: the fixed twin for `examples` examples, the defect's search on each seed."""
-    with tempfile.TemporaryDirectory() as tmp:
-        out, _case = prepare(SERVICE / "clean", Path(tmp) / "clean")
-        clean = run_generated(out, examples, seed=0)
-        out, _case = prepare(SERVICE / "buggy", Path(tmp) / "buggy")
-        runs = [run_generated(out, examples, seed, shrink_seconds) for seed in range(seeds)]
-    found = [r for r in runs if not r.passed and r.replay is not None]
+    """corpus/testgen_ros2's twins (a service, an action): the fixed twin for `examples` examples, the
+    defect's search on each seed."""
     print("\n| system | fixed twin: examples/s | defect found (seeds) | median s to report | median examples "
-          "| max calls after shrinking | reason |\n|---|---|---|---|---|---|---|")
-    rate = f"{clean.examples / clean.seconds:.2f}" + ("" if clean.passed else " (FAILED)")
-    reasons = sorted({r.replay["reason"].split(" (")[0] for r in found if r.replay})
-    print(f"| {SERVICE.name} | {rate} | {len(found)}/{len(runs)} "
-          f"| {statistics.median(r.seconds for r in found) if found else float('nan'):.1f} "
-          f"| {statistics.median(r.examples for r in found) if found else float('nan'):.0f} "
-          f"| {max((r.messages() for r in found), default=0)} | {'; '.join(reasons)} |", flush=True)
-    if not clean.passed:
-        print(clean.output[-3000:])
+          "| max calls or goals after shrinking | reason | fixed twin: lines run |\n|---|---|---|---|---|---|---|---|")
+    for system in (SERVICE, ACTION):
+        with tempfile.TemporaryDirectory() as tmp:
+            out, _case = prepare(system / "clean", Path(tmp) / "clean")
+            clean = run_generated(out, examples, seed=0)
+            out, _case = prepare(system / "buggy", Path(tmp) / "buggy")
+            runs = [run_generated(out, examples, seed, shrink_seconds) for seed in range(seeds)]
+        found = [r for r in runs if not r.passed and r.replay is not None]
+        rate = f"{clean.examples / clean.seconds:.2f}" + ("" if clean.passed else " (FAILED)")
+        reasons = sorted({r.replay["reason"].split(" (")[0] for r in found if r.replay})
+        print(f"| {system.name} | {rate} | {len(found)}/{len(runs)} "
+              f"| {statistics.median(r.seconds for r in found) if found else float('nan'):.1f} "
+              f"| {statistics.median(r.examples for r in found) if found else float('nan'):.0f} "
+              f"| {max((r.messages() for r in found), default=0)} | {'; '.join(reasons)} | {clean.lines()} |", flush=True)
+        if not clean.passed:
+            print(clean.output[-3000:])
 
 
 def oracle(examples: int, checkouts: list[Path]) -> None:
@@ -133,7 +138,7 @@ def oracle(examples: int, checkouts: list[Path]) -> None:
     results = json.loads((ROOT / "bench" / "results" / "rclpy_oracle.json").read_text())["programs"]
     observed = {r["program"] for r in results if r["observed"]}
     chosen = [p for p in programs(checkouts) if f"{p.package}/{p.executable}" in observed]
-    print("| program | inputs, outputs, services | examples | outcome | examples/s |\n|---|---|---|---|---|")
+    print("| program | open ports | examples | outcome | examples/s | lines run |\n|---|---|---|---|---|---|")
     failures = 0
     for program in chosen:
         with tempfile.TemporaryDirectory() as tmp:
@@ -142,9 +147,10 @@ def oracle(examples: int, checkouts: list[Path]) -> None:
         verdict = "nothing to test" if outcome is None else "passed" if outcome.passed else "FAILED"
         rate = f"{outcome.examples / outcome.seconds:.2f}" if outcome is not None else "-"
         print(f"| {program.package}/{program.executable} | {what} | {outcome.examples if outcome else 0} | {verdict} "
-              f"| {rate} |", flush=True)
+              f"| {rate} | {outcome.lines() if outcome else '-'} |", flush=True)
         if outcome is not None and not outcome.passed:
-            print(outcome.output[-3000:])
+            at = outcome.output.find("property failed:")  # the report: the steps, then the nodes' output
+            print(f"reason: {outcome.replay['reason'] if outcome.replay else '-'}\n{outcome.output[at:at + 3000]}")
     print(f"\nsoundness: {failures} false failure(s) on {len(chosen)} programs")
 
 
@@ -163,8 +169,8 @@ def _oracle_program(program: Program, tmp: Path, examples: int) -> tuple[Outcome
 
 
 def debian(examples: int, debsrc: Path) -> None:
-    print("| node | examples | passed | examples/s |")
-    print("|---|---|---|---|")
+    print("| node | examples | passed | examples/s | lines run |")
+    print("|---|---|---|---|---|")
     for node, source in DEBIAN.items():
         with tempfile.TemporaryDirectory() as tmp:
             out = Path(tmp)
@@ -173,7 +179,8 @@ def debian(examples: int, debsrc: Path) -> None:
                             str(ROOT / "bench" / "debian_nodes" / f"{node}.launch"), "--output", str(out)],
                            check=True, capture_output=True)
             outcome = run_generated(out, examples, seed=0, timeout=3600)
-        print(f"| {node} | {outcome.examples} | {outcome.passed} | {outcome.examples / outcome.seconds:.2f} |", flush=True)
+        print(f"| {node} | {outcome.examples} | {outcome.passed} | {outcome.examples / outcome.seconds:.2f} "
+              f"| {outcome.lines()} |", flush=True)
         if not outcome.passed:
             print(outcome.output[-3000:])
 

@@ -267,6 +267,7 @@ def _ros(test):
 
 BUDGET = {"examples": 12, "steps": 5, "shrink_seconds": 8}  # for a buggy system; a fixed twin runs 2 examples
 REPLAYED = "zero_division"  # its replay file is run again with `archlog replay` (roscpp: quick to start)
+COVERED = "guarded_division"  # its fixed twin's line coverage is in the report
 
 
 @pytest.mark.parametrize("system", systems(), ids=lambda p: p.name)
@@ -289,6 +290,8 @@ def test_generated_test_finds_the_defect_and_passes_the_fixed_twin(system: Path,
     assert not buggy.passed and buggy.replay is not None, buggy.output
     assert buggy.messages() <= 3, buggy.replay
     assert clean.passed, clean.output
+    if system.name == COVERED:  # a rospy node: roslaunch ran it under coverage.py
+        assert 0 < clean.coverage["/fill_ratio"][0] <= clean.coverage["/fill_ratio"][1], clean.output
     if system.name == REPLAYED:
         replay = next((out / "replay").glob("*.json"))
         result = subprocess.run([sys.executable, "-m", "archlog", "replay", str(replay)], capture_output=True, text=True,

@@ -2,8 +2,8 @@
 as plain processes (no ros2cli), typed parameters, test publishers offering the QoS the nodes ask
 for, on a private domain. A correct system's generated test passes; a system with a node that is
 not a Python node of its workspace (C++ without ros2cli here) is skipped with the reason. A node whose
-only interface is a service gets calls with drawn requests, and the line coverage of its file is in
-the report."""
+only interface is a service gets calls with drawn requests, one whose only interface is an action
+gets goals with drawn fields, and the line coverage of its file is in the report."""
 
 from __future__ import annotations
 
@@ -23,6 +23,7 @@ ROOT = Path(__file__).resolve().parents[1]
 CORPUS = ROOT / "corpus" / "ros2"
 SERVICE = ROOT / "corpus" / "testgen_ros2" / "service_division"  # a node whose only interface is a service
 LIFECYCLE = ROOT / "corpus" / "testgen_ros2" / "lifecycle_scaler" / "clean"  # ports made in on_configure
+ACTION = ROOT / "corpus" / "testgen_ros2" / "action_order"  # a node whose only interface is an action
 # (system, nodes under test: all when empty, what the generated test does); each a clean twin
 CASES = [("qos_deadline_watchdog", ["/base/watchdog"], "passed"), ("param_name_typo_py", [], "passed"),
          ("yaml_remap_near_miss", ["/robot1/smoother"], "passed"), ("qos_latched_map", [], "skipped")]
@@ -62,24 +63,46 @@ def test_generated_test_passes_a_correct_ros2_system(system: str, nodes: list[st
         assert result.returncode == 0 and "1 passed" in result.stdout, result.stdout[-4000:] + result.stderr[-2000:]
 
 
+def _twins(system: Path, tmp: Path, node: str, rule: str, examples: tuple[int, int], steps: int,
+           shrink_seconds: int) -> list[dict]:
+    """Generate and run both twins of a corpus/testgen_ros2 system (`examples`: the buggy one's search
+    budget, the fixed one's run): the buggy one's test has the `rule`, fails with `node` dead, shrunk to
+    at most 3 steps; the fixed one's passes, and the report has its node's line coverage (coverage.py
+    in the node's process: some lines but not all). Returns the actions of the buggy one's replay."""
+    out, _case = prepare(system / "buggy", tmp / "buggy")
+    assert f"def {rule}(self, " in next(out.glob("test_*.py")).read_text()
+    buggy = run_generated(out, examples[0], seed=0, shrink_seconds=shrink_seconds, steps=steps, timeout=300)
+    assert not buggy.passed and buggy.replay is not None, buggy.output
+    assert buggy.replay["reason"].startswith(f"node(s) died: {node}"), buggy.replay["reason"]
+    assert 1 <= buggy.messages() <= 3, buggy.replay
+    out, _case = prepare(system / "clean", tmp / "clean")
+    clean = run_generated(out, examples[1], seed=0, steps=steps, timeout=300)
+    assert clean.passed and clean.examples >= examples[1], clean.output
+    covered = re.search(rf"{node} ran (\d+) of (\d+) lines", clean.output)
+    assert covered and 0 < int(covered[1]) < int(covered[2]), clean.output
+    return buggy.replay["actions"]
+
+
 def test_a_service_under_test_gets_drawn_requests(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """The planner dies on a zero tolerance (buggy twin): found, shrunk to at most 3 calls; its fixed
-    twin answers every request (an empty plan for a tolerance that is not a positive length)."""
+    twin answers every request (an empty plan for a tolerance that is not a positive length: the
+    guard's early return and more run)."""
     domain = min(private_domain(), 232)
     monkeypatch.setenv("ARCHLOG_TESTGEN_DOMAINS", f"{domain}-{domain}")
-    out, _case = prepare(SERVICE / "buggy", tmp_path / "buggy")
-    assert "def call_plan_route(self, request):" in (out / "test_planner.py").read_text()
-    buggy = run_generated(out, 12, seed=0, shrink_seconds=8, steps=5, timeout=300)
-    assert not buggy.passed and buggy.replay is not None, buggy.output
-    assert buggy.replay["reason"].startswith("node(s) died: /planner"), buggy.replay["reason"]
-    calls = [a["request"] for a in buggy.replay["actions"] if a["op"] == "call"]
-    assert 1 <= buggy.messages() <= 3, buggy.replay
+    actions = _twins(SERVICE, tmp_path, "/planner", "call_plan_route", (12, 6), steps=5, shrink_seconds=8)
+    calls = [a["request"] for a in actions if a["op"] == "call"]
     assert calls and str(calls[-1]["tolerance"]) in ("0.0", "-0.0", "nan"), calls  # the call that kills it
-    out, _case = prepare(SERVICE / "clean", tmp_path / "clean")
-    clean = run_generated(out, 6, seed=0, steps=5, timeout=300)
-    assert clean.passed and clean.examples >= 6, clean.output
-    covered = re.search(r"/planner ran (\d+) of (\d+) lines", clean.output)  # coverage.py in the node's process
-    assert covered and 0 < int(covered[1]) < int(covered[2]), clean.output  # the guard's early return and more
+
+
+def test_an_action_under_test_gets_drawn_goals(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The sequencer's goal callback divides its time budget by the goal's order (buggy twin): found,
+    shrunk to at most 3 goals, the last of order 0; its fixed twin rejects the orders it cannot serve
+    and serves the others (a feedback per number, then the result)."""
+    domain = min(private_domain(), 232)
+    monkeypatch.setenv("ARCHLOG_TESTGEN_DOMAINS", f"{domain}-{domain}")
+    actions = _twins(ACTION, tmp_path, "/sequencer", "send_goal_fibonacci", (4, 2), steps=3, shrink_seconds=3)
+    goals = [a["goal"] for a in actions if a["op"] == "goal"]
+    assert goals[-1] == {"order": 0}, goals
 
 
 def test_a_lifecycle_node_is_activated_and_its_builtin_ports_left_out(tmp_path: Path,

@@ -29,12 +29,12 @@ def testgen_command(analysis: Analysis, ctl: clingo.Control, paths: list[Path], 
     for diagnostic in analysis.diagnostics.items:
         if diagnostic.code.startswith("testgen"):
             click.echo(str(diagnostic), err=True)
-    if not model["inputs"] and not model["outputs"] and not model["services"]:
-        raise click.UsageError("the nodes under test have no open input, output nor service to test (try --nodes)")
+    if not any(model[part] for part in ("inputs", "outputs", "services", "actions")):
+        raise click.UsageError("the nodes under test have no open input, output, service nor action to test (try --nodes)")
     stem = name or Path(launches[0]).name.split(".")[0]
     written = write_test(model, settings, output, re.sub(r"\W", "_", stem))
     for path in written:
         click.echo(f"wrote {path}")
     click.echo(f"{len(model['inputs'])} open input(s), {len(model['outputs'])} watched output(s), "
-               f"{len(model['services'])} open service(s); "
+               f"{len(model['services'])} open service(s), {len(model['actions'])} open action(s); "
                f"run: python -m pytest {output}", file=sys.stdout)

@@ -1,6 +1,6 @@
 """Write the generated test for a test model: `test_NAME.py` (regenerated every time: the model,
-the settings, one `publish_<topic>` rule per open input and one `call_<service>` rule per open
-service; it imports its runtime from
+the settings, one `publish_<topic>` rule per open input, one `call_<service>` rule per open
+service and one `send_goal_<action>` rule per open action; it imports its runtime from
 archlog.testgen) and `NAME_properties.py` (the user's properties, written only when absent).
 A ROS 2 configuration's module imports rclpy (skipped without it) and the message classes of its
 inputs and outputs from their ROS 2 packages, and extends ros2.Ros2Machine."""
@@ -24,7 +24,8 @@ Run with pytest; ARCHLOG_TESTGEN_EXAMPLES sets the number of examples (default {
 ARCHLOG_TESTGEN_STEPS the steps per example, ARCHLOG_TESTGEN_SHRINK_SECONDS the time spent shrinking
 a failure (default 60). Each example starts the nodes under test afresh on a private {private}
 (about 1-3 s an example) unless reuse is set. Where coverage.py is installed, the line coverage of
-each Python node started by the test (ROS 2) is in the report (ARCHLOG_TESTGEN_COVERAGE=0: not measured).
+each Python node started by the test is in the report, and inputs that run lines for the first time
+are preferred (ARCHLOG_TESTGEN_COVERAGE=0: not measured; ROS 1 needs Debian's python3-coverage).
 {undecided}"""
 
 import os
@@ -61,6 +62,11 @@ CALL = '''
     def call_{ident}(self, request):
         self.call("{service}", request)
 '''
+GOAL = '''
+    @rule(goal=STRATEGIES.message("{type}"))
+    def send_goal_{ident}(self, goal):
+        self.send_goal("{action}", goal)
+'''
 
 FOOTER = '''
 
@@ -88,9 +94,11 @@ if unstartable(MODEL):
 
 PROPERTIES = '''"""Properties of {what} that the generated test_{name}.py checks (archlog testgen writes this
 file once and never overwrites it). Each hook is called with every message received on its topic
-or response of its service (an Event: topic or service, time, msg as a dict); `invariant` after
-every step. self.history holds every event of the example so far, self.sent every message sent and
-service request made. Assert what must hold."""
+or response of its service, and with every answer, feedback and result of a goal sent to its action
+(an Event: topic, service or action, time, msg as a dict; an action's msg is {{"goal": N, "accepted":
+bool}}, {{"goal": N, "feedback": ...}} or {{"goal": N, "status": S, "result": ...}}); `invariant` after
+every step. self.history holds every event of the example so far, self.sent every message sent,
+service request made and goal sent. Assert what must hold."""
 
 from archlog.testgen.runtime import Event, Properties as Generated
 
@@ -105,7 +113,7 @@ ROS1_IMPORTS = """
 from archlog.testgen.runtime import ArchitectureMachine"""
 ROS2_IMPORTS = """
 rclpy = pytest.importorskip("rclpy", reason="a ROS 2 test: source ROS 2's setup first")
-import rclpy.context  # noqa: E402
+{action}import rclpy.context  # noqa: E402
 import rclpy.duration  # noqa: E402
 import rclpy.executors  # noqa: E402
 import rclpy.qos  # noqa: E402
@@ -128,9 +136,11 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     properties = f"{name}_properties.py"
     ros2 = model.get("ros") == 2
     lifecycle = {LIFECYCLE} if model.get("lifecycle") else set()
-    types = sorted({*model["inputs"].values(), *model["outputs"].values(), *model.get("services", {}).values(), *lifecycle})
+    types = sorted({*model["inputs"].values(), *model["outputs"].values(), *model.get("services", {}).values(),
+                    *model.get("actions", {}).values(), *lifecycle})
     modules = sorted({(t.split("/")[0], _kind(t)) for t in types})
-    imports = ROS2_IMPORTS.format(modules="\n".join(
+    action = "import rclpy.action  # noqa: E402\n" if model.get("actions") else ""  # its ActionClient sends goals
+    imports = ROS2_IMPORTS.format(action=action, modules="\n".join(
         f'{m}_{kind} = pytest.importorskip("{m}.{kind}", reason="the interface package {m} is not installed")'
         for m, kind in modules)) if ros2 \
         else ROS1_IMPORTS
@@ -147,6 +157,9 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     for service, type_ in model.get("services", {}).items():
         if not model["specs"].get(type_, {}).get("missing"):
             text += CALL.format(type=type_, ident=hook_name(service).removeprefix("on_"), service=service)
+    for action, type_ in model.get("actions", {}).items():
+        if not model["specs"].get(type_, {}).get("missing"):
+            text += GOAL.format(type=type_, ident=hook_name(action).removeprefix("on_"), action=action)
     text += FOOTER.format(cls=cls, examples=examples)
     if ros2:
         text += UNSTARTABLE
@@ -154,7 +167,7 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
     written[0].write_text(text, encoding="utf-8")
     user = output / properties
     if not user.exists():
-        watched = {**model["outputs"], **model.get("services", {})}
+        watched = {**model["outputs"], **model.get("services", {}), **model.get("actions", {})}
         hooks = "".join(HOOK.format(hook=hook_name(t), topic=t, type=ty) for t, ty in watched.items())
         user.write_text(PROPERTIES.format(what=what, name=name, hooks=hooks), encoding="utf-8")
         written.append(user)
@@ -162,8 +175,9 @@ def write_test(model: dict[str, Any], settings: Settings, output: Path, name: st
 
 
 def _kind(type_: str) -> str:
-    """The module of a ROS 2 interface type's class: `srv` for `pkg/srv/Name`, else `msg`."""
-    return "srv" if "/srv/" in type_ else "msg"
+    """The module of a ROS 2 interface type's class: `srv` for `pkg/srv/Name`, `action` for
+    `pkg/action/Name`, else `msg`."""
+    return next((kind for kind in ("srv", "action") if f"/{kind}/" in type_), "msg")
 
 
 def _undecided(model: dict[str, Any]) -> str:

@@ -1,14 +1,16 @@
 """What a generated test needs to know of the recovered configuration, as plain JSON-able data:
-the nodes under test, their open inputs and outputs with types, the services they provide that no
-node of the configuration calls (open services: the test calls them), the recovered interface, the
+the nodes under test, their open inputs and outputs with types, the services and actions they provide
+that no node of the configuration calls (open services and actions: the test calls them and sends
+them goals), the recovered interface (ROS 2: with its action servers), the
 built-in ports of the nodes under test (not compared with the live graph), the lifecycle nodes
 (configured and activated after each start, as a deployment would), the periodic outputs, the inputs
 each output requires and those it must follow (liveness.py), the parameters the nodes read, and the
-message definitions of the inputs' types and of the services' requests (outputs are recorded by
+message definitions of the inputs' types, of the services' requests and of the actions' goals (outputs are recorded by
 the bridge with the installed message classes). A configuration whose types are ROS 2's (`pkg/msg/Name`) is `"ros": 2`; its model
 also holds how to start each node under test (package, executable, remaps, the configuration's
 parameters, its Python script or entry point), as a ROS 2 test starts them itself, and the QoS its
-publishers must offer."""
+publishers must offer; a ROS 1 model the Python script of each node under test that is one (roslaunch
+runs it under coverage.py)."""
 
 from __future__ import annotations
 
@@ -19,7 +21,7 @@ import clingo
 
 from archlog.analysis import Analysis, resolve_launch
 from archlog.facts.store import FactStore
-from archlog.observe import Architecture, from_facts
+from archlog.observe import KINDS, Architecture, from_facts
 from archlog.reports.behavior import behavior_model
 from archlog.testgen.liveness import Output, follows, seconds
 from archlog.testgen.msgspec import message_specs
@@ -56,6 +58,10 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     services = {str(s): str(ty) for p, n, s, ty in store.rows("service_server")
                 if str(n) in chosen and p not in builtin and isinstance(s, str) and isinstance(ty, str)
                 and (nodes or str(s) not in called)}
+    goals = {str(a) for _p, _n, a, _ty in store.rows("action_client")}
+    actions = {str(a): str(ty) for p, n, a, ty in store.rows("action_server")
+               if str(n) in chosen and p not in builtin and isinstance(a, str) and isinstance(ty, str)
+               and "/action/" in ty and (nodes or str(a) not in goals)}
     inputs = {str(t): str(ty) for _p, n, t, ty in ports["subscriber"]
               if n in chosen and (nodes or t not in published) and isinstance(ty, str)}
     outputs = {str(t): str(ty) for _p, n, t, ty in ports["publisher"]
@@ -64,18 +70,23 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
     for pid, n, t, ty in ports["subscriber"]:
         if t in inputs and n in chosen:
             where.setdefault(str(ty), (store.location(pid) or ("", 0, 0))[:2])
-    for server, node, service, kind in store.rows("service_server"):
-        if service in services and node in chosen:
-            where.setdefault(str(kind), (store.location(str(server)) or ("", 0, 0))[:2])
-    part = from_facts(store).restricted(set(chosen))
-    interface = Architecture(frozenset(chosen), part.publishers, part.subscribers, part.services)
+    for relation, served in (("service_server", services), ("action_server", actions)):
+        for server, node, name, kind in store.rows(relation):
+            if name in served and node in chosen:
+                where.setdefault(str(kind), (store.location(str(server)) or ("", 0, 0))[:2])
     periodic, requires, follow, undecided = _behavior(analysis, ctl, chosen, outputs, inputs)
     params = {str(name): (None if isinstance(default, Unknown) else str(default))
               for _p, n, name, default in store.rows("param_read") if str(n) in chosen and not isinstance(name, Unknown)}
-    ros = 2 if any("/msg/" in ty or "/srv/" in ty for ty in (*inputs.values(), *outputs.values(), *services.values())) else 1
+    ros = 2 if any(f"/{kind}/" in ty for ty in (*inputs.values(), *outputs.values(), *services.values(), *actions.values())
+                   for kind in ("msg", "srv", "action")) else 1
+    part = from_facts(store).restricted(set(chosen))  # ROS 2: action servers too, as the live graph shows them
+    interface = Architecture(frozenset(chosen), part.publishers, part.subscribers, part.services,
+                             action_servers=part.action_servers if ros == 2 else frozenset(),
+                             kinds=(*KINDS, "action_servers") if ros == 2 else KINDS)
     return {
         "ros": ros,
         "commands": _commands(analysis, chosen) if ros == 2 else [],
+        "scripts": _scripts(analysis, chosen) if ros == 1 else {},
         "qos": _qos(store, chosen, inputs) if ros == 2 else {},
         "paths": [str(p.resolve()) for p in paths],
         "launch": [str(resolve_launch(spec, analysis.workspace).resolve()) for spec in launches],
@@ -85,6 +96,7 @@ def test_model(analysis: Analysis, ctl: clingo.Control, paths: list[Path], launc
         "inputs": dict(sorted(inputs.items())),
         "outputs": dict(sorted(outputs.items())),
         "services": dict(sorted(services.items())),
+        "actions": dict(sorted(actions.items())),
         "interface": interface.to_json(),
         "builtin": sorted([n, name] for ports in own.values() for n, name in ports),
         "lifecycle": lifecycle,
@@ -122,6 +134,13 @@ def _commands(analysis: Analysis, chosen: list[str]) -> list[dict[str, Any]]:
                                         if any(name.startswith(f"{n}/") for n in names)},
                              **_python_start(analysis, pkg, exe)})
     return commands
+
+
+def _scripts(analysis: Analysis, chosen: list[str]) -> dict[str, str]:
+    """The Python script of each ROS 1 node under test that is one (its line coverage is measured)."""
+    scripts = {str(node): _python_start(analysis, str(pkg), str(exe)).get("script") for node, pkg, exe, _e
+               in analysis.store.rows("node") if str(node) in chosen}
+    return {node: script for node, script in sorted(scripts.items()) if script}
 
 
 def _python_start(analysis: Analysis, pkg: str, exe: str) -> dict[str, str]:

@@ -35,7 +35,7 @@ Specs = dict[str, dict]
 
 def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagnostics: DiagnosticSink) -> Specs:
     """The definitions of `types` (each with the file and line of a port using it; a service type's is
-    its request's) and of every message type nested in them; a type without a definition is a
+    its request's, an action type's its goal's) and of every message type nested in them; a type without a definition is a
     diagnostic there (its topic gets no strategy)."""
     files = message_files(workspace)
     specs: Specs = {}
@@ -47,8 +47,8 @@ def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagn
         if name in ROS2_BUILTIN:
             specs[name] = ROS2_BUILTIN[name]
             continue
-        kind_path = files.get(name) or files.get(name.replace("/msg/", "/").replace("/srv/", "/"))
-        if kind_path is None or kind_path[0] not in ("msg", "srv"):
+        kind_path = files.get(name) or files.get(re.sub(r"/(msg|srv|action)/", "/", name))
+        if kind_path is None:
             diagnostics.add(*where, "testgen-message", f"no definition found for message type {name}")
             specs[name] = {"fields": [], "constants": {}, "missing": True}
             continue
@@ -60,9 +60,9 @@ def message_specs(workspace: Workspace, types: dict[str, tuple[str, int]], diagn
             specs[name] = {"fields": [], "constants": {}, "missing": True}
             continue
         shown = workspace.display(path)
-        if kind_path[0] == "srv":  # a service's request: the part before the separator
+        if kind_path[0] != "msg":  # a service's request, an action's goal: the part before the separator
             text = re.split(r"^---\s*$", text, maxsplit=1, flags=re.MULTILINE)[0]
-        specs[name] = parse_msg(text, name.split("/")[0], shown, diagnostics, ros2="/msg/" in name or "/srv/" in name)
+        specs[name] = parse_msg(text, name.split("/")[0], shown, diagnostics, ros2=bool(re.search(r"/(msg|srv|action)/", name)))
         todo += [(base, (shown, 1)) for _n, base, _a in specs[name]["fields"] if base not in BUILTIN]
     return specs
 

@@ -1,9 +1,9 @@
 """The ROS 2 side of a generated test: the nodes under test started as processes (a Python node's
 entry point or script, else `ros2 run`; name, namespace, remaps and typed parameters as recovered) on
-a private DDS domain, fed, called and
-watched by an rclpy node inside the test process, with the message classes the generated module
-imports. `Ros2Session` has the interface of runtime.Session, so the state machine, its steps and
-its properties are the same for ROS 1 and ROS 2.
+a private DDS domain, fed, called and watched by an rclpy node inside the test process (its clients
+call the open services and send goals to the open actions), with the message classes the generated
+module imports. `Ros2Session` has the interface of runtime.Session, so the state machine, its steps
+and its properties are the same for ROS 1 and ROS 2.
 
 archlog never imports rclpy: the generated module does (it is skipped where ROS 2 is missing) and
 hands it to the machine with the message classes.
@@ -30,12 +30,14 @@ from typing import Any
 
 from archlog import observe
 from archlog.testgen import processes
-from archlog.testgen.runtime import ArchitectureMachine, write_stats
+from archlog.testgen.lines import LineCoverage
+from archlog.testgen.runtime import ArchitectureMachine, measuring, write_stats
 
 _POLL = 0.05
 MAX_DOMAIN = 232
 LIFECYCLE = "lifecycle_msgs/srv/ChangeState"  # the service a lifecycle node is configured and activated by
 TRANSITIONS = (1, 3)  # configure, activate (lifecycle_msgs/msg/Transition)
+ACTION_PART = "/_action/"  # an action's topics and services are named ACTION + this + their role
 
 
 def message_class(type_: str) -> type:
@@ -128,21 +130,6 @@ def node_file(node: dict[str, Any]) -> str:
     return str(module / "__init__.py" if module.is_dir() else module.with_suffix(".py"))
 
 
-def line_coverage(folder: Path, commands: list[dict[str, Any]]) -> dict[str, tuple[int, int]]:
-    """Per Python node under test, the lines of its file run by any of its processes (coverage.py data
-    in `folder`) and the lines of the file: node -> (covered, statements)."""
-    import coverage
-
-    data = coverage.Coverage(data_file=str(folder / "data"))
-    data.combine([str(folder)], keep=True)
-    found: dict[str, tuple[int, int]] = {}
-    for node in commands:
-        if node.get("entry") or node.get("script"):
-            _file, statements, _excluded, missing, _text = data.analysis2(node_file(node))
-            found[node["name"]] = (len(statements) - len(missing), len(statements))
-    return found
-
-
 def _typed(value: Any) -> str:
     """A parameter value for `-p`, which reads it as YAML: a number or boolean as itself; a text as
     written, so that the node reads it typed as launch_ros would (`false` a boolean, `0.8` a double)."""
@@ -202,8 +189,10 @@ class Ros2Session:
         # the nodes' standard input: a pseudo-terminal, as `ros2 run` in a shell gives them (keyboard
         # teleops and prompts wait on it; nothing is typed), open until the session closes
         self.terminal = pty.openpty()
-        measured = importlib.util.find_spec("coverage") is not None and os.environ.get("ARCHLOG_TESTGEN_COVERAGE") != "0"
+        measured = measuring()
         self.coverage = self.tmp / "coverage" if measured else None
+        self.lines = LineCoverage(self.tmp / "coverage", {node["name"]: node_file(node) for node in model["commands"]
+                                                          if node.get("entry") or node.get("script")}) if measured else None
 
     @property
     def log(self) -> Path:
@@ -223,6 +212,8 @@ class Ros2Session:
                 {"ev": "msg", "topic": t, "t": time.time(), "msg": to_json(m)}), watching_qos(rclpy))
         self.clients = {name: self.node.create_client(self.classes[type_], name)
                         for name, type_ in self.model.get("services", {}).items()}
+        self.goal_clients = {name: rclpy.action.ActionClient(self.node, self.classes[type_], name)
+                             for name, type_ in self.model.get("actions", {}).items()}
         self.executor = rclpy.executors.SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         threading.Thread(target=self.executor.spin, daemon=True).start()
@@ -237,6 +228,8 @@ class Ros2Session:
                 self.events.put({"ev": "error", "topic": topic, "error": f"{type(exc).__name__}: {exc}"})
         elif command["op"] == "call":
             self._call(command)
+        elif command["op"] == "goal":
+            self._goal(command)
         elif command["op"] == "wait":
             end = time.monotonic() + command["timeout"]
             while (missing := self._unconnected()) and time.monotonic() < end:
@@ -262,10 +255,37 @@ class Ros2Session:
             return
         client.call_async(request).add_done_callback(answered)
 
+    def _goal(self, command: dict[str, Any]) -> None:
+        """Send a goal to an action of the nodes under test; its answer (accepted or not), feedback and
+        result (or why the goal could not be sent) are put on `events` as they come."""
+        action, number = command["action"], command["id"]
+
+        def put(ev: str, **fields: Any) -> None:
+            self.events.put({"ev": ev, "action": action, "id": number, "t": time.time(), **fields})
+
+        def answered(future: Any) -> None:
+            handle = future.result()
+            put("goal", accepted=bool(handle.accepted))
+            if handle.accepted:
+                handle.get_result_async().add_done_callback(
+                    lambda done: put("result", status=done.result().status, msg=to_json(done.result().result)))
+
+        try:
+            now = self.node.get_clock().now().nanoseconds / 1e9
+            kind: Any = self.classes[self.model["actions"][action]]
+            goal = to_message(command["goal"], kind.Goal, now)
+        except (AssertionError, TypeError, ValueError) as exc:  # a value the goal class refuses
+            put("goal", error=f"{type(exc).__name__}: {exc}")
+            return
+        self.goal_clients[action].send_goal_async(
+            goal, feedback_callback=lambda message: put("feedback", msg=to_json(message.feedback))
+        ).add_done_callback(answered)
+
     def _unconnected(self) -> list[str]:
         return sorted([t for t, p in self.publishers.items() if p.get_subscription_count() == 0]
                       + [t for t in self.model["outputs"] if self.node.count_publishers(t) == 0]
-                      + [s for s, c in self.clients.items() if not c.service_is_ready()])
+                      + [s for s, c in self.clients.items() if not c.service_is_ready()]
+                      + [a for a, c in self.goal_clients.items() if not c.server_is_ready()])
 
     def launch(self, params: dict[str, Any], timeout: float = 30.0) -> None:
         """Start the nodes under test with `params`; wait until they are in the graph and connected."""
@@ -326,6 +346,11 @@ class Ros2Session:
         while names and names & set(self._names()) and time.monotonic() < end:
             time.sleep(_POLL)
 
+    def new_lines(self) -> int | None:
+        """Lines of the Python nodes' files that the nodes stopped since the last call ran first (None: not
+        measured)."""
+        return self.lines.new_lines() if self.lines else None
+
     def node_alive(self, node: str) -> bool:
         """The node is in the graph and its process runs."""
         proc = self.procs.get(node)
@@ -342,26 +367,38 @@ class Ros2Session:
     def graph(self) -> observe.Architecture:
         """The live graph of the nodes under test, minus ROS 2's infrastructure (/rosout,
         /parameter_events, the parameter services) and the built-in ports the model lists (left out of
-        the recovered interface too)."""
-        found: dict[str, set] = {"publishers": set(), "subscribers": set(), "services": set()}
+        the recovered interface too); an action server is its action's name (its hidden `_action`
+        topics and services are not listed, nor those of action clients). A node listed without any
+        endpoint, not even the /rosout publisher every node has, is left out: the graph's by-node answer
+        is then about a participant it knows only in part (seen at a load of 10: a node's ports missing
+        for the whole settling bound while the node ran), not about the node."""
+        found: dict[str, set] = {"publishers": set(), "subscribers": set(), "services": set(), "action_servers": set()}
         builtin = {(node, name) for node, name in self.model.get("builtin", [])}
         names = {n: v for n, v in self._names().items() if n in self.model["nodes"]}
-        for full, (name, ns) in names.items():
-            for kind, read in (("publishers", self.node.get_publisher_names_and_types_by_node),
-                               ("subscribers", self.node.get_subscriber_names_and_types_by_node)):
-                found[kind] |= {(full, t, ty) for t, types in read(name, ns)
-                                if t not in observe.ROS2_INFRA_TOPICS and (full, t) not in builtin for ty in types}
+        for full, (name, ns) in list(names.items()):
+            publishers = self.node.get_publisher_names_and_types_by_node(name, ns)
+            subscribers = self.node.get_subscriber_names_and_types_by_node(name, ns)
+            services = self.node.get_service_names_and_types_by_node(name, ns)
+            if not (publishers or subscribers or services):
+                del names[full]
+                continue
+            for kind, ports in (("publishers", publishers), ("subscribers", subscribers)):
+                found[kind] |= {(full, t, ty) for t, types in ports if t not in observe.ROS2_INFRA_TOPICS
+                                and ACTION_PART not in t and (full, t) not in builtin for ty in types}
             parameters = {f"{full}/{x}" for x in observe.ROS2_PARAMETER_SERVICES}
-            found["services"] |= {(full, s) for s, _types in self.node.get_service_names_and_types_by_node(name, ns)
-                                  if s not in parameters and (full, s) not in builtin}
+            for s, _types in services:
+                if s.endswith(ACTION_PART + "send_goal"):
+                    found["action_servers"].add((full, s.removesuffix(ACTION_PART + "send_goal")))
+                elif s not in parameters and ACTION_PART not in s and (full, s) not in builtin:
+                    found["services"].add((full, s))
         return observe.Architecture(frozenset(names), frozenset(found["publishers"]), frozenset(found["subscribers"]),
-                                    frozenset(found["services"]))
+                                    frozenset(found["services"]), action_servers=frozenset(found["action_servers"]),
+                                    kinds=(*observe.KINDS, "action_servers"))
 
     def close(self) -> None:
         atexit.unregister(self.close)
         self.stop_nodes()
-        covered = line_coverage(self.coverage, self.model["commands"]) if self.coverage and self.coverage.is_dir() else {}
-        write_stats(self.launches, covered)
+        write_stats(self.launches, self.lines.covered() if self.lines else {})
         if hasattr(self, "executor"):
             self.executor.shutdown()
             self.node.destroy_node()

@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
 
-from hypothesis import note
+from hypothesis import note, target
 from hypothesis import strategies as st
 from hypothesis.errors import InvalidArgument
 from hypothesis.stateful import RuleBasedStateMachine, initialize, invariant, precondition, rule
@@ -41,6 +41,7 @@ from hypothesis.strategies._internal.featureflags import FeatureFlags
 
 from archlog import observe
 from archlog.testgen import processes
+from archlog.testgen.lines import LineCoverage
 from archlog.testgen.settings import Settings
 from archlog.testgen.strategies import Strategies, fill_counters, pick, stale
 
@@ -48,9 +49,13 @@ DEBIAN = Path(__file__).resolve().parent / "debian"
 _POLL = 0.05
 # how long a difference between the live and the recovered interface must last to count: DDS discovers
 # a node's endpoints one by one, seconds after the node itself on a loaded machine (a service missing
-# for the response bound failed a correct node's test in CI)
-_DISCOVERY = 10.0
+# for the response bound failed a correct node's test in CI); and a process of the last example killed
+# while it shut down stays a participant listing the node without its endpoints until its lease ends
+# (Fast DDS: 20 s), the graph's by-node queries answering for it (a correct node's publisher and
+# subscriber "only recovered" for 10 s on a machine at load 9)
+_DISCOVERY = 25.0
 STEP_SETTLE = 0.1  # seconds after a step's messages before the properties are checked
+GOAL_SETTLED = ("rejected", "feedback", "done")  # a goal's states in which its server has told how it goes
 
 
 @contextlib.contextmanager
@@ -132,6 +137,10 @@ class Session:
         package_path = ":".join(self.model["paths"])
         self.env = processes.ros_env(self.tmp, self.uri, package_path)
         self.master = observe.master(self.uri)
+        scripts = self.model.get("scripts", {})
+        measured = bool(scripts) and measuring() and subprocess.run(
+            [str(processes.SYSTEM_PYTHON), "-c", "import coverage"], capture_output=True).returncode == 0
+        self.lines = LineCoverage(self.tmp / "coverage", scripts) if measured else None
 
     # -- master and bridge, once per run -------------------------------------------------
 
@@ -170,9 +179,9 @@ class Session:
 
     def close(self) -> None:
         atexit.unregister(self.close)
-        write_stats(self.launches)
         with contextlib.suppress(OSError, xmlrpc.client.Error):
             self.stop_nodes()
+        write_stats(self.launches, self.lines.covered() if self.lines else {})
         processes.stop_together([self.launcher, self.bridge, self.core], 2.0)
         processes.kill_leftovers(f"ROS_HOME={self.tmp}".encode())
         shutil.rmtree(self.tmp, ignore_errors=True)
@@ -207,8 +216,11 @@ class Session:
 
     def _start_launcher(self) -> None:
         spec = self.tmp / "launch.json"
+        measured = {node: [str(self.tmp / "coverage" / "data"), str(Path(script).parent), script]
+                    for node, script in self.model.get("scripts", {}).items()} if self.lines else {}
         spec.write_text(json.dumps({"files": self.model["launch"], "args": self.model["args"],
-                                    "nodes": self.model["nodes"] if self.model["isolated"] else None}))
+                                    "nodes": self.model["nodes"] if self.model["isolated"] else None,
+                                    "coverage": measured}))
         self.launcher = processes.spawn([str(processes.SYSTEM_PYTHON), str(DEBIAN / "launch.py"), str(spec)],
                                         self.env, self.log, stdin=subprocess.PIPE)
         self.launches = 0
@@ -225,14 +237,25 @@ class Session:
     def log(self) -> Path:
         return self.tmp / "launch.log"
 
-    def stop_nodes(self) -> None:
-        """Kill the nodes under test (no clean shutdown: the next example starts afresh)."""
-        for node in self.model["nodes"]:
-            uri = self._node_uri(node)
-            pid = self._pid(uri) if uri else None
-            if pid:
-                with contextlib.suppress(ProcessLookupError, PermissionError):
-                    os.kill(pid, signal.SIGKILL)
+    def stop_nodes(self, grace: float = 3.0) -> None:
+        """Stop the nodes under test: killed outright, or, when their coverage is measured, SIGINT first
+        (coverage.py writes its data as a node ends) and killed after `grace` seconds."""
+        uris = [self._node_uri(node) for node in self.model["nodes"]]
+        pids = [pid for pid in (self._pid(uri) for uri in uris if uri) if pid]
+        for pid in pids:
+            with contextlib.suppress(ProcessLookupError, PermissionError):
+                os.kill(pid, signal.SIGINT if self.lines else signal.SIGKILL)
+        end = time.monotonic() + (grace if self.lines else 0.0)
+        while any(map(processes.alive, pids)) and time.monotonic() < end:
+            time.sleep(_POLL)
+        for pid in filter(processes.alive, pids):
+            with contextlib.suppress(ProcessLookupError, PermissionError):
+                os.kill(pid, signal.SIGKILL)
+
+    def new_lines(self) -> int | None:
+        """Lines of the Python nodes' files that the nodes stopped since the last call ran first (None: not
+        measured)."""
+        return self.lines.new_lines() if self.lines else None
 
     def node_alive(self, node: str) -> bool:
         """The node is registered on the master and its process answers there."""
@@ -269,6 +292,7 @@ class System(Protocol):
     def send(self, command: dict[str, Any]) -> None: ...
     def launch(self, params: dict[str, Any]) -> None: ...
     def stop_nodes(self) -> None: ...
+    def new_lines(self) -> int | None: ...
     def node_alive(self, node: str) -> bool: ...
     def graph(self) -> observe.Architecture: ...
     def close(self) -> None: ...
@@ -287,6 +311,12 @@ def shared_session(model: dict[str, Any], create: Callable[[], System]) -> Syste
         atexit.register(session.close)
         session.start()
     return _SESSIONS[key]
+
+
+def measuring() -> bool:
+    """The line coverage of Python nodes under test is measured: coverage.py is installed here and
+    ARCHLOG_TESTGEN_COVERAGE is not 0."""
+    return importlib.util.find_spec("coverage") is not None and os.environ.get("ARCHLOG_TESTGEN_COVERAGE") != "0"
 
 
 COVERAGE: dict[str, tuple[int, int]] = {}  # node under test -> lines run, lines of its file (sessions closed)
@@ -323,9 +353,10 @@ def close_sessions() -> None:
 class Properties:
     """The user's properties: hooks called with every message received on a watched output
     (`on_<topic>`, the topic's name with non-word characters as `_`), with every response of an open
-    service (`on_<service>`, the Event's msg the response) and after every step
+    service (`on_<service>`, the Event's msg the response), with every answer, feedback and result
+    of a goal sent to an open action (`on_<action>`, see _goal_event) and after every step
     (`invariant`). `history` holds every event received so far in the example, `sent` every
-    message sent; assert in the hooks."""
+    message sent, request made and goal sent; assert in the hooks."""
 
     def __init__(self) -> None:
         self.history: list[Event] = []
@@ -351,8 +382,8 @@ def hook_name(topic: str) -> str:
 
 
 class ArchitectureMachine(RuleBasedStateMachine):
-    """The state machine a generated module extends with one `publish_<topic>` rule per open input
-    and one `call_<service>` rule per open service.
+    """The state machine a generated module extends with one `publish_<topic>` rule per open input,
+    one `call_<service>` rule per open service and one `send_goal_<action>` rule per open action.
 
     Steps: publish a drawn message; the temporal mutations (drop one message of a topic's
     sequence, resend the last one, send two in swapped order, a burst, a stale stamp); spin. After
@@ -384,6 +415,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
         self.failure: str | None = None
         self.periodic: dict[str, float] = {}  # the periodic outputs seen at their period after launch
         self.answered: set[int] = set()  # the calls (their action's index) that got a response
+        self.goals: dict[int, tuple[str, str]] = {}  # goal sent -> its action, and sent|accepted|rejected|feedback|done
 
     def new_session(self) -> System:
         return Session(self.model)
@@ -425,15 +457,40 @@ class ArchitectureMachine(RuleBasedStateMachine):
                            "timeout": self.settings.response_bound})
         self._act({"op": "call", "service": service, "request": request}, now)
         self.properties.sent.append({"service": service, "request": request})
-        end = now + self.settings.response_bound
-        while self.failure is None and number not in self.answered and time.time() < end:
+        if not self._awaited(lambda: number in self.answered, now + self.settings.response_bound) and self.failure is None:
+            self.failure = (f"{service} gave no response within {self.settings.response_bound:.1f} s "
+                            f"(after step {len(self.actions)})")
+
+    def send_goal(self, action: str, goal: Any) -> None:
+        """Send `goal` to `action`: the server must accept or reject it within the response bound and,
+        once accepted, send its result or a first feedback within the bound again (a server that works
+        longer on a goal says so by its feedback). A goal sent while an earlier goal of the action is
+        still open is not timed (a server may work on its goals one at a time)."""
+        if self.failure is not None:
+            return
+        busy = any(a == action and state not in GOAL_SETTLED for a, state in self.goals.values())
+        now = time.time()
+        number = next(_CALLS)
+        self.goals[number] = (action, "sent")
+        self.session.send({"op": "goal", "action": action, "goal": goal, "id": number})
+        self._act({"op": "goal", "action": action, "goal": goal}, now)
+        self.properties.sent.append({"action": action, "goal": goal})
+        bound = self.settings.response_bound
+        answered = self._awaited(lambda: self.goals[number][1] != "sent", now + bound)
+        settled = answered and self._awaited(lambda: self.goals[number][1] in GOAL_SETTLED, time.time() + bound)
+        if not settled and not busy and self.failure is None:
+            what = "accepted, but neither a result nor a feedback came" if answered else "neither accepted nor rejected"
+            self.failure = f"{action}: a goal was {what} within {bound:.1f} s (after step {len(self.actions)})"
+
+    def _awaited(self, done: Callable[[], bool], end: float) -> bool:
+        """Check the properties until `done()` or the wall clock `end`; whether it is done (a node
+        that died meanwhile is the failure, not the silence)."""
+        while self.failure is None and not done() and time.time() < end:
             time.sleep(_POLL)
             self._check(final=False)
-        if self.failure is None and number not in self.answered:
-            self._check(final=False)  # a node that died meanwhile is the failure, not the silence
-            if self.failure is None and number not in self.answered:
-                self.failure = (f"{service} gave no response within {self.settings.response_bound:.1f} s "
-                                f"(after step {len(self.actions)})")
+        if self.failure is None and not done():
+            self._check(final=False)
+        return done()
 
     @precondition(lambda self: bool(self.model["inputs"]))
     @rule(data=st.data())
@@ -504,6 +561,10 @@ class ArchitectureMachine(RuleBasedStateMachine):
         finally:
             if not self.settings.reuse:
                 self.session.stop_nodes()
+                new = self.session.new_lines()
+                if new is not None and self.failure is None and sys.exc_info()[0] is None:
+                    with contextlib.suppress(InvalidArgument):  # outside a Hypothesis test: a replay
+                        target(float(new), label="lines of the nodes run for the first time")
 
     # -- sending and checking -------------------------------------------------------------
 
@@ -611,11 +672,13 @@ def check_properties(machine: ArchitectureMachine, final: bool) -> None:
 
 def _interface_differences(session: System, want: observe.Architecture, bound: float) -> dict[str, dict]:
     """The differences between the recovered interface and the live graph that last `bound` seconds: a
-    DDS graph is eventually consistent (a restarted node's endpoints are discovered one by one)."""
+    DDS graph is eventually consistent (a restarted node's endpoints are discovered one by one). Only
+    the nodes the graph shows are compared (that every node under test runs is `alive`'s)."""
     end = time.monotonic() + bound
     while True:
         seen = session.graph()
-        differences = {kind: row for kind, row in observe.compare(_typed_as_seen(want, seen), seen).items()
+        differences = {kind: row for kind, row in observe.compare(_typed_as_seen(want.restricted(seen.nodes), seen),
+                                                                   seen).items()
                        if row["only_recovered"] or row["only_observed"]}
         if not differences or time.monotonic() >= end:
             return differences
@@ -645,6 +708,10 @@ def _record(machine: ArchitectureMachine) -> None:
             if "error" in event:  # the call failed in the test's client (a request the class refuses)
                 raise AssertionError(f"the call of {event['service']} failed: {event['error']}")
             event = {**event, "topic": event["service"], "msg": event["response"]}
+        elif event["ev"] in ("goal", "feedback", "result"):
+            if event["id"] not in machine.goals:  # a goal of an earlier example
+                continue
+            event = _goal_event(machine, event)
         elif event["ev"] != "msg" or event["t"] < machine.started:
             continue
         received = Event(event["topic"], event["t"], event["msg"])
@@ -658,6 +725,23 @@ def _record(machine: ArchitectureMachine) -> None:
                 raise
             except AssertionError as exc:  # about a message received at a known moment
                 raise Violation(str(exc), received.time) from exc
+
+
+def _goal_event(machine: ArchitectureMachine, event: dict[str, Any]) -> dict[str, Any]:
+    """A goal's answer, feedback or result as an event of its action (its msg says which, with the
+    goal's number); the goal's state follows it."""
+    action, number = event["action"], event["id"]
+    if "error" in event:  # the goal was not sent (a value the goal class refuses)
+        raise AssertionError(f"sending a goal to {action} failed: {event['error']}")
+    if event["ev"] == "goal":
+        state, msg = ("accepted" if event["accepted"] else "rejected"), {"goal": number, "accepted": event["accepted"]}
+    elif event["ev"] == "feedback":
+        state, msg = "feedback", {"goal": number, "feedback": event["msg"]}
+    else:
+        state, msg = "done", {"goal": number, "status": event["status"], "result": event["msg"]}
+    if machine.goals[number][1] != "done":
+        machine.goals[number] = (action, state)
+    return {**event, "topic": action, "msg": msg}
 
 
 def check_log(settings: Settings, event: dict[str, Any]) -> None:

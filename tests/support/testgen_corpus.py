@@ -14,7 +14,7 @@ import shutil
 import subprocess
 import sys
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from support.build_cpp import build_workspace
@@ -30,10 +30,15 @@ class Outcome:
     examples: int  # launches of the nodes under test (examples run, shrinking included)
     replay: dict | None  # the replay file of the failure, if one was written
     output: str
+    coverage: dict[str, list[int]] = field(default_factory=dict)  # Python node -> [lines run, statements]
+
+    def lines(self) -> str:
+        """The line coverage of the Python nodes under test, as the bench tables show it."""
+        return ", ".join(f"{node} {run}/{total}" for node, (run, total) in sorted(self.coverage.items())) or "-"
 
     def messages(self) -> int:
-        """Input messages and service calls in the replay (what the shrunk failure sends)."""
-        return sum(a["op"] in ("publish", "call") for a in (self.replay or {}).get("actions", []))
+        """Input messages, service calls and goals in the replay (what the shrunk failure sends)."""
+        return sum(a["op"] in ("publish", "call", "goal") for a in (self.replay or {}).get("actions", []))
 
 
 def systems() -> list[Path]:
@@ -55,8 +60,18 @@ def prepare(variant: Path, work: Path) -> tuple[Path, dict]:
     command += [x for k, v in case["args"].items() for x in ("--arg", f"{k}:={v}")]
     if "settings" in case:
         command += ["--settings", str(variant / case["settings"])]
-    subprocess.run(command, check=True, capture_output=True, text=True, timeout=120)
+    ros2 = any("ament_" in manifest.read_text() for manifest in workspace.rglob("package.xml"))
+    subprocess.run(command, check=True, capture_output=True, text=True, timeout=120, env=ros2_prefix() if ros2 else None)
     return out, case
+
+
+def ros2_prefix() -> dict[str, str]:
+    """This environment, with ROS 2 installed from PyPI in this Python (if it is) on AMENT_PREFIX_PATH, as a
+    ROS 2 setup file sets it: archlog then finds its interface definitions (an action's goal)."""
+    env = dict(os.environ)
+    if (Path(sys.prefix) / "share" / "ament_index").is_dir() and not env.get("AMENT_PREFIX_PATH"):
+        env["AMENT_PREFIX_PATH"] = sys.prefix
+    return env
 
 
 def run_generated(out: Path, examples: int, seed: int, shrink_seconds: int = 60, steps: int | None = None,
@@ -75,5 +90,6 @@ def run_generated(out: Path, examples: int, seed: int, shrink_seconds: int = 60,
     seconds = time.monotonic() - start
     replays = list((out / "replay").glob("*.json")) if (out / "replay").is_dir() else []
     replay = json.loads(replays[0].read_text()) if replays else None
-    launches = json.loads(stats.read_text())["launches"] if stats.is_file() else 0
-    return Outcome(result.returncode == 0, seconds, launches, replay, result.stdout[-6000:])
+    counts = json.loads(stats.read_text()) if stats.is_file() else {}
+    return Outcome(result.returncode == 0, seconds, counts.get("launches", 0), replay, result.stdout[-20000:],
+                   counts.get("coverage", {}))

@@ -61,8 +61,11 @@ class Package:
 
 
 def share_dirs() -> list[Path]:
-    """Installed package locations, in ROS's search order after the indexed paths."""
+    """Installed package locations, in ROS's search order after the indexed paths: ROS 1's
+    ROS_PACKAGE_PATH, the share folders of ROS 2's AMENT_PREFIX_PATH (as a ROS 2 setup file sets it,
+    or a user for ROS 2 installed from PyPI: its prefix), /opt/ros and /usr/share."""
     dirs = [Path(p) for p in os.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
+    dirs += [Path(p) / "share" for p in os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
     dirs += sorted(Path(p) for p in glob.glob("/opt/ros/*/share"))
     dirs.append(Path("/usr/share"))
     return dirs

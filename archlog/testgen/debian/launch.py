@@ -3,7 +3,9 @@
 
     launch.py SPEC.json
 
-SPEC: {"files": [launch files], "args": {name: value}, "nodes": [resolved names] or null (all)}.
+SPEC: {"files": [launch files], "args": {name: value}, "nodes": [resolved names] or null (all),
+"coverage": {resolved name: [data file, source folder, script]}: Python nodes run under coverage.py
+(when roslaunch finds that script as the node's executable)}.
 The launch files are read once with roslaunch's own loader; then, for every line
 {"params": {resolved name: value}} on stdin, the configuration's parameters and these (which win)
 are set on the master and the kept nodes are started (the caller kills them before the next line).
@@ -20,6 +22,7 @@ import rosgraph
 import rosgraph.names
 import roslaunch.config
 import roslaunch.scriptapi
+import roslib.packages
 
 
 def main(spec_path):
@@ -30,6 +33,13 @@ def main(spec_path):
     keep = set(spec["nodes"]) if spec["nodes"] is not None else None
     nodes = [n for n in config.nodes
              if keep is None or rosgraph.names.ns_join(n.namespace, n.name) in keep]
+    for node in nodes:
+        measured = spec.get("coverage", {}).get(rosgraph.names.ns_join(node.namespace, node.name))
+        found = roslib.packages.find_node(node.package, node.type) if measured else None
+        if measured and found and os.path.realpath(found[0]) == os.path.realpath(measured[2]):
+            # its data file is written when it ends (SIGINT); a prefix of its own (nice, ...) comes first
+            prefix = f"{sys.executable} -m coverage run --parallel-mode --data-file={measured[0]} --source={measured[1]}"
+            node.launch_prefix = f"{node.launch_prefix or ''} {prefix}".strip()
     master = rosgraph.Master("/archlog_testgen_launcher")
     launcher = roslaunch.scriptapi.ROSLaunch()
     launcher.start()
