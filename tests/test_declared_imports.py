@@ -40,7 +40,7 @@ def _names(requirements: list[str]) -> set[str]:
 
 # archlog modules that may import an extra, lazily (archlog imports without it): the `ros2` extra
 # (rclpy), the `coverage` extra (line coverage of the nodes under a generated test)
-OPTIONAL = {"archlog/observe_ros2.py": "ros2", "archlog/testgen/ros2.py": "coverage"}
+OPTIONAL = {"archlog/observe_ros2.py": "ros2", "archlog/testgen/ros2.py": "coverage", "archlog/testgen/lines.py": "coverage"}
 
 
 def declared() -> tuple[set[str], set[str]]:
