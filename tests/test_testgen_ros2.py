@@ -114,3 +114,81 @@ def test_a_lifecycle_node_is_activated_and_its_builtin_ports_left_out(tmp_path: 
     out, _case = prepare(LIFECYCLE, tmp_path / "clean")
     outcome = run_generated(out, 4, seed=0, steps=4, timeout=300)
     assert outcome.passed and outcome.examples >= 4, outcome.output
+
+
+PROMPT_NODE = """
+import rclpy
+from rclpy.node import Node
+
+
+class Prompt(Node):
+    def __init__(self):
+        super().__init__("prompt")
+        self.publisher = self.create_publisher(__import__("std_msgs.msg").msg.String, "said", 10)
+        self.said = input("say something: ")  # blocks: nothing is typed
+
+
+rclpy.init()
+rclpy.spin(Prompt())
+"""
+
+PROMPT_DRIVER = """
+import json, os, signal, sys, time
+import rclpy
+from archlog.testgen.ros2 import Ros2Session
+
+model = {"commands": [{"name": "/prompt", "script": sys.argv[1], "remaps": [], "params": {}}], "nodes": ["/prompt"],
+         "inputs": {}, "outputs": {}, "qos": {}}
+session = Ros2Session(model, rclpy, {})
+session.start()
+seen = {"terminals": [], "down": []}
+for _ in range(2):
+    session.launch({})
+    proc = session.procs["/prompt"]
+    seen["terminals"].append([os.readlink(f"/proc/{proc.pid}/fd/0"), len(session.terminals)])
+    end = time.monotonic() + 3.0
+    while time.monotonic() < end:  # blocked in input() the whole time, and up
+        seen["down"].append(session.down("/prompt"))
+        time.sleep(0.2)
+if sys.argv[2] == "kill":  # gone without a goodbye: its name stays discovered until the DDS lease ends
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait(5)
+    seen["killed"] = session.down("/prompt")
+session.stop_nodes()
+seen["held"] = len(session.terminals)
+seen["listed"] = "/prompt" in session._names()
+session.close()
+print(json.dumps(seen))
+"""
+
+
+def _prompt(tmp_path: Path, how: str) -> dict:
+    """Start a node blocked in input() twice in one session (`how`: "kill" SIGKILLs the second before
+    the stop); what the driver saw."""
+    node = tmp_path / "prompt.py"
+    node.write_text(PROMPT_NODE)
+    domain = min(private_domain(), 232)
+    env = dict(os.environ, ARCHLOG_TESTGEN_DOMAINS=f"{domain}-{domain}", ARCHLOG_TESTGEN_COVERAGE="0")
+    done = subprocess.run([sys.executable, "-c", PROMPT_DRIVER, str(node), how], env=env, capture_output=True,
+                          text=True, timeout=90, cwd=tmp_path)
+    assert done.returncode == 0, done.stderr[-3000:]
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def test_a_node_waiting_for_the_keyboard_stays_up_on_a_terminal_of_its_own(tmp_path: Path) -> None:
+    """A node blocked in input() (a prompt; nothing is typed) is up for the whole example; each process
+    reads a pseudo-terminal of its own that the session holds open while it runs and closes when it
+    stopped (none is shared by the processes of successive examples)."""
+    seen = _prompt(tmp_path, "stop")
+    assert len(seen["down"]) >= 20 and set(seen["down"]) == {None}, seen["down"]
+    assert all(path.startswith("/dev/pts/") and held == 1 for path, held in seen["terminals"]), seen["terminals"]
+    assert seen["held"] == 0 and not seen["listed"]
+
+
+def test_a_node_killed_outright_is_reported_and_gone_from_the_graph_before_the_next_start(tmp_path: Path) -> None:
+    """A node that died by a signal is reported with it; after a stop the dead node's name is no longer
+    discovered (it would be until its DDS lease ends, about 20 s, and the next example's namesake would
+    look up at once, then die when the lease ends)."""
+    seen = _prompt(tmp_path, "kill")
+    assert seen["killed"] == "its process was ended by SIGKILL"
+    assert seen["held"] == 0 and not seen["listed"]

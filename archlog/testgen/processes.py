@@ -12,6 +12,7 @@ import signal
 import socket
 import subprocess
 import time
+from collections.abc import Sequence
 from pathlib import Path
 
 SYSTEM_PYTHON = Path("/usr/bin/python3")  # the one Debian's rospy imports under
@@ -74,7 +75,7 @@ def stop(proc: subprocess.Popen | None, grace: float) -> None:
         os.killpg(proc.pid, signal.SIGKILL)
 
 
-def stop_together(procs: list[subprocess.Popen | None], grace: float) -> None:
+def stop_together(procs: Sequence[subprocess.Popen | None], grace: float) -> None:
     """`stop` for several processes at once: SIGINT every group, one shared grace, SIGKILL the rest."""
     running = [p for p in procs if p is not None and p.poll() is None]
     for proc in running:

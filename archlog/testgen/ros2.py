@@ -20,13 +20,14 @@ import os
 import pty
 import queue
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
 import threading
 import time
 from pathlib import Path
-from typing import Any
+from typing import IO, Any
 
 from archlog import observe
 from archlog.testgen import processes
@@ -37,6 +38,7 @@ _POLL = 0.05
 MAX_DOMAIN = 232
 LIFECYCLE = "lifecycle_msgs/srv/ChangeState"  # the service a lifecycle node is configured and activated by
 TRANSITIONS = (1, 3)  # configure, activate (lifecycle_msgs/msg/Transition)
+DDS_LEASE = 20.0  # seconds a participant that vanished without a goodbye stays discovered (Fast DDS's default)
 ACTION_PART = "/_action/"  # an action's topics and services are named ACTION + this + their role
 
 
@@ -122,6 +124,14 @@ def run_command(node: dict[str, Any], params: dict[str, Any], coverage: Path | N
     return command
 
 
+def exit_status(code: int) -> str:
+    """How a process ended, from its return code (negative: the signal that ended it)."""
+    if code < 0:
+        with contextlib.suppress(ValueError):
+            return f"was ended by {signal.Signals(-code).name}"
+    return f"exited with code {code}"
+
+
 def node_file(node: dict[str, Any]) -> str:
     """The Python file of a node under test: its script, or its entry point's module."""
     if node.get("script"):
@@ -186,9 +196,7 @@ class Ros2Session:
         self.env = dict(os.environ, ROS_DOMAIN_ID=str(self.domain), ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST",
                         ROS_HOME=str(self.tmp), ROS_LOG_DIR=str(self.tmp / "log"), PYTHONUNBUFFERED="1")
         self.env.pop("ROS_LOCALHOST_ONLY", None)  # deprecated; it would override the discovery range
-        # the nodes' standard input: a pseudo-terminal, as `ros2 run` in a shell gives them (keyboard
-        # teleops and prompts wait on it; nothing is typed), open until the session closes
-        self.terminal = pty.openpty()
+        self.terminals: list[int] = []  # the controlling side of each started process's terminal
         measured = measuring()
         self.coverage = self.tmp / "coverage" if measured else None
         self.lines = LineCoverage(self.tmp / "coverage", {node["name"]: node_file(node) for node in model["commands"]
@@ -298,11 +306,10 @@ class Ros2Session:
                 if command is None:
                     raise RuntimeError(unstartable(self.model))
                 env = dict(self.env, PYTHONPATH=os.pathsep.join(p for p in (node.get("root"), self.env.get("PYTHONPATH")) if p))
-                proc = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT,
-                                        stdin=self.terminal[1], start_new_session=True, cwd=self.tmp)
+                proc = self._start(command, env, out)
                 self.procs.update(dict.fromkeys(node.get("nodes", [node["name"]]), proc))
         deadline = time.monotonic() + timeout
-        while not all(self.node_alive(n) for n in self.model["nodes"]):
+        while any(self.down(n) for n in self.model["nodes"]):
             if any(p.poll() is not None for p in self.procs.values()):
                 return  # a node died starting: the properties say so
             if time.monotonic() > deadline:
@@ -313,6 +320,19 @@ class Ros2Session:
         for node in self.model.get("lifecycle", []):
             self._activate(node, deadline)
         self.send({"op": "wait", "timeout": 5.0})
+
+    def _start(self, command: list[str], env: dict[str, str], out: IO[bytes]) -> subprocess.Popen:
+        """Start a process under test in a session of its own, its standard input a pseudo-terminal of
+        its own, as `ros2 run` in a shell gives it (keyboard teleops and prompts wait on it; nothing is
+        typed): no other process reads it or changes its modes, and its controlling side stays open
+        here until the process stopped, so that a read never sees the terminal hang up."""
+        terminal, own = pty.openpty()
+        self.terminals.append(terminal)
+        try:
+            return subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT, stdin=own,
+                                    start_new_session=True, cwd=self.tmp)
+        finally:
+            os.close(own)  # the process holds its own copy
 
     def _activate(self, node: str, deadline: float) -> None:
         """Configure and activate a lifecycle node (its ports made in on_configure then exist); a
@@ -334,15 +354,21 @@ class Ros2Session:
             self.node.destroy_client(client)
 
     def stop_nodes(self, grace: float = 3.0) -> None:
-        """Stop the nodes under test cleanly (SIGINT, then SIGKILL after `grace` seconds) and wait, at
-        most three times `grace` seconds more, until they left the graph: a node killed outright (or
-        slow to leave on a loaded machine) stays in the other participants' discovery data until its
-        lease ends, and the next example's nodes (same names) would look up at once, their requests,
-        messages and graph queries going to the dead ones."""
-        processes.stop_together(list({id(p): p for p in self.procs.values()}.values()), grace)
+        """Stop the nodes under test cleanly (SIGINT, then SIGKILL after `grace` seconds) and wait until
+        they left the graph: at most three times `grace` seconds more after a clean stop, and up to the
+        DDS lease after a kill. A node killed outright (or slow to leave on a loaded machine) stays in
+        the other participants' discovery data until its lease ends, and the next example's nodes (same
+        names) would look up at once, their requests, messages and graph queries going to the dead
+        ones, and would look dead when the lease ends before they are discovered."""
+        stopped = list({id(p): p for p in self.procs.values()}.values())
+        processes.stop_together(stopped, grace)
         names = set(self.procs)
         self.procs = {}
-        end = time.monotonic() + 3 * grace
+        for terminal in self.terminals:
+            os.close(terminal)
+        self.terminals = []
+        killed = any(p.returncode == -signal.SIGKILL for p in stopped)
+        end = time.monotonic() + (DDS_LEASE + grace if killed else 3 * grace)
         while names and names & set(self._names()) and time.monotonic() < end:
             time.sleep(_POLL)
 
@@ -351,10 +377,14 @@ class Ros2Session:
         measured)."""
         return self.lines.new_lines() if self.lines else None
 
-    def node_alive(self, node: str) -> bool:
-        """The node is in the graph and its process runs."""
+    def down(self, node: str) -> str | None:
+        """Why the node is not up (None: its process runs and the graph lists it)."""
         proc = self.procs.get(node)
-        return proc is not None and proc.poll() is None and node in self._names()
+        if proc is None:
+            return "not started"
+        if proc.poll() is not None:
+            return f"its process {exit_status(proc.returncode)}"
+        return None if node in self._names() else "its process runs, but the graph does not list it"
 
     def _twice(self) -> list[str]:
         """The nodes under test the graph lists more than once."""
@@ -403,9 +433,6 @@ class Ros2Session:
             self.executor.shutdown()
             self.node.destroy_node()
             self.context.try_shutdown()
-        for fd in self.terminal:
-            with contextlib.suppress(OSError):
-                os.close(fd)
         shutil.rmtree(self.tmp, ignore_errors=True)
 
 

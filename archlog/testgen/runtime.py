@@ -201,7 +201,7 @@ class Session:
         self.launcher.stdin.flush()
         self.launched_params = params
         deadline = time.monotonic() + timeout
-        while (pids := self.launched()) is None or not all(self.node_alive(n) for n in self.model["nodes"]):
+        while (pids := self.launched()) is None or any(self.down(n) for n in self.model["nodes"]):
             if pids and not all(map(processes.alive, pids)):
                 break  # a node died starting: the properties say so
             if self.launcher.poll() is not None or time.monotonic() > deadline:
@@ -257,10 +257,12 @@ class Session:
         measured)."""
         return self.lines.new_lines() if self.lines else None
 
-    def node_alive(self, node: str) -> bool:
-        """The node is registered on the master and its process answers there."""
+    def down(self, node: str) -> str | None:
+        """Why the node is not up (None: it is registered on the master and its process answers there)."""
         uri = self._node_uri(node)
-        return uri is not None and self._pid(uri) is not None
+        if uri is None:
+            return "not registered on the master"
+        return None if self._pid(uri) is not None else "registered, but its process does not answer"
 
     def _node_uri(self, node: str) -> str | None:
         answer: Any = self.master.lookupNode(observe.CALLER_ID, node)
@@ -293,7 +295,7 @@ class System(Protocol):
     def launch(self, params: dict[str, Any]) -> None: ...
     def stop_nodes(self) -> None: ...
     def new_lines(self) -> int | None: ...
-    def node_alive(self, node: str) -> bool: ...
+    def down(self, node: str) -> str | None: ...
     def graph(self) -> observe.Architecture: ...
     def close(self) -> None: ...
 
@@ -615,7 +617,7 @@ class ArchitectureMachine(RuleBasedStateMachine):
 def run(session: System, params: dict[str, Any], reuse: bool) -> None:
     """Launch the nodes under test (in `reuse` mode only if they are down or their parameters changed)."""
     up = reuse and session.launches > 0 and session.launched_params == params \
-        and all(session.node_alive(n) for n in session.model["nodes"])
+        and not any(session.down(n) for n in session.model["nodes"])
     if not up:
         session.launch(params)
     _drain(session)
@@ -645,7 +647,7 @@ def check_properties(machine: ArchitectureMachine, final: bool) -> None:
     session, model, settings = machine.session, machine.model, machine.settings
     _record(machine)
     if settings.properties["alive"]:
-        dead = [n for n in model["nodes"] if not session.node_alive(n)]
+        dead = [f"{n} ({why})" for n in model["nodes"] if (why := session.down(n))]
         assert not dead, f"node(s) died: {', '.join(dead)}"
     now = time.time()
     for topic, period in machine.periodic.items():
