@@ -70,7 +70,8 @@ def test_rule_explains_description_example_and_fix() -> None:
     result = archlog("rule", "AL102")
     assert result.returncode == 0, result.stderr
     out = result.stdout
-    assert out.startswith("AL102 near-miss-topic (error, precision medium; tags: topics, names, dangling)\n")
+    assert out.startswith("AL102 near-miss-topic (error; a note when what archlog could not read may hold the "
+                          "counterpart, precision medium; tags: topics, names, dangling)\n")
     assert "A subscriber with no publisher waits forever" in out  # the description
     assert "Example finding (from the rule's fixtures):\n  ctl.cpp:11 /arm/joint_cmd: /arm/ctl subscribes" in out
     assert 'How to fix:\nConnect them in the launch file: `<remap from="TOPIC" to="OTHER_TOPIC"/>`' in out
