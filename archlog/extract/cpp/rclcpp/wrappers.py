@@ -79,6 +79,14 @@ class Definition:
         return index if index is not None and self.names[index] else None
 
 
+@dataclass
+class Summaries:
+    """The wrappers by definition, and the definitions read, by name (to match calls by tokens)."""
+
+    wrappers: dict[CursorKey, set[Wrapper]]
+    by_name: dict[str, list[Definition]]
+
+
 Key = Callable[[ci.Cursor], CursorKey]
 Shown = Callable[[ci.Cursor], str]
 
@@ -96,7 +104,7 @@ def definitions(root: ci.Cursor, readable: Callable[[ci.Cursor], bool]) -> list[
     return found
 
 
-def summaries(cursors: list[ci.Cursor], key: Key, shown: Shown) -> dict[CursorKey, set[Wrapper]]:
+def summaries(cursors: list[ci.Cursor], key: Key, shown: Shown) -> Summaries:
     """The wrappers among the definitions, each with the parameters that name its ports."""
     defs = [d for c in cursors if (d := _definition(c, key, shown)) is not None]
     by_name: dict[str, list[Definition]] = {}
@@ -118,7 +126,7 @@ def summaries(cursors: list[ci.Cursor], key: Key, shown: Shown) -> dict[CursorKe
                         added = True
         if not added:
             break
-    return found
+    return Summaries(found, by_name)
 
 
 def _named(d: Definition, found: dict[CursorKey, set[Wrapper]], by_name: dict[str, list[Definition]]) \
@@ -172,15 +180,31 @@ def _bare(arg: tuple[str, ...]) -> str | None:
 
 
 def _callees(d: Definition, by_name: dict[str, list[Definition]]) -> Iterator[tuple[Call, Definition]]:
-    for call in d.calls:
-        name = call.name
-        if name in FACTORIES:  # std::make_shared<Class<T>>(...): Class's constructors
-            name = call.template.split("<")[0].split("::")[-1]
-            call = Call(name, "", _first_argument(call.template.partition("<")[2].rstrip(">")), call.args, call.line)
-            candidates = [c for c in by_name.get(name, []) if c.constructor]
-        else:
-            candidates = by_name.get(name, [])
+    for written in d.calls:
+        call, candidates = _targets(written, by_name)
         yield from ((call, c) for c in candidates if c is not d and c.accepts(call))
+
+
+def _targets(call: Call, by_name: dict[str, list[Definition]]) -> tuple[Call, list[Definition]]:
+    """The definitions a call may run, by name: for std::make_shared<Class<T>>(...) Class's
+    constructors, with the call rewritten as one of them (template argument T)."""
+    if call.name not in FACTORIES:
+        return call, by_name.get(call.name, [])
+    name = call.template.split("<")[0].split("::")[-1]
+    call = Call(name, "", _first_argument(call.template.partition("<")[2].rstrip(">")), call.args, call.line)
+    return call, [c for c in by_name.get(name, []) if c.constructor]
+
+
+def written_wrappers(cursor: ci.Cursor, summaries: Summaries) -> Iterator[tuple[Wrapper, str]]:
+    """The wrappers a call without a declaration (a dependent call, inside a template) runs, matched
+    by its tokens as calls inside definitions are; each with the template argument the call gives."""
+    calls = _calls([(t.spelling, t.location.line) for t in cursor.get_tokens()])
+    if not calls:
+        return
+    call, candidates = _targets(calls[0], summaries.by_name)
+    for callee in candidates:
+        if callee.accepts(call):
+            yield from ((w, w.type_ or call.template) for w in summaries.wrappers.get(callee.key, ()))
 
 
 def _port_call(call: Call) -> tuple[str, int] | None:
