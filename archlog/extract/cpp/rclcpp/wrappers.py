@@ -22,6 +22,7 @@ DEPTH = 6  # a name handed on through this many functions at most
 _CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)
 _SCOPES = (K.NAMESPACE, K.CLASS_DECL, K.STRUCT_DECL, K.CLASS_TEMPLATE, K.LINKAGE_SPEC,
            K.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
+_CLASSES = (K.CLASS_DECL, K.STRUCT_DECL, K.CLASS_TEMPLATE, K.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
 _OPEN, _CLOSE = "([{", ")]}"
 Token = tuple[str, int]  # spelling, line
 
@@ -64,6 +65,7 @@ class Definition:
     members: dict[str, int] = field(default_factory=dict)  # member -> the parameter that initialises it
     calls: list[Call] = field(default_factory=list)
     constructor: bool = False
+    method: bool = False  # a member function (not a constructor)
 
     def accepts(self, call: Call) -> bool:
         if not self.required <= len(call.args) <= len(self.params):
@@ -198,12 +200,15 @@ def _targets(call: Call, by_name: dict[str, list[Definition]]) -> tuple[Call, li
 def written_wrappers(cursor: ci.Cursor, summaries: Summaries) -> Iterator[tuple[Wrapper, str]]:
     """The wrappers a call without a declaration (a dependent call, inside a template) runs, matched
     by its tokens as calls inside definitions are; each with the template argument the call gives."""
-    calls = _calls([(t.spelling, t.location.line) for t in cursor.get_tokens()])
+    tokens = [(t.spelling, t.location.line) for t in cursor.get_tokens()]
+    calls = _calls(tokens)
     if not calls:
         return
+    at = next(i for i, (word, _line) in enumerate(tokens) if word == calls[0].name)
+    on_object = at > 0 and tokens[at - 1][0] in ("->", ".")  # `node->f(...)`: a method, not a free function
     call, candidates = _targets(calls[0], summaries.by_name)
     for callee in candidates:
-        if callee.accepts(call):
+        if callee.accepts(call) and (callee.method or not on_object):
             yield from ((w, w.type_ or call.template) for w in summaries.wrappers.get(callee.key, ()))
 
 
@@ -239,6 +244,7 @@ def _definition(cursor: ci.Cursor, key: Key, shown: Shown) -> Definition | None:
                    sum(1 for p in params if "=" not in [t.spelling for t in p.get_tokens()]), templates,
                    constructor=cursor.kind == K.CONSTRUCTOR or
                    (cursor.kind == K.FUNCTION_TEMPLATE and parent is not None and name == parent.spelling))
+    d.method = not d.constructor and parent is not None and parent.kind in _CLASSES
     body = next((i for i in range(close + 1, len(spellings)) if spellings[i] == "{"), len(spellings))
     if close + 1 < len(spellings) and spellings[close + 1] == ":":
         body = _initialisers(d, tokens, close + 2)
