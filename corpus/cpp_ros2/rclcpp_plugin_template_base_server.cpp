@@ -3,7 +3,9 @@
 // only keeps the node and the name, and its own configure() creates the rclcpp_action server with
 // what it kept. The plugin passes the action type as the base's template argument and overrides the
 // virtual with a literal. A progress reporter kept by the plugin the same way publishes on the topic
-// its constructor was given, when it starts.
+// its constructor was given, when it starts. A host node's method template makes a second job server
+// for the base (a call written on an object: the free factory of the same name, which takes the
+// node first, is not what runs).
 #include <memory>
 #include <string>
 
@@ -63,11 +65,36 @@ private:
   rclcpp_lifecycle::LifecyclePublisher<std_msgs::msg::String>::SharedPtr publisher_;
 };
 
+namespace factory
+{
+template<class ActionT>
+std::unique_ptr<JobServer<ActionT>> make_job(
+  rclcpp_lifecycle::LifecycleNode::SharedPtr node, const std::string & job_name, int retries = 1)
+{
+  return std::make_unique<JobServer<ActionT>>(node, job_name, retries);
+}
+}  // namespace factory
+
+class MissionNode : public rclcpp_lifecycle::LifecycleNode
+{
+public:
+  explicit MissionNode(const std::string & name)
+  : rclcpp_lifecycle::LifecycleNode(name) {}
+
+  template<class ActionT>
+  std::unique_ptr<JobServer<ActionT>> make_job(const std::string & job_name, const std::string & owner = "")
+  {
+    (void)owner;
+    return factory::make_job<ActionT>(shared_from_this(), job_name, 2);
+  }
+};
+
 class MissionBase
 {
 public:
   virtual ~MissionBase() = default;
   virtual bool configure(rclcpp_lifecycle::LifecycleNode::SharedPtr node) = 0;
+  virtual void audit(std::shared_ptr<MissionNode> host) = 0;
 };
 
 template<class ActionT>
@@ -80,18 +107,26 @@ public:
     return job_server_->configure() && setup(node);
   }
 
+  void audit(std::shared_ptr<MissionNode> host) final
+  {
+    audit_server_ = host->make_job<ActionT>(auditName(), "auditor");
+  }
+
   virtual std::string getName() = 0;
+  virtual std::string auditName() = 0;
 
 protected:
   virtual bool setup(rclcpp_lifecycle::LifecycleNode::SharedPtr node) = 0;
 
   std::unique_ptr<JobServer<ActionT>> job_server_;
+  std::unique_ptr<JobServer<ActionT>> audit_server_;
 };
 
 class CountMission : public JobMission<example_interfaces::action::Fibonacci>
 {
 public:
   std::string getName() override {return std::string("count_up");}
+  std::string auditName() override {return "count_audit";}
 
 protected:
   bool setup(rclcpp_lifecycle::LifecycleNode::SharedPtr node) override
