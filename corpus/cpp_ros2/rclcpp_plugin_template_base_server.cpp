@@ -78,8 +78,8 @@ std::unique_ptr<JobServer<ActionT>> make_job(
 class MissionNode : public rclcpp_lifecycle::LifecycleNode
 {
 public:
-  explicit MissionNode(const std::string & name)
-  : rclcpp_lifecycle::LifecycleNode(name) {}
+  MissionNode()
+  : rclcpp_lifecycle::LifecycleNode("mission_host", rclcpp::NodeOptions()) {}
 
   template<class ActionT>
   std::unique_ptr<JobServer<ActionT>> make_job(const std::string & job_name, const std::string & owner = "")
