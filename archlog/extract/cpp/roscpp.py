@@ -45,6 +45,7 @@ from archlog.extract.cpp.handles import (
     is_handle_type,
 )
 from archlog.extract.cpp.loader import LOADER, loaded_nodelets
+from archlog.extract.cpp.overrides import override_return
 from archlog.extract.cpp.param_guards import Branches, initial_value, required
 from archlog.extract.cpp.plugin_loads import creates_plugin, plugin_load_lines
 from archlog.extract.cpp.rclcpp.durations import Durations
@@ -222,7 +223,8 @@ class _Walker:
         for cursor in reads + [c for c in calls if c.spelling not in PARAM_READS]:
             self.call(cursor)
         if self.rclcpp is not None:
-            self.rclcpp.wrapped(summaries(definitions(root, self.workspace_code), self.key, self.shown), calls)
+            self.rclcpp.wrapped(summaries(definitions(root, self.workspace_code), self.key, self.shown), calls,
+                                self.scope.bound)
         self.record_call_sites(calls)
 
     def workspace_code(self, decl: ci.Cursor) -> bool:
@@ -380,6 +382,8 @@ class _Walker:
             inner = args or [c for c in expr.get_children() if c.kind not in SKIP]
             if len(inner) == 1:
                 return self.value(inner[0], depth + 1)
+        if self.scope.cls is not None and (returned := override_return(expr, self.kept, self.scope.classes)) is not None:
+            return self.value(returned, depth + 1)
         children = [c for c in expr.get_children() if c.kind not in SKIP]
         if len(children) == 1 and not args:
             return self.value(children[0], depth + 1)

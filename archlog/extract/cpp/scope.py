@@ -26,6 +26,7 @@ class Scope:
         self.workspace = tuple(folder.rstrip("/") + "/" for folder in workspace)
         self.classes: list[str] = cls.split("|") if cls else []
         self.members: list[ci.Cursor] = []  # the data members of those classes this file sees
+        self.bound: dict[str, str] = {}  # a base class template's parameter -> the argument a class gives
 
     def header_code(self, cursors: list[ci.Cursor], key: Callable[[ci.Cursor | None], CursorKey]) -> list[ci.Cursor]:
         """The cursors of definitions in the workspace's own headers that the file's code uses
@@ -64,7 +65,7 @@ class Scope:
         the nodelet gave it)."""
         if self.cls is None:
             return cursors, None
-        self.classes, self.members, inline = _with_bases(self.classes, cursors)
+        self.classes, self.members, inline = _with_bases(self.classes, cursors, self.bound)
         kept: list[ci.Cursor] = []
         spans: list[tuple[int, int]] = []
         seen: set[tuple[str, int, int]] = set()
@@ -108,9 +109,33 @@ def _where(cursor: ci.Cursor) -> tuple[str, int, int]:
     return (loc.file.name if loc.file is not None else "", loc.line, loc.column)
 
 
-def _with_bases(classes: list[str], cursors: list[ci.Cursor]) -> tuple[list[str], list[ci.Cursor], list[ci.Cursor]]:
+def _pattern(definition: ci.Cursor | None) -> ci.Cursor | None:
+    """The class template a class is an implicit instantiation of (a base `Base<T>`, whose cursor
+    has no members of its own), else the class."""
+    if definition is None or any(True for _ in definition.get_children()):
+        return definition
+    template = ci.conf.lib.clang_getSpecializedCursorTemplate(definition)
+    return template if template is not None and template.kind == K.CLASS_TEMPLATE else definition
+
+
+def _bind(base: ci.Type, bound: dict[str, str]) -> None:
+    """Bind the parameters of the class template `base` instantiates to the types it is given."""
+    template = _pattern(base.get_declaration().get_definition())
+    if template is None or template.kind != K.CLASS_TEMPLATE:
+        return
+    parameters = [c.spelling for c in template.get_children() if c.kind == K.TEMPLATE_TYPE_PARAMETER]
+    for i, parameter in enumerate(parameters[:max(base.get_num_template_arguments(), 0)]):
+        argument = base.get_template_argument_type(i)
+        if argument.kind != ci.TypeKind.INVALID:
+            bound.setdefault(parameter, argument.get_canonical().spelling)
+
+
+def _with_bases(classes: list[str], cursors: list[ci.Cursor], bound: dict[str, str]) \
+        -> tuple[list[str], list[ci.Cursor], list[ci.Cursor]]:
     """The classes, the classes their typedefs in the file name, and all their base classes; the
-    data members of the definitions found, and the methods defined inside them."""
+    data members of the definitions found, and the methods defined inside them. A base that is a
+    class template's instantiation is read as the template, its parameters bound (in `bound`) to
+    the types the class gives."""
     found, members, defined = list(classes), list[ci.Cursor](), set[str]()
     inline: list[ci.Cursor] = []
     pending = [c.underlying_typedef_type.get_declaration() for c in cursors
@@ -119,7 +144,7 @@ def _with_bases(classes: list[str], cursors: list[ci.Cursor]) -> tuple[list[str]
                 and c.referenced is not None and qualified(c.referenced) in classes]
     while pending and len(found) < 64:
         decl = pending.pop()
-        definition = decl.get_definition() if decl is not None else None
+        definition = _pattern(decl.get_definition()) if decl is not None else None
         if definition is None:
             continue
         if (name := qualified(definition)) not in found:
@@ -130,6 +155,8 @@ def _with_bases(classes: list[str], cursors: list[ci.Cursor]) -> tuple[list[str]
         members += [c for c in definition.get_children() if c.kind == K.FIELD_DECL]
         inline += [c for c in definition.get_children() if c.kind in (K.CXX_METHOD, K.CONSTRUCTOR)
                    and c.is_definition()]
-        pending += [base.type.get_declaration() for base in definition.get_children()
-                    if base.kind == K.CXX_BASE_SPECIFIER]
+        bases = [base.type for base in definition.get_children() if base.kind == K.CXX_BASE_SPECIFIER]
+        for base in bases:
+            _bind(base, bound)
+        pending += [base.get_declaration() for base in bases]
     return found, members, inline

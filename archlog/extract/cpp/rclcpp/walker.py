@@ -52,7 +52,7 @@ from archlog.extract.cpp.rclcpp.nodes import Nodes
 from archlog.extract.cpp.rclcpp.parameters import Parameters
 from archlog.extract.cpp.rclcpp.qos import QosReader, builtin_qos
 from archlog.extract.cpp.rclcpp.qos_changes import QosChanges
-from archlog.extract.cpp.rclcpp.wrappers import Wrapper
+from archlog.extract.cpp.rclcpp.wrappers import Summaries, Wrapper, written_wrappers
 from archlog.extract.qos import Qos, number, seconds_text
 from archlog.extract.summary import Port
 from archlog.values import Value
@@ -174,19 +174,24 @@ class RclcppWalker:
             return False
         return True
 
-    def wrapped(self, wrappers: dict[CursorKey, set[Wrapper]], calls: list[ci.Cursor]) -> None:
+    def wrapped(self, summaries: Summaries, calls: list[ci.Cursor], bound: dict[str, str]) -> None:
         """One port at each call of a function that creates a port named by its argument
         (wrappers.py), with the name that call passes; the port of the wrapper's own rclcpp call,
-        whose name no single call decides, is left out then."""
+        whose name no single call decides, is left out then. A call inside a template is matched by
+        its tokens; a template parameter it passes as the interface is read as `bound` binds it
+        (the class read alone derives from the template with that argument)."""
+        wrappers = summaries.wrappers
         made = {(p.file, p.line, p.kind): p for p in self.ctx.result.ports}
         bases: set[tuple[str, int, str]] = set()
         for call in dict.fromkeys(calls):  # each call once
             args = written_args(call)
             found: dict[tuple[int, str, str | None], list[tuple[str, int, str]]] = {}
-            for callee in _callees(call):
-                for w in wrappers.get(self.ctx.key(callee), ()):  # one port, whatever the ways to its rclcpp call
-                    if w.index < len(args) and not self.passed_on(args[w.index], wrappers, w.kind):
-                        found.setdefault((w.index, w.kind, w.type_), []).append((*w.base, w.kind))
+            runs = [(w, w.type_) for callee in _callees(call) for w in wrappers.get(self.ctx.key(callee), ())] \
+                if call.referenced is not None else \
+                [(w, bound.get(t, t) if t else None) for w, t in written_wrappers(call, summaries)]
+            for w, written in runs:  # one port, whatever the ways to its rclcpp call
+                if w.index < len(args) and not self.passed_on(args[w.index], wrappers, w.kind):
+                    found.setdefault((w.index, w.kind, written), []).append((*w.base, w.kind))
             chosen = {(index, kind) for index, kind, _written in found}
             for (index, kind, written), inner in found.items():
                 bases.update(inner)
@@ -194,7 +199,8 @@ class RclcppWalker:
                     continue  # read as rclcpp's own call, or made below with the other types
                 chosen.discard((index, kind))
                 base = next((made[b] for b in inner if b in made), None)  # the rclcpp call as the AST read it
-                type_: Value | None = (type_from_spelling(written) if written else self.entity_type(call)) or \
+                type_: Value | None = (type_from_spelling(written) if written else
+                                       self.entity_type(call) if call.referenced is not None else None) or \
                     (base.type if base is not None and isinstance(base.type, str) else None)
                 types = sorted({t for i, k, t in found if (i, k) == (index, kind)}, key=str)
                 if len(types) > 1:  # the wrapper picks one in a branch archlog does not decide

@@ -22,6 +22,7 @@ DEPTH = 6  # a name handed on through this many functions at most
 _CALLABLE = (K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.FUNCTION_TEMPLATE)
 _SCOPES = (K.NAMESPACE, K.CLASS_DECL, K.STRUCT_DECL, K.CLASS_TEMPLATE, K.LINKAGE_SPEC,
            K.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
+_CLASSES = (K.CLASS_DECL, K.STRUCT_DECL, K.CLASS_TEMPLATE, K.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
 _OPEN, _CLOSE = "([{", ")]}"
 Token = tuple[str, int]  # spelling, line
 
@@ -64,6 +65,7 @@ class Definition:
     members: dict[str, int] = field(default_factory=dict)  # member -> the parameter that initialises it
     calls: list[Call] = field(default_factory=list)
     constructor: bool = False
+    method: bool = False  # a member function (not a constructor)
 
     def accepts(self, call: Call) -> bool:
         if not self.required <= len(call.args) <= len(self.params):
@@ -72,16 +74,19 @@ class Definition:
 
     def parameter_of(self, arg: tuple[str, ...]) -> int | None:
         """The parameter an argument is (directly, or through a member initialised from it)."""
-        if arg[:2] == ("this", "->"):
-            arg = arg[2:]
-        if len(arg) == 4 and arg[:3] == ("std", "::", "move"):
-            arg = arg[3:]
-        if len(arg) == 3 and arg[0] == "(" and arg[2] == ")":
-            arg = arg[1:2]
-        if len(arg) != 1:
+        name = _bare(arg)
+        if name is None:
             return None
-        index = self.params.index(arg[0]) if arg[0] in self.params else self.members.get(arg[0])
+        index = self.params.index(name) if name in self.params else self.members.get(name)
         return index if index is not None and self.names[index] else None
+
+
+@dataclass
+class Summaries:
+    """The wrappers by definition, and the definitions read, by name (to match calls by tokens)."""
+
+    wrappers: dict[CursorKey, set[Wrapper]]
+    by_name: dict[str, list[Definition]]
 
 
 Key = Callable[[ci.Cursor], CursorKey]
@@ -101,50 +106,110 @@ def definitions(root: ci.Cursor, readable: Callable[[ci.Cursor], bool]) -> list[
     return found
 
 
-def summaries(cursors: list[ci.Cursor], key: Key, shown: Shown) -> dict[CursorKey, set[Wrapper]]:
+def summaries(cursors: list[ci.Cursor], key: Key, shown: Shown) -> Summaries:
     """The wrappers among the definitions, each with the parameters that name its ports."""
     defs = [d for c in cursors if (d := _definition(c, key, shown)) is not None]
-    found: dict[CursorKey, set[Wrapper]] = {}
-    for d in defs:
-        for call in d.calls:
-            base = _port_call(call)
-            if base is not None and base[1] < len(call.args) and \
-                    (index := d.parameter_of(call.args[base[1]])) is not None:
-                type_ = None if call.template in d.template_params or not call.template else call.template
-                found.setdefault(d.key, set()).add(Wrapper(index, base[0], type_, (d.file, call.line)))
     by_name: dict[str, list[Definition]] = {}
     for d in defs:
         by_name.setdefault(d.name, []).append(d)
-    for _ in range(DEPTH):
+    constructors: dict[str, list[Definition]] = {}
+    for d in defs:
+        if d.constructor:
+            constructors.setdefault(_owner(d), []).append(d)
+    found: dict[CursorKey, set[Wrapper]] = {}
+    for _ in range(DEPTH + 1):
         added = False
         for d in defs:
-            for call, callee in _callees(d, by_name):
-                for wrapper in list(found.get(callee.key, ())):
-                    index = d.parameter_of(call.args[wrapper.index]) if wrapper.index < len(call.args) else None
-                    if index is None:
-                        continue
-                    type_ = wrapper.type_
-                    if type_ is None and call.template and call.template not in d.template_params:
-                        type_ = call.template  # the template argument this call gives
-                    new = Wrapper(index, wrapper.kind, type_, wrapper.base)
-                    if new not in found.setdefault(d.key, set()):
-                        found[d.key].add(new)
+            for arg, new in _named(d, found, by_name):
+                for target, index in _namers(d, arg, constructors):
+                    wrapper = Wrapper(index, *new)
+                    if wrapper not in found.setdefault(target.key, set()):
+                        found[target.key].add(wrapper)
                         added = True
         if not added:
             break
-    return found
+    return Summaries(found, by_name)
+
+
+def _named(d: Definition, found: dict[CursorKey, set[Wrapper]], by_name: dict[str, list[Definition]]) \
+        -> Iterator[tuple[tuple[str, ...], tuple[str, str | None, tuple[str, int]]]]:
+    """The arguments of `d`'s calls that name a port, each with the port's kind, type and rclcpp call:
+    the name argument of an rclcpp call, and the argument a wrapper already found names one with."""
+    for call in d.calls:
+        base = _port_call(call)
+        if base is not None and base[1] < len(call.args):
+            type_ = None if call.template in d.template_params or not call.template else call.template
+            yield call.args[base[1]], (base[0], type_, (d.file, call.line))
+    for call, callee in _callees(d, by_name):
+        for wrapper in list(found.get(callee.key, ())):
+            if wrapper.index < len(call.args):
+                type_ = wrapper.type_
+                if type_ is None and call.template and call.template not in d.template_params:
+                    type_ = call.template  # the template argument this call gives
+                yield call.args[wrapper.index], (wrapper.kind, type_, wrapper.base)
+
+
+def _namers(d: Definition, arg: tuple[str, ...], constructors: dict[str, list[Definition]]) \
+        -> Iterator[tuple[Definition, int]]:
+    """The definitions and parameters whose value `arg` is: a parameter of `d` (or a member its own
+    initialisers set from one), else a member of `d`'s class that a constructor of the class sets
+    from its parameter (the port is made in another method, with what the constructor kept)."""
+    index = d.parameter_of(arg)
+    if index is not None:
+        yield d, index
+        return
+    member = _bare(arg)
+    for constructor in constructors.get(_owner(d), []) if member is not None else []:
+        index = constructor.members.get(member or "")
+        if constructor is not d and index is not None and constructor.names[index]:
+            yield constructor, index
+
+
+def _owner(d: Definition) -> str:
+    """The class a method or constructor belongs to (its qualified name's scope)."""
+    return d.qualified.rpartition("::")[0]
+
+
+def _bare(arg: tuple[str, ...]) -> str | None:
+    """The one name an argument is (`x`, `this->x`, `std::move(x)`, `(x)`), None if it is more."""
+    if arg[:2] == ("this", "->"):
+        arg = arg[2:]
+    if len(arg) == 4 and arg[:3] == ("std", "::", "move"):
+        arg = arg[3:]
+    if len(arg) == 3 and arg[0] == "(" and arg[2] == ")":
+        arg = arg[1:2]
+    return arg[0] if len(arg) == 1 else None
 
 
 def _callees(d: Definition, by_name: dict[str, list[Definition]]) -> Iterator[tuple[Call, Definition]]:
-    for call in d.calls:
-        name = call.name
-        if name in FACTORIES:  # std::make_shared<Class<T>>(...): Class's constructors
-            name = call.template.split("<")[0].split("::")[-1]
-            call = Call(name, "", _first_argument(call.template.partition("<")[2].rstrip(">")), call.args, call.line)
-            candidates = [c for c in by_name.get(name, []) if c.constructor]
-        else:
-            candidates = by_name.get(name, [])
+    for written in d.calls:
+        call, candidates = _targets(written, by_name)
         yield from ((call, c) for c in candidates if c is not d and c.accepts(call))
+
+
+def _targets(call: Call, by_name: dict[str, list[Definition]]) -> tuple[Call, list[Definition]]:
+    """The definitions a call may run, by name: for std::make_shared<Class<T>>(...) Class's
+    constructors, with the call rewritten as one of them (template argument T)."""
+    if call.name not in FACTORIES:
+        return call, by_name.get(call.name, [])
+    name = call.template.split("<")[0].split("::")[-1]
+    call = Call(name, "", _first_argument(call.template.partition("<")[2].rstrip(">")), call.args, call.line)
+    return call, [c for c in by_name.get(name, []) if c.constructor]
+
+
+def written_wrappers(cursor: ci.Cursor, summaries: Summaries) -> Iterator[tuple[Wrapper, str]]:
+    """The wrappers a call without a declaration (a dependent call, inside a template) runs, matched
+    by its tokens as calls inside definitions are; each with the template argument the call gives."""
+    tokens = [(t.spelling, t.location.line) for t in cursor.get_tokens()]
+    calls = _calls(tokens)
+    if not calls:
+        return
+    at = next(i for i, (word, _line) in enumerate(tokens) if word == calls[0].name)
+    on_object = at > 0 and tokens[at - 1][0] in ("->", ".")  # `node->f(...)`: a method, not a free function
+    call, candidates = _targets(calls[0], summaries.by_name)
+    for callee in candidates:
+        if callee.accepts(call) and (callee.method or not on_object):
+            yield from ((w, w.type_ or call.template) for w in summaries.wrappers.get(callee.key, ()))
 
 
 def _port_call(call: Call) -> tuple[str, int] | None:
@@ -179,6 +244,7 @@ def _definition(cursor: ci.Cursor, key: Key, shown: Shown) -> Definition | None:
                    sum(1 for p in params if "=" not in [t.spelling for t in p.get_tokens()]), templates,
                    constructor=cursor.kind == K.CONSTRUCTOR or
                    (cursor.kind == K.FUNCTION_TEMPLATE and parent is not None and name == parent.spelling))
+    d.method = not d.constructor and parent is not None and parent.kind in _CLASSES
     body = next((i for i in range(close + 1, len(spellings)) if spellings[i] == "{"), len(spellings))
     if close + 1 < len(spellings) and spellings[close + 1] == ":":
         body = _initialisers(d, tokens, close + 2)
